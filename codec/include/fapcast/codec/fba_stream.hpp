@@ -1,0 +1,62 @@
+#pragma once
+// Frame-at-a-time FBA coding for live transport: each frame becomes one byte-aligned, self-
+// delimiting access unit (an object plane), so that RTP can carry one per packet and a receiver
+// that lost packets resumes at the next intra access unit. spec/fba.md defines the bits; the
+// whole-file encoder and decoder are built on these same two classes.
+#include "fapcast/codec/fap_frame.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <system_error>
+#include <vector>
+
+namespace fapcast::codec {
+
+struct FbaEncoderOptions {
+  int fap_quant = 1;      // 0 (lossless) .. 31; quantiser step = QP[fap] * fap_quant
+  int intra_period = 25;  // an intra frame at least every this many frames (>= 1)
+};
+
+struct FbaAccessUnit {
+  std::vector<std::uint8_t> bytes;  // starts with the object-plane start code, byte-aligned end
+  bool intra = false;
+};
+
+class FbaFrameEncoder {
+ public:
+  FbaFrameEncoder(FbaEncoderOptions options, FrameRate rate);
+  ~FbaFrameEncoder();
+  FbaFrameEncoder(FbaFrameEncoder&&) noexcept;
+  FbaFrameEncoder& operator=(FbaFrameEncoder&&) noexcept;
+
+  // Codes the next frame. `force_intra` starts a new intra frame (a late joiner, a request).
+  // Errors: a value outside the codable range (never clipped), an invalid option.
+  std::error_code encode(const FapFrame& frame, FbaAccessUnit& out, bool force_intra = false);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+class FbaFrameDecoder {
+ public:
+  FbaFrameDecoder();
+  ~FbaFrameDecoder();
+  FbaFrameDecoder(FbaFrameDecoder&&) noexcept;
+  FbaFrameDecoder& operator=(FbaFrameDecoder&&) noexcept;
+
+  // Decodes one access unit. A predicted unit before any intra unit (or after reset()) is
+  // refused with an error and decodes nothing; a corrupt unit leaves the decoder needing intra.
+  std::error_code decode(std::span<const std::uint8_t> access_unit, FapFrame& out);
+  // Forget the prediction state (after loss): the next decodable unit is an intra one.
+  void reset();
+  bool needs_intra() const;
+  FrameRate rate() const;  // from the last intra unit
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace fapcast::codec

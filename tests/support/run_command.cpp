@@ -1,0 +1,48 @@
+#include "support/run_command.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace fapcast::test {
+
+namespace fs = std::filesystem;
+
+std::string make_temp_dir(const std::string& tag) {
+  std::string pattern = (fs::temp_directory_path() / ("fapcast-" + tag + "-XXXXXX")).string();
+  if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+  return pattern;
+}
+
+CommandResult run_command(const std::string& command) {
+  const std::string dir = make_temp_dir("cmd");
+  const std::string out_path = dir + "/out", err_path = dir + "/err";
+  const std::string full =
+      command + " </dev/null >'" + out_path + "' 2>'" + err_path + "'";
+  const int status = std::system(full.c_str());
+  CommandResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  auto slurp = [](const std::string& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  r.out = slurp(out_path);
+  r.err = slurp(err_path);
+  fs::remove_all(dir);
+  return r;
+}
+
+std::string fapcast(const std::string& args) {
+  return std::string("'") + FAPCAST_EXE + "' " + args;
+}
+
+}  // namespace fapcast::test

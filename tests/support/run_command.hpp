@@ -1,0 +1,22 @@
+#pragma once
+// Runs a shell command for end-to-end tests and captures its exit code, stdout and stderr.
+#include <string>
+
+namespace fapcast::test {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;  // standard output
+  std::string err;  // standard error
+};
+
+// Runs `command` under /bin/sh. Standard input is /dev/null.
+CommandResult run_command(const std::string& command);
+
+// The `fapcast` executable under test, quoted for the shell, followed by `args`.
+std::string fapcast(const std::string& args);
+
+// A fresh empty directory under the test's temporary directory, removed by the OS later.
+std::string make_temp_dir(const std::string& tag);
+
+}  // namespace fapcast::test

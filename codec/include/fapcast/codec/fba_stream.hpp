@@ -1,8 +1,9 @@
 #pragma once
 // Frame-at-a-time FBA coding for live transport: each frame becomes one byte-aligned, self-
 // delimiting access unit (an object plane), so that RTP can carry one per packet and a receiver
-// that lost packets resumes at the next intra access unit. spec/fba.md defines the bits; the
-// whole-file encoder and decoder are built on these same two classes.
+// that lost packets resumes at the next intra access unit. spec/fba.md defines the bits. The
+// whole-file coder shares the same coder state and segment coding; a file need not spend a start
+// code and byte alignment on every frame (spec/fba.md says what a file does).
 #include "fapcast/codec/fap_frame.hpp"
 
 #include <cstdint>

@@ -3,10 +3,12 @@
 namespace fapcast::codec {
 namespace {
 std::string format(const InputLocation& at, const std::string& rule, const std::string& detail) {
-  std::string s = at.source.empty() ? "<memory>" : at.source;
-  if (at.line) s += ":" + std::to_string(*at.line);
-  if (at.offset) s += ": byte " + std::to_string(*at.offset);
-  return s + ": " + rule + ": " + detail;
+  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on long operator+ chains at -O2.
+  std::string s = at.source.empty() ? std::string("<memory>") : at.source;
+  if (at.line) s.append(":").append(std::to_string(*at.line));
+  if (at.offset) s.append(": byte ").append(std::to_string(*at.offset));
+  s.append(": ").append(rule).append(": ").append(detail);
+  return s;
 }
 }  // namespace
 

@@ -30,12 +30,11 @@ def c3d(points, frames, labels, scale, rate, analog_used=0, analog_ratio=1, proc
         storage='int', units='mm', data_start=None, header_points=None, header_analog=None,
         truncate=None, key=0x50, labels2=None, with_events=False, missing=()):
     analog = analog_used * analog_ratio
-    ds = 4 if data_start is None else data_start
     sec = group(1, 'POINT') + group(2, 'ANALOG') + group(3, 'EVENT')
     sec += param(1, 'USED', 2, [], struct.pack('<H', points))
     sec += param(1, 'SCALE', 4, [], struct.pack('<f', scale))
     sec += param(1, 'RATE', 4, [], struct.pack('<f', rate))
-    sec += param(1, 'DATA_START', 2, [], struct.pack('<H', ds))
+    sec += param(1, 'DATA_START', 2, [], b'@@')  # patched once the section size is known
     sec += param(1, 'FRAMES', 2, [], struct.pack('<H', frames))
     sec += param(1, 'UNITS', -1, [len(units)], units.encode())
     w = max(len(l) for l in labels) if labels else 1
@@ -46,6 +45,9 @@ def c3d(points, frames, labels, scale, rate, analog_used=0, analog_ratio=1, proc
     sec += param(2, 'USED', 2, [], struct.pack('<H', analog_used))
     sec += param(2, 'RATE', 4, [], struct.pack('<f', rate * analog_ratio))
     sec += param(3, 'USED', 2, [], struct.pack('<H', 1), last=True)
+    nblocks = (4 + len(sec) + BLOCK - 1) // BLOCK
+    ds = 2 + nblocks if data_start is None else data_start
+    sec = sec.replace(b'@@', struct.pack('<H', ds))
     head = struct.pack('<BB', 2, key)
     head += struct.pack('<HHHHH', points if header_points is None else header_points,
                         analog if header_analog is None else header_analog, 1, frames, 0)
@@ -54,7 +56,7 @@ def c3d(points, frames, labels, scale, rate, analog_used=0, analog_ratio=1, proc
     if with_events:  # word 148-: label/range key, 4-char event labels, one event at 0.5 s
         head += struct.pack('<HHHH', 0, 0, 12345, 1) + b'\x00\x00' + struct.pack('<f', 0.5)
     head = head.ljust(BLOCK, b'\x00')
-    psec = (struct.pack('<BBBB', 1, 0x50, 2, processor) + sec).ljust(2 * BLOCK, b'\x00')
+    psec = (struct.pack('<BBBB', 1, 0x50, nblocks, processor) + sec).ljust(nblocks * BLOCK, b'\x00')
     data = b''
     for f in range(frames):
         for p in range(points):
@@ -93,7 +95,7 @@ write('bad/bad.005.c3d-bad-processor.c3d', c3d(3, 5, LAB, 0.5, 60.0, processor=7
 write('bad/bad.006.c3d-count-mismatch.c3d', c3d(3, 5, LAB, 0.5, 60.0, header_points=4))
 # Claims 5 frames of 3 points and 8 analog samples; the data stops after frame 2.
 write('bad/bad.007.c3d-truncated.c3d', c3d(3, 5, LAB, 0.5, 60.0, analog_used=2, analog_ratio=4,
-                                           truncate=3 * BLOCK + 2 * (3 * 8 + 16)))
+                                           truncate=2 * BLOCK + 2 * (3 * 8 + 16)))
 write('bad/bad.008.c3d-layout.c3d', c3d(3, 5, LAB, 0.5, 60.0, data_start=2))
 write('bad/bad.009.c3d-bad-scale.c3d', c3d(3, 5, LAB, 0.0, 60.0))
 write('bad/bad.010.c3d-units.c3d', c3d(3, 5, LAB, 0.5, 60.0, units='ft'))

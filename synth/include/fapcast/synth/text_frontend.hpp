@@ -1,0 +1,92 @@
+#pragma once
+// The text front-end: English text in, speech audio and a phone timeline out, from espeak-ng
+// (en-us voice) through its C API. Positions are samples of the returned audio, taken from the
+// events' exact `sample` field (their millisecond field is rounded).
+//
+// Segments: espeak-ng's phoneme events mark where each phone's sound starts; for a stop that
+// is its release. The lips (or tongue) close earlier, in the near-silence before the burst, so
+// for phones with a closure (stops, affricates, /m/; has_closure()) the segment starts at the
+// closure found in the audio (find_closure). The timeline is contiguous: each phone ends where
+// the next begins.
+//
+// Input rules (spec/phones.md, "Text front-end"):
+//  - valid UTF-8 of at most kMaxTextBytes bytes; no control characters except TAB, LF, CR;
+//    anything else throws std::invalid_argument naming the byte offset;
+//  - empty or whitespace-only text gives empty speech (no samples, no phones) without espeak;
+//  - text espeak-ng says nothing for (e.g. "...") gives a short stretch of silence, phones all SIL;
+//  - emoji and non-Latin characters are read out by espeak-ng by name ("grinning face").
+// espeak-ng is not thread-safe: calls are serialised by a process-wide mutex.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fapcast/synth/mono_audio.hpp"
+#include "fapcast/synth/phone.hpp"
+
+namespace fapcast::synth {
+
+// Longest accepted text: 32 KiB is about 5,000 words, half an hour of speech, 80 MB of audio.
+// Longer texts must be split by the caller (e.g. per paragraph).
+inline constexpr std::size_t kMaxTextBytes = 32 * 1024;
+
+inline constexpr int kNoWord = -1;
+
+struct TimedPhone {
+  Phone phone;
+  std::int64_t start_sample;    // segment start: the closure for has_closure() phones
+  std::int64_t end_sample;      // = next phone's start_sample (or the audio length)
+  std::int64_t event_sample;    // where espeak-ng's phoneme event put the phone
+  std::int64_t release_sample;  // end of the closure's quiet stretch; = start for other phones
+  int word;                     // index into Speech::words, kNoWord for silence
+  std::string espeak;           // the espeak-ng mnemonic reported
+  friend bool operator==(const TimedPhone&, const TimedPhone&) = default;
+};
+
+struct TimedWord {
+  std::string text;             // the word as written in the input (UTF-8)
+  std::size_t byte_offset;      // where it starts in the input
+  std::int64_t start_sample;    // first phone's start
+  std::int64_t end_sample;      // last phone's end
+  friend bool operator==(const TimedWord&, const TimedWord&) = default;
+};
+
+struct Speech {
+  MonoAudio audio;              // espeak-ng's own rate (22050 Hz for its voices), mono int16
+  std::vector<TimedPhone> phones;
+  std::vector<TimedWord> words;
+};
+
+struct SpeakOptions {
+  // Treat text inside [[ ]] as espeak-ng phoneme mnemonics (espeakPHONEMES), e.g. nonsense
+  // syllables of the recording script. Off by default: user text is text.
+  bool phoneme_input = false;
+};
+
+// Synthesises `text` (UTF-8) with espeak-ng en-us and segments it into phones and words.
+// Throws std::invalid_argument for text that breaks the input rules above, std::runtime_error
+// if espeak-ng fails (e.g. its data is missing).
+Speech speak(std::string_view text, const SpeakOptions& options = {});
+
+// Checks the input rules; throws std::invalid_argument "text: byte N: <rule>" on the first
+// violation. Returns the byte offset of every code point (for espeak's character positions).
+std::vector<std::size_t> validate_text(std::string_view text);
+
+// A closure found in the audio: where the energy drops (onset) and where it returns (release).
+struct Closure {
+  std::int64_t onset_sample;
+  std::int64_t release_sample;
+  friend bool operator==(const Closure&, const Closure&) = default;
+};
+
+// Finds the closure of a phone whose event is at `event_sample`, searching back to
+// `region_begin` (the previous phone's start) and forward to `region_end` (its own end): the
+// near-silent stretch (short-time RMS below a fifth of the previous phone's peak, 10 ms
+// windows every 2.5 ms) that starts at most 10 ms before and at most 40 ms after the event.
+// With no quiet stretch the closure is the event itself. After silence (nothing to drop from)
+// the onset is 50 ms before the event, bounded by region_begin.
+Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
+                     std::int64_t region_begin, std::int64_t event_sample, std::int64_t region_end);
+
+}  // namespace fapcast::synth

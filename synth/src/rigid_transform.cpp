@@ -1,5 +1,6 @@
 #include "fapcast/synth/rigid_transform.hpp"
 
+#include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <stdexcept>

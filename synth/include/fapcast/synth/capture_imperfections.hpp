@@ -49,7 +49,7 @@ void add_marker_noise(MarkerFrames& frames, PortableRandom& random, double sigma
 
 struct DropoutLimits {
   double runs_per_marker_minute = 3.0;  // expected dropped runs per marker per minute
-  Eigen::Index max_run_frames = 24;     // run length uniform in [1, max_run_frames]
+  Eigen::Index max_run_frames = 6;      // run length uniform in [1, max_run_frames]
 };
 struct DroppedRun {
   Eigen::Index marker, first_frame, frame_count;

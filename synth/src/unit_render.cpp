@@ -1,7 +1,5 @@
 #include "fapcast/synth/unit_render.hpp"
 
-#include <Eigen/Sparse>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -101,26 +99,44 @@ Eigen::MatrixXf render_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca
 
 Eigen::MatrixXf smooth_trajectory(const Eigen::MatrixXf& x, std::span<const double> weights,
                                   double lambda) {
-  const Eigen::Index n = x.rows();
-  if (static_cast<Eigen::Index>(weights.size()) != n)
-    throw std::invalid_argument("smooth: one weight per frame expected");
+  const auto n = static_cast<std::size_t>(x.rows());
+  if (weights.size() != n) throw std::invalid_argument("smooth: one weight per frame expected");
   if (n < 3 || lambda <= 0.0) return x;
-  // (W + lambda D'D) y = W x, D the (n-2) x n second-difference operator: pentadiagonal, SPD.
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<std::size_t>(n) * 5);
+  // (W + lambda D'D) y = W x with D the (n-2) x n second-difference operator: a symmetric
+  // pentadiagonal system. Its LDL' factor keeps the band, so one O(n) factorisation serves all
+  // k columns. a0, a1, a2: the diagonal and the first and second super-diagonals.
+  std::vector<double> a0(weights.begin(), weights.end()), a1(n, 0.0), a2(n, 0.0);
   constexpr double d[3] = {1.0, -2.0, 1.0};
-  Eigen::SparseMatrix<double> a(n, n);
-  for (Eigen::Index r = 0; r + 2 < n; ++r)
-    for (int p = 0; p < 3; ++p)
-      for (int q = 0; q < 3; ++q) entries.emplace_back(r + p, r + q, lambda * d[p] * d[q]);
-  for (Eigen::Index i = 0; i < n; ++i) entries.emplace_back(i, i, weights[static_cast<std::size_t>(i)]);
-  a.setFromTriplets(entries.begin(), entries.end());
-  // Banded already: the natural ordering keeps the factor banded (no fill).
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> solver(a);
-  if (solver.info() != Eigen::Success) throw std::runtime_error("smooth: factorisation failed");
-  const Eigen::VectorXd w = Eigen::Map<const Eigen::VectorXd>(weights.data(), n);
-  const Eigen::MatrixXd rhs = w.asDiagonal() * x.cast<double>();
-  return solver.solve(rhs).cast<float>();
+  for (std::size_t r = 0; r + 2 < n; ++r)
+    for (std::size_t p = 0; p < 3; ++p) {
+      a0[r + p] += lambda * d[p] * d[p];
+      if (p < 2) a1[r + p] += lambda * d[p] * d[p + 1];
+      if (p < 1) a2[r + p] += lambda * d[p] * d[p + 2];
+    }
+  // L(i, i-1) = l1[i], L(i, i-2) = l2[i], D = diag(dd).
+  std::vector<double> dd(n), l1(n, 0.0), l2(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i >= 2) l2[i] = a2[i - 2] / dd[i - 2];
+    if (i >= 1) l1[i] = (a1[i - 1] - (i >= 2 ? l2[i] * l1[i - 1] * dd[i - 2] : 0.0)) / dd[i - 1];
+    dd[i] = a0[i] - (i >= 1 ? l1[i] * l1[i] * dd[i - 1] : 0.0) - (i >= 2 ? l2[i] * l2[i] * dd[i - 2] : 0.0);
+    if (!(dd[i] > 0.0)) throw std::invalid_argument("smooth: weights must be positive");
+  }
+  Eigen::MatrixXf y(x.rows(), x.cols());
+  std::vector<double> z(n);
+  for (Eigen::Index c = 0; c < x.cols(); ++c) {
+    for (std::size_t i = 0; i < n; ++i) {
+      z[i] = weights[i] * x(static_cast<Eigen::Index>(i), c);
+      if (i >= 1) z[i] -= l1[i] * z[i - 1];
+      if (i >= 2) z[i] -= l2[i] * z[i - 2];
+    }
+    for (std::size_t i = 0; i < n; ++i) z[i] /= dd[i];
+    for (std::size_t i = n; i-- > 0;) {
+      if (i + 1 < n) z[i] -= l1[i + 1] * z[i + 1];
+      if (i + 2 < n) z[i] -= l2[i + 2] * z[i + 2];
+      y(static_cast<Eigen::Index>(i), c) = static_cast<float>(z[i]);
+    }
+  }
+  return y;
 }
 
 }  // namespace fapcast::synth

@@ -38,6 +38,7 @@ Eigen::MatrixXf render_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca
 // A discrete cubic smoothing spline (Whittaker-Henderson, second differences): the y minimising
 // sum_n w_n |y_n - x_n|^2 + lambda sum_n |y_{n+1} - 2 y_n + y_{n-1}|^2, column by column, by one
 // banded factorisation shared by all columns. Large weights pin frames (closures) in place.
+// Weights must be positive; lambda <= 0 returns x unchanged.
 Eigen::MatrixXf smooth_trajectory(const Eigen::MatrixXf& x, std::span<const double> weights,
                                   double lambda);
 

@@ -1,0 +1,92 @@
+// Unit search speed on a graph the size of the paper's corpus (1,400 recordings x 30 phones,
+// 21 viseme classes, k = 17 PCA coefficients at 60 fps), built from random visemes and random
+// PCA frames: a stand-in for a voice with the same shape, not a voice. A 10-second target of
+// 120 phones is searched with beta = 0 (units only), beta > 0 (smoothness) and with a cap on the
+// active states; counters report seconds of animation per CPU second and active states.
+#include "fapcast/synth/unit_render.hpp"
+#include "fapcast/synth/unit_search.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <numeric>
+#include <random>
+
+namespace {
+using namespace fapcast::synth;
+
+constexpr int kRecordings = 1400, kPhonesPerRecording = 30, kClasses = 21, kK = 17;
+constexpr int kFramesPerPhone = 5;  // ~83 ms at 60 fps
+constexpr int kTargetPhones = 120;  // ~10 s of speech
+
+struct World {
+  std::vector<PhoneState> states;
+  Eigen::MatrixXf frames;
+  std::unique_ptr<PhoneGraph> graph;
+  std::vector<VisemeClass> targets;
+  std::vector<TargetPhone> timing;
+};
+
+const World& world() {
+  static const World w = [] {
+    World w;
+    std::mt19937_64 rng(42);
+    std::uniform_int_distribution<int> cls(0, kClasses - 1);
+    std::uint32_t f = 0;
+    for (std::uint32_t u = 0; u < kRecordings; ++u)
+      for (int p = 0; p < kPhonesPerRecording; ++p, f += kFramesPerPhone)
+        w.states.push_back({u, static_cast<VisemeClass>(cls(rng)), {f, kFramesPerPhone}});
+    std::normal_distribution<float> normal;
+    w.frames = Eigen::MatrixXf(f, kK);
+    for (Eigen::Index i = 0; i < w.frames.size(); ++i) w.frames.data()[i] = normal(rng);
+    w.graph = std::make_unique<PhoneGraph>(w.states, junction_features(w.states, w.frames));
+    std::int64_t t = 0;
+    for (int n = 0; n < kTargetPhones; ++n) {
+      w.targets.push_back(static_cast<VisemeClass>(cls(rng)));
+      w.timing.push_back({w.targets.back(), t, t + kFramesPerPhone, false});
+      t += kFramesPerPhone;
+    }
+    return w;
+  }();
+  return w;
+}
+
+void report(benchmark::State& state, const SearchResult& r) {
+  const double seconds_of_animation = kTargetPhones * kFramesPerPhone / 60.0;
+  state.counters["anim_s_per_cpu_s"] =
+      benchmark::Counter(seconds_of_animation * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  const auto& a = r.stats.active_per_step;
+  state.counters["active_mean"] = std::accumulate(a.begin(), a.end(), 0.0) / static_cast<double>(a.size());
+  state.counters["units"] = static_cast<double>(r.units.size());
+}
+
+void BM_Search(benchmark::State& state) {
+  const World& w = world();
+  const double beta = static_cast<double>(state.range(0)) / 100.0;
+  const std::optional<std::size_t> cap =
+      state.range(1) > 0 ? std::optional<std::size_t>(static_cast<std::size_t>(state.range(1))) : std::nullopt;
+  SearchResult r;
+  for (auto _ : state) {
+    r = unit_search(*w.graph, w.targets, {beta, cap});
+    benchmark::DoNotOptimize(r.cost);
+  }
+  report(state, r);
+}
+// Args: beta x 100, cap (0 = none).
+BENCHMARK(BM_Search)->Args({0, 0})->Args({10, 0})->Args({10, 64})->Args({10, 16})->Unit(benchmark::kMillisecond);
+
+void BM_SearchAndRender(benchmark::State& state) {
+  const World& w = world();
+  SearchResult r;
+  for (auto _ : state) {
+    r = unit_search(*w.graph, w.targets, {0.1, 16});
+    auto y = render_units(*w.graph, w.frames, r, w.timing);
+    benchmark::DoNotOptimize(y.data());
+  }
+  report(state, r);
+}
+BENCHMARK(BM_SearchAndRender)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

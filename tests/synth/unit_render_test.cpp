@@ -1,0 +1,108 @@
+// Time warping, join cross-fades and the smoothing spline: properties, not printed numbers.
+#include "fapcast/synth/unit_render.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <random>
+
+namespace fapcast::synth {
+namespace {
+
+// Largest |second difference| of column 0 over frames [lo, hi).
+float max_second_difference(const Eigen::MatrixXf& y, Eigen::Index lo, Eigen::Index hi) {
+  float m = 0;
+  for (Eigen::Index n = std::max<Eigen::Index>(lo, 1); n + 1 < std::min(hi, y.rows()); ++n)
+    m = std::max(m, std::abs(y(n + 1, 0) - 2 * y(n, 0) + y(n - 1, 0)));
+  return m;
+}
+
+TEST(SmoothTrajectory, KeepsStraightLinesAndTheMean) {
+  Eigen::MatrixXf line(50, 2);
+  for (int n = 0; n < 50; ++n) line.row(n) << 3.0f * n - 7, -0.5f * n;
+  const std::vector<double> ones(50, 1.0);
+  EXPECT_LT((smooth_trajectory(line, ones, 100.0) - line).cwiseAbs().maxCoeff(), 1e-3f);
+
+  std::mt19937_64 rng(7);
+  std::normal_distribution<float> noise;
+  Eigen::MatrixXf x(200, 1);
+  for (int n = 0; n < 200; ++n) x(n, 0) = noise(rng);
+  const Eigen::MatrixXf y = smooth_trajectory(x, std::vector<double>(200, 1.0), 10.0);
+  EXPECT_NEAR(y.sum(), x.sum(), 1e-2f) << "second differences cannot move the mean";
+  EXPECT_LT(max_second_difference(y, 0, 200), 0.5f * max_second_difference(x, 0, 200));
+  EXPECT_EQ(smooth_trajectory(x, std::vector<double>(200, 1.0), 0.0), x);
+}
+
+TEST(SmoothTrajectory, HeavyWeightsPinFrames) {
+  Eigen::MatrixXf x = Eigen::MatrixXf::Zero(61, 1);
+  x(30, 0) = -1.0f;  // a one-frame dip, like a lip closure at its deepest
+  std::vector<double> w(61, 1.0);
+  const float free_dip = smooth_trajectory(x, w, 5.0)(30, 0);
+  w[30] = 1000.0;
+  const float held_dip = smooth_trajectory(x, w, 5.0)(30, 0);
+  EXPECT_GT(free_dip, -0.5f) << "unweighted smoothing flattens the dip";
+  EXPECT_LT(held_dip, -0.95f) << "a held frame keeps its depth";
+}
+
+// One recording 0..(n-1) of k = 1 where the frame value equals its index.
+struct Ramp {
+  std::vector<PhoneState> states;
+  Eigen::MatrixXf frames;
+};
+
+Ramp ramp(std::vector<std::uint32_t> phone_frames) {
+  Ramp r;
+  std::uint32_t f = 0;
+  VisemeClass v = 0;
+  for (auto c : phone_frames) {
+    r.states.push_back({0, v++, {f, c}});
+    f += c;
+  }
+  r.frames = Eigen::VectorXf::LinSpaced(f, 0.0f, static_cast<float>(f - 1));
+  return r;
+}
+
+TEST(RenderUnits, IdentityWarpReproducesTheRecording) {
+  const Ramp r = ramp({4, 6, 5});
+  const PhoneGraph g(r.states);
+  SearchResult sel{{0, 1, 2}, {{0, 0, 3}}, 1.0, {}};
+  const std::vector<TargetPhone> targets{{0, 10, 14}, {1, 14, 20}, {2, 20, 25}};
+  const Eigen::MatrixXf y = render_units(g, r.frames, sel, targets, {0, 0.0, 1.0});
+  ASSERT_EQ(y.rows(), 15);
+  EXPECT_LT((y - r.frames).cwiseAbs().maxCoeff(), 1e-5f);
+}
+
+TEST(RenderUnits, WarpStretchesEachPhoneToItsTargetDuration) {
+  const Ramp r = ramp({4, 4});
+  const PhoneGraph g(r.states);
+  SearchResult sel{{0, 1}, {{0, 0, 2}}, 1.0, {}};
+  // Phone 0 (frames 0..3) stretched to 8 frames, phone 1 (4..7) squeezed to 2.
+  const std::vector<TargetPhone> targets{{0, 0, 8}, {1, 8, 10}};
+  const Eigen::MatrixXf y = render_units(g, r.frames, sel, targets, {0, 0.0, 1.0});
+  ASSERT_EQ(y.rows(), 10);
+  for (int n = 1; n < 8; ++n) EXPECT_GE(y(n, 0), y(n - 1, 0)) << "monotone source stays monotone";
+  EXPECT_NEAR(y(6, 0) - y(1, 0), 2.5f, 1e-4f) << "8 frames cover phone 0's span at half speed";
+  EXPECT_NEAR(y(9, 0) - y(8, 0), 2.0f, 1e-4f) << "2 frames cover phone 1's span at double speed";
+  EXPECT_THROW(render_units(g, r.frames, sel, std::vector<TargetPhone>{{0, 0, 0}, {1, 0, 2}}),
+               std::invalid_argument);
+}
+
+TEST(RenderUnits, JoinsAreSmootherAfterCrossFadeAndSmoothing) {
+  // Two recordings at different levels: joining them is a jump of 10.
+  std::vector<PhoneState> states{{0, 0, {0, 10}}, {0, 1, {10, 10}}, {1, 0, {20, 10}}, {1, 1, {30, 10}}};
+  Eigen::MatrixXf frames(40, 1);
+  for (int n = 0; n < 40; ++n) frames(n, 0) = n < 20 ? 0.0f : 10.0f;
+  const PhoneGraph g(states);
+  SearchResult sel{{0, 3}, {{0, 0, 1}, {3, 1, 1}}, 2.0, {}};
+  const std::vector<TargetPhone> targets{{0, 0, 10}, {1, 10, 20}};
+  const Eigen::MatrixXf raw = render_units(g, frames, sel, targets, {0, 0.0, 1.0});
+  const Eigen::MatrixXf smooth = render_units(g, frames, sel, targets, {3, 2.0, 1.0});
+  EXPECT_NEAR(max_second_difference(raw, 5, 15), 10.0f, 1e-4f);
+  EXPECT_LT(max_second_difference(smooth, 5, 15), 2.5f);
+  EXPECT_NEAR(smooth(0, 0), 0.0f, 0.2f);
+  EXPECT_NEAR(smooth(19, 0), 10.0f, 0.2f);
+}
+
+}  // namespace
+}  // namespace fapcast::synth

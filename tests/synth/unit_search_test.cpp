@@ -1,0 +1,216 @@
+// The Viterbi unit search against brute force on small random graphs, and its contracts.
+#include "fapcast/synth/unit_search.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <random>
+
+namespace fapcast::synth {
+namespace {
+
+std::uint64_t test_seed() {
+  const char* s = std::getenv("FAPCAST_SEED");
+  return s ? std::strtoull(s, nullptr, 10) : 20061;
+}
+
+// Utterances given as viseme strings; each phone one frame long, PCA frames random.
+struct Toy {
+  std::vector<PhoneState> states;
+  Eigen::MatrixXf frames;
+};
+
+Toy make_toy(const std::vector<std::vector<VisemeClass>>& utterances, std::mt19937_64& rng, int k = 3,
+             int frames_per_phone = 2) {
+  Toy toy;
+  std::uint32_t f = 0;
+  for (std::uint32_t u = 0; u < utterances.size(); ++u)
+    for (VisemeClass v : utterances[u]) {
+      toy.states.push_back({u, v, {f, static_cast<std::uint32_t>(frames_per_phone)}});
+      f += static_cast<std::uint32_t>(frames_per_phone);
+    }
+  std::normal_distribution<float> normal;
+  toy.frames = Eigen::MatrixXf(f, k);
+  for (Eigen::Index i = 0; i < toy.frames.size(); ++i) toy.frames.data()[i] = normal(rng);
+  return toy;
+}
+
+// Minimum cost over every admissible state sequence, or +inf when there is none.
+double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, double beta) {
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<StateId> path;
+  std::function<void(std::size_t, double)> go = [&](std::size_t t, double cost) {
+    if (t == targets.size()) {
+      best = std::min(best, cost);
+      return;
+    }
+    for (StateId j = 0; j < g.size(); ++j) {
+      if (g.state(j).viseme != targets[t]) continue;
+      double step;
+      if (t == 0) {
+        step = 1.0;
+      } else {
+        const StateId i = path.back();
+        const bool next_in_recording = g.has_child(i) && j == i + 1;
+        const bool admissible_join = g.has_parent(j) && g.state(j - 1).viseme == g.state(i).viseme;
+        if (next_in_recording) step = 0.0;
+        else if (admissible_join) step = 1.0 + beta * junction_cost(g, i, j);
+        else continue;
+      }
+      path.push_back(j);
+      go(t + 1, cost + step);
+      path.pop_back();
+    }
+  };
+  go(0, 0.0);
+  return best;
+}
+
+class UnitSearchBruteForce : public ::testing::TestWithParam<double> {};
+
+TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
+  const double beta = GetParam();
+  const auto seed = test_seed();
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> visemes(0, 2), length(2, 5), count(2, 4), tlen(1, 5);
+  int compared = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<std::vector<VisemeClass>> utts(static_cast<std::size_t>(count(rng)));
+    for (auto& u : utts) {
+      u.resize(static_cast<std::size_t>(length(rng)));
+      for (auto& v : u) v = static_cast<VisemeClass>(visemes(rng));
+    }
+    const Toy toy = make_toy(utts, rng);
+    const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+    std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
+    for (auto& v : targets) v = static_cast<VisemeClass>(visemes(rng));
+    bool covered = true;
+    for (auto v : targets) covered = covered && !g.with_viseme(v).empty();
+    if (!covered) {
+      EXPECT_THROW(unit_search(g, targets, {beta, {}}), std::invalid_argument);
+      continue;
+    }
+    const double expected = brute_force(g, targets, beta);
+    const SearchResult r = unit_search(g, targets, {beta, {}});
+    if (std::isinf(expected)) {
+      EXPECT_GT(r.stats.hard_joins, 0u) << "no admissible path exists, so a hard join is needed";
+      continue;
+    }
+    ++compared;
+    ASSERT_NEAR(r.cost, expected, 1e-4 * (1 + expected))
+        << "trial " << trial << "; reproduce with FAPCAST_SEED=" << seed;
+    EXPECT_EQ(r.stats.hard_joins, 0u);
+    // The path is real: visemes match and units are runs within one recording.
+    ASSERT_EQ(r.states.size(), targets.size());
+    for (std::size_t t = 0; t < targets.size(); ++t) EXPECT_EQ(g.state(r.states[t]).viseme, targets[t]);
+    std::size_t covered_targets = 0;
+    for (const Unit& u : r.units) {
+      EXPECT_EQ(u.first_target, covered_targets);
+      for (std::size_t n = 0; n < u.length; ++n) EXPECT_EQ(r.states[u.first_target + n], u.first_state + n);
+      covered_targets += u.length;
+    }
+    EXPECT_EQ(covered_targets, targets.size());
+    if (beta == 0.0) {
+      EXPECT_EQ(r.cost, static_cast<double>(r.units.size())) << "beta = 0 counts units";
+    }
+  }
+  EXPECT_GT(compared, 100) << "too few comparable trials to mean anything";
+}
+
+INSTANTIATE_TEST_SUITE_P(Betas, UnitSearchBruteForce, ::testing::Values(0.0, 0.05, 1.0));
+
+TEST(UnitSearch, PrefersOneLongUnitOverPieces) {
+  std::mt19937_64 rng(1);
+  // Recording 1 holds the whole target; recordings 0 and 2 hold only pieces of it.
+  const Toy toy = make_toy({{0, 1, 5}, {3, 0, 1, 2, 4}, {2, 4, 3}}, rng);
+  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const std::vector<VisemeClass> targets{0, 1, 2, 4};
+  const SearchResult r = unit_search(g, targets);
+  ASSERT_EQ(r.units.size(), 1u);
+  EXPECT_EQ(r.units[0], (Unit{4, 0, 4}));
+  EXPECT_EQ(r.cost, 1.0);
+}
+
+TEST(UnitSearch, JoinsOnlyWhereTheParentVisemeMatches) {
+  std::mt19937_64 rng(2);
+  // Target 0 1 2: recording 0 gives "0 1"; "2" exists after a 1 (recording 1) and after a 3
+  // (recording 2). Only recording 1's /2/ may follow a unit ending in viseme 1.
+  const Toy toy = make_toy({{0, 1}, {1, 2}, {3, 2}}, rng);
+  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const std::vector<VisemeClass> targets{0, 1, 2};
+  const SearchResult r = unit_search(g, targets, {1.0, {}});
+  ASSERT_EQ(r.states.size(), 3u);
+  EXPECT_EQ(r.states[2], 3u);
+  EXPECT_EQ(r.stats.hard_joins, 0u);
+}
+
+TEST(UnitSearch, UncoverableVisemeIsNamed) {
+  std::mt19937_64 rng(3);
+  const Toy toy = make_toy({{0, 1}}, rng);
+  const PhoneGraph g(toy.states);
+  const std::vector<VisemeClass> targets{0, 7};
+  try {
+    unit_search(g, targets);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("viseme class 7 (target phone 1)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(UnitSearch, CapBoundsActiveStatesAndStillFindsAPath) {
+  std::mt19937_64 rng(4);
+  std::uniform_int_distribution<int> visemes(0, 5);
+  std::vector<std::vector<VisemeClass>> utts(200);
+  for (auto& u : utts) {
+    u.resize(12);
+    for (auto& v : u) v = static_cast<VisemeClass>(visemes(rng));
+  }
+  const Toy toy = make_toy(utts, rng);
+  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  std::vector<VisemeClass> targets(40);
+  for (auto& v : targets) v = static_cast<VisemeClass>(visemes(rng));
+  const SearchResult full = unit_search(g, targets, {0.1, {}});
+  const SearchResult capped = unit_search(g, targets, {0.1, 8});
+  for (auto n : capped.stats.active_per_step) EXPECT_LE(n, 8u);
+  EXPECT_GT(*std::max_element(full.stats.active_per_step.begin(), full.stats.active_per_step.end()), 8u);
+  EXPECT_GE(capped.cost, full.cost - 1e-9) << "pruning can only lose optimality, never gain it";
+  EXPECT_EQ(capped.states.size(), targets.size());
+}
+
+TEST(UnitSearch, HardJoinWhenADivisemeWasNeverRecorded) {
+  std::mt19937_64 rng(5);
+  const Toy toy = make_toy({{0, 1}, {2, 3}}, rng);
+  const PhoneGraph g(toy.states);
+  const std::vector<VisemeClass> targets{1, 3};  // "1 3" never occurs; no /3/ follows a /1/
+  const SearchResult r = unit_search(g, targets);
+  EXPECT_EQ(r.stats.hard_joins, 1u);
+  EXPECT_EQ(r.states, (std::vector<StateId>{1, 3}));
+}
+
+TEST(PhoneGraph, IndexesStatesByVisemeAndDiviseme) {
+  std::mt19937_64 rng(6);
+  const Toy toy = make_toy({{0, 1, 0}, {1, 0}}, rng);
+  const PhoneGraph g(toy.states);
+  EXPECT_EQ(std::vector<StateId>(g.with_viseme(0).begin(), g.with_viseme(0).end()), (std::vector<StateId>{0, 2, 4}));
+  EXPECT_EQ(std::vector<StateId>(g.entries(1, 0).begin(), g.entries(1, 0).end()), (std::vector<StateId>{2, 4}));
+  EXPECT_TRUE(g.entries(0, 0).empty());
+  EXPECT_FALSE(g.has_parent(3));
+  EXPECT_TRUE(g.has_parent(4));
+  EXPECT_THROW(PhoneGraph({{1, 0, {0, 1}}, {0, 0, {1, 1}}}), std::invalid_argument);
+  EXPECT_THROW(PhoneGraph({{0, 64, {0, 1}}}), std::invalid_argument);
+}
+
+TEST(PhoneGraph, JunctionCostIsTheMeanSquaredSecondDifference) {
+  // Two recordings of one phone each, 2 frames each, k = 1: trajectories [0, 1] and [5, 3].
+  std::vector<PhoneState> states{{0, 0, {0, 2}}, {1, 1, {2, 2}}};
+  Eigen::MatrixXf frames(4, 1);
+  frames << 0, 1, 5, 3;
+  const PhoneGraph g(states, junction_features(states, frames));
+  // Concatenated 0 1 5 3: second differences at the junction are 5-2+0 = 3 and 3-10+1 = -6.
+  EXPECT_FLOAT_EQ(junction_cost(g, 0, 1), 0.5f * (9 + 36));
+}
+
+}  // namespace
+}  // namespace fapcast::synth

@@ -22,6 +22,10 @@ struct Registration {
   Registration(std::string_view order_key, AddCommand add);
 };
 
+// The group `name` of sub-commands ("corpus", "voice" ...): created by whichever command file
+// registers first, found by the others.
+CLI::App* command_group(CLI::App& top, const std::string& name, const std::string& description);
+
 // The registered commands, sorted by their order keys so that --help lists them stably.
 std::vector<AddCommand> registered_commands();
 

@@ -31,6 +31,14 @@ Registration::Registration(std::string_view order_key, AddCommand add) {
   registry().emplace(std::string(order_key), std::move(add));
 }
 
+CLI::App* command_group(CLI::App& top, const std::string& name, const std::string& description) {
+  for (CLI::App* sub : top.get_subcommands([](CLI::App*) { return true; }))
+    if (sub->get_name() == name) return sub;
+  CLI::App* group = top.add_subcommand(name, description);
+  group->require_subcommand(1);
+  return group;
+}
+
 std::vector<AddCommand> registered_commands() {
   std::vector<AddCommand> out;
   for (auto& [key, add] : registry()) out.push_back(add);

@@ -7,8 +7,10 @@
 namespace fapcast::synth {
 namespace {
 
-constexpr std::uint32_t diviseme_key(VisemeClass from, VisemeClass to) {
-  return std::uint32_t{from} * kMaxVisemeClasses + to;
+constexpr std::size_t index(VisemeClass v) { return static_cast<std::size_t>(v); }
+
+constexpr std::size_t diviseme_key(VisemeClass from, VisemeClass to) {
+  return index(from) * kVisemeClassCount + index(to);
 }
 
 // Groups `ids` by `key(id)` (< buckets) into CSR arrays, keeping ids ascending in each bucket.
@@ -30,10 +32,10 @@ void bucket(std::size_t n, std::size_t buckets, Key key, std::vector<std::uint32
 PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features)
     : states_(std::move(states)), features_(std::move(features)) {
   for (std::size_t j = 0; j < states_.size(); ++j) {
-    if (states_[j].viseme >= kMaxVisemeClasses)
+    if (index(states_[j].viseme) >= kVisemeClassCount)
       throw std::invalid_argument("phone graph: state " + std::to_string(j) + " has viseme class " +
-                                  std::to_string(states_[j].viseme) + ", at most " +
-                                  std::to_string(kMaxVisemeClasses - 1) + " allowed");
+                                  std::to_string(index(states_[j].viseme)) + ", at most " +
+                                  std::to_string(kVisemeClassCount - 1) + " allowed");
     if (j > 0 && states_[j].utterance < states_[j - 1].utterance)
       throw std::invalid_argument("phone graph: utterance " + std::to_string(states_[j].utterance) +
                                   " is not contiguous (state " + std::to_string(j) + ")");
@@ -44,9 +46,9 @@ PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features
     throw std::invalid_argument("phone graph: junction features have " + std::to_string(rows) +
                                 " rows for " + std::to_string(states_.size()) + " states");
   const std::size_t none = SIZE_MAX;
-  bucket(states_.size(), kMaxVisemeClasses, [&](StateId j) -> std::size_t { return states_[j].viseme; },
+  bucket(states_.size(), kVisemeClassCount, [&](StateId j) -> std::size_t { return index(states_[j].viseme); },
          viseme_offsets_, by_viseme_);
-  bucket(states_.size(), std::size_t{kMaxVisemeClasses} * kMaxVisemeClasses,
+  bucket(states_.size(), kVisemeClassCount * kVisemeClassCount,
          [&](StateId j) -> std::size_t {
            return has_parent(j) ? diviseme_key(states_[j - 1].viseme, states_[j].viseme) : none;
          },
@@ -54,12 +56,13 @@ PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features
 }
 
 std::span<const StateId> PhoneGraph::with_viseme(VisemeClass v) const {
-  if (v >= kMaxVisemeClasses) return {};
-  return std::span(by_viseme_).subspan(viseme_offsets_[v], viseme_offsets_[v + 1] - viseme_offsets_[v]);
+  const auto i = index(v);
+  if (i >= kVisemeClassCount) return {};
+  return std::span(by_viseme_).subspan(viseme_offsets_[i], viseme_offsets_[i + 1] - viseme_offsets_[i]);
 }
 
 std::span<const StateId> PhoneGraph::entries(VisemeClass from, VisemeClass to) const {
-  if (from >= kMaxVisemeClasses || to >= kMaxVisemeClasses) return {};
+  if (index(from) >= kVisemeClassCount || index(to) >= kVisemeClassCount) return {};
   const auto k = diviseme_key(from, to);
   return std::span(by_diviseme_).subspan(diviseme_offsets_[k], diviseme_offsets_[k + 1] - diviseme_offsets_[k]);
 }

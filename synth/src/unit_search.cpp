@@ -100,7 +100,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   for (std::size_t t = 0; t < targets.size(); ++t)
     if (graph.with_viseme(targets[t]).empty())
       throw std::invalid_argument("unit search: the voice has no phone of viseme class " +
-                                  std::to_string(targets[t]) + " (target phone " +
+                                  std::string(viseme_class_name(targets[t])) + " (target phone " +
                                   std::to_string(t) + ")");
 
   std::vector<std::vector<Active>> steps(targets.size());

@@ -15,7 +15,10 @@
 namespace {
 using namespace fapcast::synth;
 
-constexpr int kRecordings = 1400, kPhonesPerRecording = 30, kClasses = 21, kK = 17;
+constexpr int kRecordings = 1400, kPhonesPerRecording = 30, kK = 17;
+constexpr int kClasses = static_cast<int>(kVisemeClassCount);
+
+VisemeClass V(int i) { return static_cast<VisemeClass>(i); }
 constexpr int kFramesPerPhone = 5;  // ~83 ms at 60 fps
 constexpr int kTargetPhones = 120;  // ~10 s of speech
 
@@ -35,14 +38,14 @@ const World& world() {
     std::uint32_t f = 0;
     for (std::uint32_t u = 0; u < kRecordings; ++u)
       for (int p = 0; p < kPhonesPerRecording; ++p, f += kFramesPerPhone)
-        w.states.push_back({u, static_cast<VisemeClass>(cls(rng)), {f, kFramesPerPhone}});
+        w.states.push_back({u, V(cls(rng)), {f, kFramesPerPhone}});
     std::normal_distribution<float> normal;
     w.frames = Eigen::MatrixXf(f, kK);
     for (Eigen::Index i = 0; i < w.frames.size(); ++i) w.frames.data()[i] = normal(rng);
     w.graph = std::make_unique<PhoneGraph>(w.states, junction_features(w.states, w.frames));
     std::int64_t t = 0;
     for (int n = 0; n < kTargetPhones; ++n) {
-      w.targets.push_back(static_cast<VisemeClass>(cls(rng)));
+      w.targets.push_back(V(cls(rng)));
       w.timing.push_back({w.targets.back(), t, t + kFramesPerPhone, false});
       t += kFramesPerPhone;
     }

@@ -54,9 +54,9 @@ struct Ramp {
 Ramp ramp(std::vector<std::uint32_t> phone_frames) {
   Ramp r;
   std::uint32_t f = 0;
-  VisemeClass v = 0;
+  int v = 0;
   for (auto c : phone_frames) {
-    r.states.push_back({0, v++, {f, c}});
+    r.states.push_back({0, static_cast<VisemeClass>(v++), {f, c}});
     f += c;
   }
   r.frames = Eigen::VectorXf::LinSpaced(f, 0.0f, static_cast<float>(f - 1));
@@ -67,7 +67,7 @@ TEST(RenderUnits, IdentityWarpReproducesTheRecording) {
   const Ramp r = ramp({4, 6, 5});
   const PhoneGraph g(r.states);
   SearchResult sel{{0, 1, 2}, {{0, 0, 3}}, 1.0, {}};
-  const std::vector<TargetPhone> targets{{0, 10, 14}, {1, 14, 20}, {2, 20, 25}};
+  const std::vector<TargetPhone> targets{{r.states[0].viseme, 10, 14}, {r.states[1].viseme, 14, 20}, {r.states[2].viseme, 20, 25}};
   const Eigen::MatrixXf y = render_units(g, r.frames, sel, targets, {0, 0.0, 1.0});
   ASSERT_EQ(y.rows(), 15);
   EXPECT_LT((y - r.frames).cwiseAbs().maxCoeff(), 1e-5f);
@@ -78,24 +78,25 @@ TEST(RenderUnits, WarpStretchesEachPhoneToItsTargetDuration) {
   const PhoneGraph g(r.states);
   SearchResult sel{{0, 1}, {{0, 0, 2}}, 1.0, {}};
   // Phone 0 (frames 0..3) stretched to 8 frames, phone 1 (4..7) squeezed to 2.
-  const std::vector<TargetPhone> targets{{0, 0, 8}, {1, 8, 10}};
+  const std::vector<TargetPhone> targets{{r.states[0].viseme, 0, 8}, {r.states[1].viseme, 8, 10}};
   const Eigen::MatrixXf y = render_units(g, r.frames, sel, targets, {0, 0.0, 1.0});
   ASSERT_EQ(y.rows(), 10);
   for (int n = 1; n < 8; ++n) EXPECT_GE(y(n, 0), y(n - 1, 0)) << "monotone source stays monotone";
   EXPECT_NEAR(y(6, 0) - y(1, 0), 2.5f, 1e-4f) << "8 frames cover phone 0's span at half speed";
   EXPECT_NEAR(y(9, 0) - y(8, 0), 2.0f, 1e-4f) << "2 frames cover phone 1's span at double speed";
-  EXPECT_THROW(render_units(g, r.frames, sel, std::vector<TargetPhone>{{0, 0, 0}, {1, 0, 2}}),
+  EXPECT_THROW(render_units(g, r.frames, sel, std::vector<TargetPhone>{{r.states[0].viseme, 0, 0}, {r.states[1].viseme, 0, 2}}),
                std::invalid_argument);
 }
 
 TEST(RenderUnits, JoinsAreSmootherAfterCrossFadeAndSmoothing) {
   // Two recordings at different levels: joining them is a jump of 10.
-  std::vector<PhoneState> states{{0, 0, {0, 10}}, {0, 1, {10, 10}}, {1, 0, {20, 10}}, {1, 1, {30, 10}}};
+  const auto a = static_cast<VisemeClass>(0), b = static_cast<VisemeClass>(1);
+  std::vector<PhoneState> states{{0, a, {0, 10}}, {0, b, {10, 10}}, {1, a, {20, 10}}, {1, b, {30, 10}}};
   Eigen::MatrixXf frames(40, 1);
   for (int n = 0; n < 40; ++n) frames(n, 0) = n < 20 ? 0.0f : 10.0f;
   const PhoneGraph g(states);
   SearchResult sel{{0, 3}, {{0, 0, 1}, {3, 1, 1}}, 2.0, {}};
-  const std::vector<TargetPhone> targets{{0, 0, 10}, {1, 10, 20}};
+  const std::vector<TargetPhone> targets{{a, 0, 10}, {b, 10, 20}};
   const Eigen::MatrixXf raw = render_units(g, frames, sel, targets, {0, 0.0, 1.0});
   const Eigen::MatrixXf smooth = render_units(g, frames, sel, targets, {3, 2.0, 1.0});
   EXPECT_NEAR(max_second_difference(raw, 5, 15), 10.0f, 1e-4f);

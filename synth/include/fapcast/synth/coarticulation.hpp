@@ -12,7 +12,7 @@
 namespace fapcast::synth {
 
 // A phone with its span [start_sample, end_sample) on the WAV timeline.
-struct TimedPhone {
+struct PhoneSpan {
   std::string phone;  // ARPAbet symbol (stress digit allowed) or "sil"
   std::int64_t start_sample;
   std::int64_t end_sample;
@@ -20,7 +20,7 @@ struct TimedPhone {
 
 struct PhoneTimeline {
   std::int32_t sample_rate_hz = 0;  // > 0
-  std::vector<TimedPhone> phones;   // in time order, non-overlapping, each non-empty
+  std::vector<PhoneSpan> phones;   // in time order, non-overlapping, each non-empty
 };
 
 struct CoarticulationOptions {

@@ -1,6 +1,8 @@
 #pragma once
 // The phone graph of the paper's section 3.7: one horizontal chain of phone states per recorded
 // utterance, indexed so that the unit search never scans the corpus.
+#include "fapcast/synth/viseme.hpp"
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -10,10 +12,6 @@
 namespace fapcast::synth {
 
 using StateId = std::uint32_t;
-// A class of the unit search's viseme alphabet (spec/visemes.tsv): phones with the same visible
-// articulation share one. The search only ever compares classes for equality.
-using VisemeClass = std::uint8_t;
-inline constexpr int kMaxVisemeClasses = 64;
 
 // Frames [first, first + count) of the voice's frame array (60 fps).
 struct FrameSpan {
@@ -25,7 +23,7 @@ struct FrameSpan {
 // One phone of one recorded utterance.
 struct PhoneState {
   std::uint32_t utterance = 0;  // recordings are numbered 0..U-1
-  VisemeClass viseme = 0;
+  VisemeClass viseme = VisemeClass::kSilence;
   FrameSpan frames;
   bool operator==(const PhoneState&) const = default;
 };
@@ -47,8 +45,8 @@ class PhoneGraph {
  public:
   // `states` must list each utterance's phones contiguously and in spoken order; `features`
   // has one row per state (or is empty: then every junction costs only its segment count).
-  // Throws std::invalid_argument when a viseme class is >= kMaxVisemeClasses or the feature
-  // rows do not match the states.
+  // Throws std::invalid_argument when a viseme class is out of range, an utterance's states
+  // are not contiguous, or the feature rows do not match the states.
   PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features = {});
 
   std::size_t size() const { return states_.size(); }

@@ -16,7 +16,7 @@ namespace fapcast::synth {
 // [first_frame, end_frame). `hold` marks a phone whose shape must be met, not smoothed away
 // (the closure of /p b m/, lip to teeth of /f v/).
 struct TargetPhone {
-  VisemeClass viseme = 0;
+  VisemeClass viseme = VisemeClass::kSilence;
   std::int64_t first_frame = 0;
   std::int64_t end_frame = 0;
   bool hold = false;

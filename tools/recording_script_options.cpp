@@ -1,0 +1,30 @@
+#include "recording_script_options.hpp"
+
+#include "fapcast/synth/data_dir.hpp"
+#include "fapcast/synth/syllabified_lexicon.hpp"
+#include "fapcast/transport/file_io.hpp"
+
+namespace fapcast::tools {
+
+void add_recording_script_options(CLI::App* cmd, RecordingScriptInputs& in) {
+  in.cmudict = synth::default_cmudict_path().string();
+  in.word_counts = synth::default_word_counts_path().string();
+  cmd->add_option("--cmudict", in.cmudict, "Syllabified lexicon in Festival format (festlex-cmu)")
+      ->capture_default_str();
+  cmd->add_option("--word-counts", in.word_counts, "Word counts, word<TAB>count, most frequent first")
+      ->capture_default_str();
+  cmd->add_option("--common", in.options.common_words, "Number of most common words")->capture_default_str();
+  cmd->add_option("--syllable-words", in.options.syllable_words, "Number of syllable-covering words")
+      ->capture_default_str();
+  cmd->add_option("--candidates", in.options.candidate_words, "Most frequent words considered")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+}
+
+synth::RecordingScript load_recording_script(const RecordingScriptInputs& in) {
+  const auto lexicon = synth::parse_festival_lexicon(transport::read_file(in.cmudict), in.cmudict);
+  const auto counts = synth::parse_word_counts(transport::read_file(in.word_counts), in.word_counts);
+  return synth::build_recording_script(counts, lexicon, in.options);
+}
+
+}  // namespace fapcast::tools

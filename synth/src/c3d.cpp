@@ -440,6 +440,15 @@ std::string write_c3d(const MarkerSet& markers, const std::vector<C3dTextParamet
     }
   }
 
+  // Float storage: every present coordinate must fit a float32 (an integer-storage file read
+  // with a huge POINT:SCALE may not).
+  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
+    for (Eigen::Index c = 0; c < markers.positions_mm.cols(); ++c) {
+      if (!markers.missing(f, c / 3) && !std::isfinite(static_cast<float>(markers.positions_mm(f, c)))) {
+        refuse("frame " + std::to_string(f) + " has a coordinate that does not fit a float");
+      }
+    }
+  }
   for (const C3dTextParameter& p : extra) {
     if (!valid_name(p.group) || !valid_name(p.name) || p.group == "POINT" || p.group == "ANALOG") {
       refuse("parameter " + p.group + ":" + p.name + " needs names of A-Z 0-9 _ outside POINT and ANALOG");

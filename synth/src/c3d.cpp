@@ -141,8 +141,9 @@ class ParameterSection {
     require_value(p);
     if (p.type == 1) return file_.u8(p.data_at);
     if (p.type == 2) return file_.u16(p.data_at);
-    const float v = file_.f32(p.data_at);
-    if (p.type != 4 || !(v >= 0 && v <= 65535) || v != std::floor(v)) {
+    if (p.type != 4) bad(p.entry_at, p.group + ":" + p.name + " is text, not a count");
+    const float v = file_.f32(p.data_at);  // type 4 with >= 1 element: 4 bytes in the section
+    if (!(v >= 0 && v <= 65535) || v != std::floor(v)) {
       bad(p.entry_at, p.group + ":" + p.name + " is not a count");
     }
     return static_cast<std::uint64_t>(v);

@@ -141,8 +141,9 @@ class ParameterSection {
     require_value(p);
     if (p.type == 1) return file_.u8(p.data_at);
     if (p.type == 2) return file_.u16(p.data_at);
-    const float v = file_.f32(p.data_at);
-    if (p.type != 4 || !(v >= 0 && v <= 65535) || v != std::floor(v)) {
+    if (p.type != 4) bad(p.entry_at, p.group + ":" + p.name + " is text, not a count");
+    const float v = file_.f32(p.data_at);  // type 4 with >= 1 element: 4 bytes in the section
+    if (!(v >= 0 && v <= 65535) || v != std::floor(v)) {
       bad(p.entry_at, p.group + ":" + p.name + " is not a count");
     }
     return static_cast<std::uint64_t>(v);
@@ -440,6 +441,15 @@ std::string write_c3d(const MarkerSet& markers, const std::vector<C3dTextParamet
     }
   }
 
+  // Float storage: every present coordinate must fit a float32 (an integer-storage file read
+  // with a huge POINT:SCALE may not).
+  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
+    for (Eigen::Index c = 0; c < markers.positions_mm.cols(); ++c) {
+      if (!markers.missing(f, c / 3) && !std::isfinite(static_cast<float>(markers.positions_mm(f, c)))) {
+        refuse("frame " + std::to_string(f) + " has a coordinate that does not fit a float");
+      }
+    }
+  }
   for (const C3dTextParameter& p : extra) {
     if (!valid_name(p.group) || !valid_name(p.name) || p.group == "POINT" || p.group == "ANALOG") {
       refuse("parameter " + p.group + ":" + p.name + " needs names of A-Z 0-9 _ outside POINT and ANALOG");

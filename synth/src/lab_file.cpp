@@ -51,7 +51,7 @@ LabFile read_lab(std::string_view bytes, const std::string& source, std::optiona
     const auto fields = detail::split_whitespace(line.text);
     if (fields.empty()) continue;
     if (fields[0] == "#!MLF!#") fail(line.number, "lab-mlf", "an HTK master label file, not a .lab");
-    if (fields.size() > 1 && fields.back() == "///") {
+    if (fields.size() == 1 && fields[0] == "///") {
       fail(line.number, "lab-alternatives", "HTK alternative transcriptions (///) are not supported");
     }
     if (fields.size() < 3 || fields.size() > 4) {

@@ -66,6 +66,7 @@ MarkerSet read_trc(std::string_view bytes, const std::string& source) {
 
   detail::MarkerRows rows(labels.size(), *mm, source, "trc");
   std::int64_t first_frame = 1;
+  std::uint64_t implied_cells = 0;
   for (std::size_t i = kHeaderLines; i < lines.size(); ++i) {
     if (detail::trim(lines[i].text).empty()) continue;  // Vicon leaves a blank line
     const auto cells = detail::split_fields(lines[i].text, '\t');
@@ -82,6 +83,12 @@ MarkerSet read_trc(std::string_view bytes, const std::string& source) {
       if (!detail::trim(cells[2 + c]).empty()) {
         fail(lines[i].number, "trc-fields", "more coordinates than 3 x NumMarkers");
       }
+    }
+    // Trimmed trailing cells are missing samples that cost no bytes; bound them by the file
+    // size so that a short file cannot make the reader allocate rows x NumMarkers values.
+    implied_cells += 3 * labels.size() - std::min(coordinates, 3 * labels.size());
+    if (implied_cells > bytes.size()) {
+      fail(lines[i].number, "trc-too-sparse", "more omitted trailing cells than the file has bytes");
     }
     rows.add(std::span(cells).subspan(std::min<std::size_t>(2, cells.size())), lines[i].number);
   }

@@ -71,7 +71,7 @@ BENCHMARK(BM_TextGridRead);
 void BM_TextGridRegexBaseline(benchmark::State& state) {
   const std::string text = textgrid_text();
   const std::regex number(R"(^\s*(xmin|xmax) = ([-0-9.eE]+)\s*$)");
-  const std::regex label(R"(^\s*text = "(.*)"\s*$)");
+  const std::regex label(R"re(^\s*text = "(.*)"\s*$)re");
   for (auto _ : state) {
     std::istringstream in(text);
     std::string line;

@@ -139,6 +139,15 @@ TEST(TextGrid, EveryPrefixOfAValidFileIsRefusedCleanly) {
   }
 }
 
+TEST(TextGrid, SyntheticMarkSurvivesTheFile) {
+  Alignment a = two_tiers();
+  EXPECT_FALSE(is_synthetic(a));
+  mark_synthetic(a);
+  mark_synthetic(a);  // idempotent
+  EXPECT_EQ(a.tiers.size(), 3u);
+  EXPECT_TRUE(is_synthetic(read_textgrid(write_textgrid(a), "synthetic.TextGrid")));
+}
+
 TEST(LabelTier, SecondsToSamples) {
   EXPECT_EQ(to_sample(0.31, 16000), 4960);
   EXPECT_EQ(to_sample(1.0 / 32000, 16000), 1);  // half a sample rounds away from zero

@@ -28,10 +28,11 @@ def text_rows(rows, width):
 
 def c3d(points, frames, labels, scale, rate, analog_used=0, analog_ratio=1, processor=84,
         storage='int', units='mm', data_start=None, header_points=None, header_analog=None,
-        truncate=None, key=0x50, labels2=None, with_events=False, missing=()):
+        truncate=None, key=0x50, labels2=None, with_events=False, missing=(), used_as_text=False):
     analog = analog_used * analog_ratio
     sec = group(1, 'POINT') + group(2, 'ANALOG') + group(3, 'EVENT')
-    sec += param(1, 'USED', 2, [], struct.pack('<H', points))
+    sec += (param(1, 'USED', -1, [1], b'3') if used_as_text
+            else param(1, 'USED', 2, [], struct.pack('<H', points)))
     sec += param(1, 'SCALE', 4, [], struct.pack('<f', scale))
     sec += param(1, 'RATE', 4, [], struct.pack('<f', rate))
     sec += param(1, 'DATA_START', 2, [], b'@@')  # patched once the section size is known
@@ -108,3 +109,5 @@ i = bad.find(b'LABELS')
 bad[i + 10] = 255  # name, next offset (2), type, ndims, then the dims: 255 x 255 characters
 bad[i + 11] = 255
 write('bad/bad.013.c3d-bad-parameter.c3d', bytes(bad))
+# POINT:USED stored as one character: a count must not be read as 4 bytes of float.
+write('bad/bad.014.c3d-bad-parameter.c3d', c3d(3, 5, LAB, 0.5, 60.0, used_as_text=True))

@@ -20,4 +20,11 @@ struct Alignment {
 
 std::ostream& operator<<(std::ostream& out, const Alignment& alignment);
 
+// Appends a TextTier "provenance" with one point at start_s marked kSyntheticLabel: how a
+// TextGrid from the reference talker says it is synthetic (Praat shows it, tools ignore it).
+void mark_synthetic(Alignment& alignment);
+
+// Whether `alignment` carries the mark that mark_synthetic adds.
+bool is_synthetic(const Alignment& alignment);
+
 }  // namespace fapcast::synth

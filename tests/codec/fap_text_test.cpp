@@ -170,6 +170,8 @@ const Variant kVariants[] = {
        return s + "# end\n";
      },
      [](const FapTextInfo& i) { return i.comments; }},
+    {"Utf8Bom", [](Records& r, auto&) { return "\xEF\xBB\xBF" + text_of(r, " ", "\r\n"); },
+     [](const FapTextInfo& i) { return i.describe() == "68-token masks, UTF-8 BOM, CRLF"; }},
     {"Version20", [](Records& r, auto&) { r.header[0] = "2.0"; return text_of(r); },
      [](const FapTextInfo& i) { return i.version == "2.0"; }},
     {"NameWithSpaces",

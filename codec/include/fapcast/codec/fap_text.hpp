@@ -28,6 +28,7 @@ struct FapTextInfo {
   FapTextDialect dialect = FapTextDialect::kStrict;
   std::uint64_t header_frame_count = 0;  // what the header claimed
   std::uint64_t frame_records = 0;       // mask+value pairs in the file (held frames excluded)
+  bool utf8_bom = false;  // the file starts with a UTF-8 byte-order mark (skipped)
   bool crlf = false;
   bool tabs = false;
   bool comments = false;

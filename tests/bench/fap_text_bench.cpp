@@ -112,7 +112,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
   RatioReporter() : ConsoleReporter(OO_Tabular) {}  // no colour codes: figures get pasted
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
-    for (const auto& r : runs) seconds_[r.benchmark_name()] = r.GetAdjustedCPUTime();  // CPU time: the machine is shared
+    // CPU time (the machine is shared); with --benchmark_repetitions, the mean.
+    for (const auto& r : runs)
+      if (r.run_type == Run::RT_Iteration || r.aggregate_name == "mean")
+        seconds_[r.run_name.function_name] = r.GetAdjustedCPUTime();
   }
   double ratio(const std::string& slow, const std::string& fast) const {
     const auto a = seconds_.find(slow), b = seconds_.find(fast);

@@ -567,6 +567,9 @@ std::size_t mask69_lossy_frames(const FapSequence& seq) {
 
 std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect) {
   const bool d69 = dialect == FapTextDialect::kMask69;
+  if (seq.frames.size() > kFapTextMaxFrames)  // the reader would refuse the file
+    throw std::invalid_argument(std::to_string(seq.frames.size()) + " frames: a .fap file holds at most " +
+                                std::to_string(kFapTextMaxFrames));
   std::string out = "2.1 " + fap_text_name(seq.name) + " " + fap_text_fps(seq.rate) + " " +
                     std::to_string(seq.frames.size()) + "\n";
   std::size_t values = 0;

@@ -478,6 +478,14 @@ TEST(FapTextWriter, WritesTheStrictProfileExactly) {
   EXPECT_EQ(mask69_lossy_frames(s), 1u);  // frame a's viseme has select2/blend/def; b is carried whole
 }
 
+TEST(FapTextWriter, RefusesWhatTheReaderWouldRefuse) {
+  // (The frame-count limit is not tested: a sequence past it would take 300 MB.)
+  FapSequence s;
+  s.frames.resize(1);
+  s.rate = {10, 3};
+  EXPECT_THROW(write_fap_text(s), std::invalid_argument);
+}
+
 TEST(FapTextWriter, NamesBecomeOneToken) {
   EXPECT_EQ(fap_text_name("AU Interpolation\t1111.fap"), "AU_Interpolation_1111.fap");
   EXPECT_EQ(fap_text_name(""), "unnamed");

@@ -71,9 +71,8 @@ Alignment take_alignment(const Speech& speech) {
   for (const auto& w : speech.words)
     append_interval(words, seconds(w.start_sample, rate), std::min(end, seconds(w.end_sample, rate)), w.text);
   close_tier(words);
-  LabelTier provenance{"provenance", TierKind::intervals, 0.0, end, {}, {}};
-  append_interval(provenance, 0.0, end, std::string(kSyntheticLabel));
-  a.tiers = {std::move(phones), std::move(words), std::move(provenance)};
+  a.tiers = {std::move(phones), std::move(words)};
+  mark_synthetic(a);
   return a;
 }
 

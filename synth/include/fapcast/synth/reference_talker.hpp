@@ -29,7 +29,7 @@ struct ReferenceTake {
   std::string text;      // the script item (a word, or a nonsense item's ARPAbet spelling)
   MonoAudio audio;       // espeak-ng's audio
   Speech speech;         // phones and words on the audio's sample timeline
-  Alignment alignment;   // phones and words tiers, plus a "provenance" tier saying SYNTHETIC
+  Alignment alignment;   // phones and words tiers, marked SYNTHETIC
   MarkerFrames clean;    // ground truth: the face's markers with no head motion, noise or drops
   MarkerFrames captured; // what the capture delivers: head motion, noise, dropped markers
   float effort = 1.0f;   // articulation effort drawn for this utterance
@@ -42,8 +42,8 @@ FaceModel reference_actor(const FaceModel& generic, std::uint64_t seed);
 ReferenceTake record_take(const ScriptItem& item, std::string id, const FaceModel& actor,
                           PortableRandom& random);
 
-// The TextGrid tiers of a take: "phones" (ARPAbet, "sil" for silence), "words" (empty gaps) and
-// "provenance" (one interval labelled with kSyntheticLabel).
+// The TextGrid tiers of a take: "phones" (ARPAbet, "sil" for silence), "words" (empty gaps),
+// marked synthetic (alignment.hpp, mark_synthetic).
 Alignment take_alignment(const Speech& speech);
 
 struct ReferenceCorpusOptions {

@@ -1,0 +1,132 @@
+// The reference talker: what it writes reads back through the importers, pose removal recovers
+// the face motion to within the capture noise, takes are reproducible, and everything it writes
+// says SYNTHETIC.
+#include "fapcast/synth/reference_talker.hpp"
+
+#include "fapcast/synth/c3d.hpp"
+#include "fapcast/synth/gap_fill.hpp"
+#include "fapcast/synth/head_pose.hpp"
+#include "fapcast/synth/marker_conversion.hpp"
+#include "fapcast/synth/marker_map.hpp"
+#include "fapcast/synth/synthetic_label.hpp"
+#include "fapcast/synth/textgrid.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace fapcast::synth {
+namespace {
+
+ScriptItem word(const std::string& text) { return {ScriptSection::kCommonWord, text, {}, "", 0.0}; }
+
+const FaceModel& actor() {
+  static const FaceModel a = reference_actor(ict_face_model(), 7);
+  return a;
+}
+
+// RMS (cm) of the difference between two takes over the samples present in both.
+double rms_difference(const MarkerFrames& a, const MarkerFrames& b, std::size_t* samples = nullptr) {
+  double sum = 0;
+  std::size_t n = 0;
+  for (Eigen::Index k = 0; k < a.frame_count(); ++k)
+    for (Eigen::Index m = 0; m < a.marker_count(); ++m)
+      if (a.present(m, k) && b.present(m, k)) {
+        sum += (a.at(m, k) - b.at(m, k)).squaredNorm();
+        ++n;
+      }
+  if (samples) *samples = n;
+  return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
+TEST(ReferenceTalker, C3dAndTextGridReadBackWhatWasRecorded) {
+  PortableRandom random(11);
+  const ReferenceTake take = record_take(word("a pup"), "utt0001", actor(), random);
+  ASSERT_GT(take.captured.frame_count(), 20);
+
+  const C3dFile c3d = read_c3d(write_c3d(to_marker_set(take.captured), {c3d_synthetic_parameter()}), "utt0001.c3d");
+  EXPECT_EQ(c3d.text_parameters.at("FAPCAST:SYNTHETIC"), kSyntheticLabel);
+  const MarkerFrames back = to_marker_frames(c3d.markers);
+  ASSERT_EQ(back.labels, take.captured.labels);
+  ASSERT_EQ(back.frame_count(), take.captured.frame_count());
+  std::size_t samples = 0;
+  EXPECT_LT(rms_difference(back, take.captured, &samples), 1e-5) << "float32 mm in the file";
+  for (Eigen::Index k = 0; k < back.frame_count(); ++k)
+    for (Eigen::Index m = 0; m < back.marker_count(); ++m)
+      ASSERT_EQ(back.present(m, k), take.captured.present(m, k)) << "marker " << m << " frame " << k;
+
+  const Alignment alignment = read_textgrid(write_textgrid(take.alignment), "utt0001.TextGrid");
+  EXPECT_EQ(alignment, take.alignment);
+  EXPECT_TRUE(is_synthetic(alignment));
+  const LabelTier* phones = alignment.find("phones");
+  ASSERT_NE(phones, nullptr);
+  std::string spelled;
+  for (const auto& i : phones->intervals)
+    if (i.label != "sil" && !i.label.empty()) spelled += i.label + " ";
+  EXPECT_NE(spelled.find("P AH P"), std::string::npos) << spelled;
+}
+
+TEST(ReferenceTalker, PoseRemovalRecoversTheFaceToWithinTheNoise) {
+  PortableRandom random(12);
+  const ReferenceTake take = record_take(word("mushrooms"), "utt0002", actor(), random);
+  const auto rigid = rigid_marker_rows();
+  ASSERT_GE(rigid.size(), 4u);
+  const PoseRemovalResult pose = remove_head_pose(take.captured, rigid, rigid_reference(take.clean, rigid, 0));
+  // The head moved by up to 3 degrees and 3 mm: without pose removal the markers are far off.
+  EXPECT_GT(rms_difference(take.captured, take.clean), 0.05);
+  // Noise is 0.2 mm per coordinate (0.35 mm in 3-D). The rigid fit adds its own error, which
+  // the lever arm from the head markers to the mouth enlarges: within twice the noise.
+  EXPECT_LT(rms_difference(pose.frames, take.clean), 0.07) << "cm";
+  EXPECT_LT(pose.rms_rigid_residual_cm, 0.05);
+  // Gap filling then restores the dropped samples it may fill, close to the truth.
+  const GapFillResult filled = fill_gaps(pose.frames);
+  EXPECT_LT(rms_difference(filled.frames, take.clean), 0.08);
+}
+
+// Reproducibility across runs is a property of whole processes (espeak-ng keeps state between
+// calls): tests/tools/corpus_cli_test.cpp records the same corpus twice and compares the bytes.
+TEST(ReferenceTalker, AnotherSeedGivesAnotherTake) {
+  PortableRandom a(5), c(6);
+  const ReferenceTake ta = record_take(word("moon"), "x", actor(), a);
+  const ReferenceTake tc = record_take(word("moon"), "x", actor(), c);
+  EXPECT_GT(rms_difference(ta.captured, tc.captured), 1e-3);
+}
+
+TEST(ReferenceTalker, ActorIsNotTheGenericFace) {
+  const double moved = (actor().neutral_cm - ict_face_model().neutral_cm).colwise().norm().maxCoeff();
+  EXPECT_GT(moved, 0.1) << "cm: the identity mix must change the face";
+}
+
+TEST(ReferenceTalker, CorpusDirectoryHasManifestAndSaysSynthetic) {
+  const auto dir = std::filesystem::temp_directory_path() / "fapcast-refcorpus-test";
+  std::filesystem::remove_all(dir);
+  RecordingScript script;
+  script.items = {word("a bob"), word("strewn"), {ScriptSection::kNonsense, "B AA D", {}, "[[b'A:d]]", 1.0}};
+  std::map<std::string, std::string> files;
+  const auto summary = record_reference_corpus(script, dir, {.count = 0, .seed = 3, .script = {}},
+                                               [&](const std::string& name, std::string_view bytes) {
+                                                 files[name] = std::string(bytes);
+                                               });
+  EXPECT_EQ(summary.utterances, 3u);
+  ASSERT_TRUE(files.count("manifest.json"));
+  const auto manifest = nlohmann::json::parse(files["manifest.json"]);
+  EXPECT_EQ(manifest["synthetic"], true);
+  EXPECT_EQ(manifest["provenance"], kSyntheticLabel);
+  ASSERT_EQ(manifest["utterances"].size(), 3u);
+  for (const auto& u : manifest["utterances"]) {
+    const std::string stem = u["id"];
+    EXPECT_TRUE(files.count(stem + ".c3d")) << stem;
+    EXPECT_TRUE(files.count(stem + ".TextGrid")) << stem;
+    EXPECT_TRUE(std::filesystem::exists(dir / (stem + ".wav"))) << stem;
+    EXPECT_EQ(read_wav(dir / (stem + ".wav")).sample_rate_hz, u["sample_rate_hz"]);
+  }
+  EXPECT_EQ(manifest["utterances"][2]["section"], "nonsense");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fapcast::synth

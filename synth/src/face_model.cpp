@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 
+#include "fapcast/synth/data_file.hpp"
 #include "fapcast/synth/data_file_error.hpp"
 #include "fapcast/synth/data_root.hpp"
 
@@ -18,17 +19,6 @@ namespace {
 constexpr std::uintmax_t kMaxMeshBytes = 64u << 20;
 constexpr std::int32_t kMaxVertices = 2'000'000;
 constexpr std::size_t kMaxPolygonSides = 64;
-
-std::ifstream open_checked(const std::filesystem::path& file) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(file, ec);
-  if (ec) throw DataFileError(file.string(), 0, "file-unreadable", ec.message());
-  if (size > kMaxMeshBytes)
-    throw DataFileError(file.string(), 0, "file-too-large", std::to_string(size) + " bytes");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw DataFileError(file.string(), 0, "file-unreadable", "cannot open");
-  return in;
-}
 
 // Splits on spaces and tabs.
 std::vector<std::string_view> tokens(std::string_view line) {
@@ -65,17 +55,14 @@ std::size_t FaceModel::expression_index(std::string_view name) const {
 }
 
 ObjMesh read_obj_mesh(const std::filesystem::path& file) {
-  auto in = open_checked(file);
+  auto in = open_data_file(file, kMaxMeshBytes);
   std::vector<float> xyz;
   ObjMesh mesh;
   std::vector<std::pair<std::size_t, std::int64_t>> raw_faces;  // (line, index as written)
   std::string text;
   std::size_t line = 0;
-  while (std::getline(in, text)) {
-    ++line;
-    if (!text.empty() && text.back() == '\r') text.pop_back();
+  while (next_content_line(in, text, line)) {
     const auto t = tokens(text);
-    if (t.empty() || t[0].front() == '#') continue;
     if (t[0] == "v") {
       if (t.size() < 4)
         throw DataFileError(file.string(), line, "vertex-arity", "a v line needs x y z");
@@ -114,16 +101,13 @@ ObjMesh read_obj_mesh(const std::filesystem::path& file) {
 }
 
 SparseDelta read_sparse_delta(const std::filesystem::path& file, std::int32_t vertex_count) {
-  auto in = open_checked(file);
+  auto in = open_data_file(file, kMaxMeshBytes);
   SparseDelta delta;
   std::vector<float> xyz;
   std::string text;
   std::size_t line = 0;
-  while (std::getline(in, text)) {
-    ++line;
-    if (!text.empty() && text.back() == '\r') text.pop_back();
+  while (next_content_line(in, text, line)) {
     const auto t = tokens(text);
-    if (t.empty() || t[0].front() == '#') continue;
     if (t.size() != 4)
       throw DataFileError(file.string(), line, "delta-arity",
                           "expected 'vertex_index dx dy dz', got " + std::to_string(t.size()) +
@@ -154,7 +138,7 @@ FaceModel load_ict_face_model(const std::filesystem::path& folder) {
   model.faces = std::move(mesh.faces);
 
   const auto index_file = folder / "vertex_indices.json";
-  auto in = open_checked(index_file);
+  auto in = open_data_file(index_file, kMaxMeshBytes);
   nlohmann::json json;
   try {
     in >> json;

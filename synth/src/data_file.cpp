@@ -1,5 +1,7 @@
 #include "fapcast/synth/data_file.hpp"
 
+#include <cmath>
+
 #include "fapcast/synth/data_file_error.hpp"
 
 namespace fapcast::synth {
@@ -24,6 +26,25 @@ bool next_content_line(std::istream& in, std::string& line, std::size_t& line_nu
     if (first != std::string::npos && line[first] != '#') return true;
   }
   return false;
+}
+
+std::vector<std::string_view> split_whitespace(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+  return out;
+}
+
+float parse_coordinate(const std::filesystem::path& file, std::size_t line, std::string_view text) {
+  float v = 0;
+  if (!parse_number(text, v) || !std::isfinite(v))
+    throw DataFileError(file.string(), line, "bad-coordinate", "'" + std::string(text) + "'");
+  return v;
 }
 
 }  // namespace fapcast::synth

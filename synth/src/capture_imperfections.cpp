@@ -80,4 +80,13 @@ std::vector<DroppedRun> drop_marker_runs(MarkerFrames& frames, PortableRandom& r
   return runs;
 }
 
+CapturedTake capture_take(const MarkerFrames& clean, PortableRandom& random,
+                          const CaptureSettings& settings) {
+  CapturedTake take{clean, {}};
+  apply_head_motion(take.frames, HeadMotion(random, settings.head_motion));
+  add_marker_noise(take.frames, random, settings.noise_sigma_mm);
+  take.dropped = drop_marker_runs(take.frames, random, settings.dropouts);
+  return take;
+}
+
 }  // namespace fapcast::synth

@@ -11,6 +11,41 @@ namespace {
 constexpr std::array<bool, kChannelCount> kEffortScaled{true, true, true, true,
                                                         false, false, false, false};
 
+// A phone's articulation and centre, looked up once per timeline rather than once per frame.
+struct PlacedPhone {
+  const PhoneArticulation* articulation;
+  double centre_s;
+};
+
+std::vector<PlacedPhone> place(const PhoneTimeline& timeline) {
+  std::vector<PlacedPhone> placed;
+  placed.reserve(timeline.phones.size());
+  for (const auto& p : timeline.phones)
+    placed.push_back({&phone_articulation(p.phone),
+                      0.5 * static_cast<double>(p.start_sample + p.end_sample) / timeline.sample_rate_hz});
+  return placed;
+}
+
+std::array<float, kChannelCount> values_at(const std::vector<PlacedPhone>& phones, double t_s,
+                                           float effort) {
+  std::array<double, kChannelCount> numerator{};
+  std::array<double, kChannelCount> denominator{};
+  for (const auto& p : phones) {
+    const double tau = t_s - p.centre_s;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+      const double d = p.articulation->dominance[c].at(tau);
+      float target = p.articulation->target[c];
+      if (kEffortScaled[c]) target = std::clamp(target * effort, 0.0f, 1.0f);
+      numerator[c] += d * target;
+      denominator[c] += d;
+    }
+  }
+  std::array<float, kChannelCount> out{};
+  for (std::size_t c = 0; c < kChannelCount; ++c)
+    out[c] = denominator[c] > 0 ? static_cast<float>(numerator[c] / denominator[c]) : 0.0f;
+  return out;
+}
+
 }  // namespace
 
 std::array<float, kChannelCount> ChannelTracks::frame(Eigen::Index k) const {
@@ -44,25 +79,8 @@ void validate_timeline(const PhoneTimeline& timeline) {
 
 std::array<float, kChannelCount> channel_values_at(const PhoneTimeline& timeline, double t_s,
                                                    float effort) {
-  std::array<double, kChannelCount> numerator{};
-  std::array<double, kChannelCount> denominator{};
-  const double rate = timeline.sample_rate_hz;
-  for (const auto& p : timeline.phones) {
-    const auto& art = phone_articulation(p.phone);
-    const double centre_s = 0.5 * static_cast<double>(p.start_sample + p.end_sample) / rate;
-    const double tau = t_s - centre_s;
-    for (std::size_t c = 0; c < kChannelCount; ++c) {
-      const double d = art.dominance[c].at(tau);
-      float target = art.target[c];
-      if (kEffortScaled[c]) target = std::clamp(target * effort, 0.0f, 1.0f);
-      numerator[c] += d * target;
-      denominator[c] += d;
-    }
-  }
-  std::array<float, kChannelCount> out{};
-  for (std::size_t c = 0; c < kChannelCount; ++c)
-    out[c] = denominator[c] > 0 ? static_cast<float>(numerator[c] / denominator[c]) : 0.0f;
-  return out;
+  validate_timeline(timeline);
+  return values_at(place(timeline), t_s, effort);
 }
 
 ChannelTracks coarticulate(const PhoneTimeline& timeline, const CoarticulationOptions& options) {
@@ -77,9 +95,9 @@ ChannelTracks coarticulate(const PhoneTimeline& timeline, const CoarticulationOp
   const std::int64_t frames =
       (end * options.frame_rate_hz + timeline.sample_rate_hz - 1) / timeline.sample_rate_hz;
   tracks.values.resize(static_cast<int>(kChannelCount), frames);
+  const auto phones = place(timeline);
   for (std::int64_t k = 0; k < frames; ++k) {
-    const auto v = channel_values_at(
-        timeline, static_cast<double>(k) / options.frame_rate_hz, options.effort);
+    const auto v = values_at(phones, static_cast<double>(k) / options.frame_rate_hz, options.effort);
     for (std::size_t c = 0; c < kChannelCount; ++c)
       tracks.values(static_cast<Eigen::Index>(c), k) = std::clamp(v[c], 0.0f, 1.0f);
   }

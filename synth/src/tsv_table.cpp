@@ -2,8 +2,8 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 
+#include "fapcast/synth/data_file.hpp"
 #include "fapcast/synth/data_file_error.hpp"
 
 namespace fapcast::synth {
@@ -25,20 +25,11 @@ std::vector<std::string> split_tabs(std::string_view line) {
 }  // namespace
 
 std::vector<TsvRow> read_tsv(const std::filesystem::path& file, std::size_t columns) {
-  std::error_code ec;
-  const auto size = std::filesystem::file_size(file, ec);
-  if (ec) throw DataFileError(file.string(), 0, "file-unreadable", ec.message());
-  if (size > kMaxTsvBytes)
-    throw DataFileError(file.string(), 0, "file-too-large", std::to_string(size) + " bytes");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw DataFileError(file.string(), 0, "file-unreadable", "cannot open");
+  auto in = open_data_file(file, kMaxTsvBytes);
   std::vector<TsvRow> rows;
   std::string line;
   std::size_t number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty() || line.front() == '#') continue;
+  while (next_content_line(in, line, number)) {
     TsvRow row{number, split_tabs(line)};
     if (row.fields.size() != columns)
       throw DataFileError(file.string(), number, "column-count",

@@ -8,6 +8,7 @@
 
 #include "fapcast/synth/data_file_error.hpp"
 #include "fapcast/synth/data_root.hpp"
+#include "fapcast/synth/marker_map.hpp"
 
 namespace fapcast::synth {
 namespace {
@@ -109,7 +110,7 @@ TEST(FaceModel, DataRootFollowsTheEnvironment) {
   EXPECT_EQ(data_root(), fallback);
 }
 
-// Named bad inputs: each file's name states the rule it breaks; golden list in expected_errors.txt.
+// Named bad inputs (meshes, targets, spec tables): each file's name states the rule it breaks; golden list in expected_errors.txt.
 struct BadInput {
   std::string file;
   std::string expected;  // "line: rule"
@@ -136,6 +137,7 @@ TEST_P(FaceDataBadInput, IsRefusedWithFileLineAndRule) {
   try {
     if (ext == ".obj") (void)read_obj_mesh(path);
     else if (ext == ".target") (void)read_sparse_delta(path, 100);
+    else if (ext == ".tsv") (void)read_marker_spec(path);
     else FAIL() << "no reader for " << path;
     FAIL() << "accepted " << path;
   } catch (const DataFileError& e) {

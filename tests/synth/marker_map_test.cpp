@@ -74,9 +74,11 @@ TEST(MarkerMap, RigidMarkersAreMovedByNoExpressionShape) {
   }
   // ... and speech moves every lip marker.
   const auto& jaw = face.expressions[face.expression_index("jawOpen")].vertices;
-  for (const auto& s : marker_sites())
-    if (s.role == MarkerRole::inner_lip || s.role == MarkerRole::outer_lip || s.role == MarkerRole::jaw)
+  for (const auto& s : marker_sites()) {
+    if (s.role == MarkerRole::inner_lip || s.role == MarkerRole::outer_lip || s.role == MarkerRole::jaw) {
       EXPECT_TRUE(std::binary_search(jaw.begin(), jaw.end(), s.vertex)) << s.label;
+    }
+  }
 }
 
 // The marker-only blend agrees with blending the whole mesh and picking the vertices.

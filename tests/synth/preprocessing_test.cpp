@@ -7,6 +7,7 @@
 #include "fapcast/synth/capture_imperfections.hpp"
 #include "fapcast/synth/gap_fill.hpp"
 #include "fapcast/synth/head_pose.hpp"
+#include "fapcast/synth/preprocessing.hpp"
 #include "fapcast/synth/talker_markers.hpp"
 #include "test_timeline.hpp"
 
@@ -204,20 +205,21 @@ TEST(GapFill, ReportsLongEdgeAndHopelessGapsWithoutFillingThem) {
   EXPECT_EQ(fill_gaps(holed, {13}).gaps[1].outcome, GapOutcome::filled);
 }
 
-// The whole capture chain: dropouts + head motion + noise, then gap filling and pose removal.
+// The whole capture chain as record-reference runs it: capture_take, then preprocess_take.
 TEST(Preprocessing, CaptureChainRoundTrip) {
   const auto seed = test::test_seed();
   SCOPED_TRACE(reproduce(seed));
   PortableRandom random(seed);
   const MarkerFrames& clean = clean_take();
-  MarkerFrames captured = clean;
-  apply_head_motion(captured, HeadMotion(random));
-  add_marker_noise(captured, random, 0.2);
-  const auto runs = drop_marker_runs(captured, random, {30.0, 8});
-  EXPECT_FALSE(runs.empty());
-  const GapFillResult filled = fill_gaps(captured);
-  const auto rigid = rigid_marker_rows();
-  const auto result = remove_head_pose(filled.frames, rigid, rigid_reference(clean, rigid, 0));
+  CaptureSettings settings;
+  settings.dropouts = {30.0, 8};
+  const CapturedTake take = capture_take(clean, random, settings);
+  EXPECT_FALSE(take.dropped.empty());
+  const auto result = preprocess_take(take.frames, rigid_reference(clean, rigid_marker_rows(), 0));
+  EXPECT_TRUE(result.frames_without_pose.empty());
+  std::size_t reported = 0;
+  for (const auto& gap : result.gaps) reported += gap.outcome == GapOutcome::filled ? 0 : 1;
+  EXPECT_GT(result.gaps.size(), reported);  // some filled, and with 8-frame runs some reported
   double squared = 0;
   Eigen::Index samples = 0;
   for (Eigen::Index m = 0; m < clean.marker_count(); ++m)
@@ -228,6 +230,12 @@ TEST(Preprocessing, CaptureChainRoundTrip) {
       }
   EXPECT_GT(samples, clean.marker_count() * clean.frame_count() * 9 / 10);
   EXPECT_LT(std::sqrt(squared / static_cast<double>(samples)) * 10.0, 0.6);  // mm
+  // Reproducible: the same seed gives the same take, bit for bit.
+  PortableRandom again(seed);
+  const CapturedTake repeat = capture_take(clean, again, settings);
+  EXPECT_TRUE((take.frames.positions_cm.array() == repeat.frames.positions_cm.array() ||
+               (take.frames.positions_cm.array().isNaN() && repeat.frames.positions_cm.array().isNaN()))
+                  .all());
 }
 
 }  // namespace

@@ -58,4 +58,18 @@ struct DroppedRun {
 std::vector<DroppedRun> drop_marker_runs(MarkerFrames& frames, PortableRandom& random,
                                          const DropoutLimits& limits = {});
 
+// All per-take imperfections, in capture order: head motion, noise, dropouts.
+struct CaptureSettings {
+  HeadMotionLimits head_motion{};
+  double noise_sigma_mm = 0.2;
+  DropoutLimits dropouts{};
+};
+struct CapturedTake {
+  MarkerFrames frames;              // what the "studio" delivers
+  std::vector<DroppedRun> dropped;  // ground truth of the dropouts
+};
+// Applies every imperfection to a clean take; the same random state gives the same take.
+CapturedTake capture_take(const MarkerFrames& clean, PortableRandom& random,
+                          const CaptureSettings& settings = {});
+
 }  // namespace fapcast::synth

@@ -41,7 +41,8 @@ struct ChannelTracks {
 // std::invalid_argument naming the offending phone index.
 void validate_timeline(const PhoneTimeline& timeline);
 
-// Channel values at time t_s seconds (the dominance-weighted mean of the phones' targets).
+// Channel values at time t_s seconds (the dominance-weighted mean of the phones' targets);
+// validates the timeline like coarticulate().
 std::array<float, kChannelCount> channel_values_at(const PhoneTimeline& timeline, double t_s,
                                                    float effort = 1.0f);
 

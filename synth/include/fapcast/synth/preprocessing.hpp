@@ -1,0 +1,24 @@
+#pragma once
+// Capture preprocessing (paper section 3.3) in one call: gap filling, then head-pose removal.
+#include <Eigen/Core>
+
+#include "fapcast/synth/gap_fill.hpp"
+#include "fapcast/synth/head_pose.hpp"
+#include "fapcast/synth/marker_frames.hpp"
+
+namespace fapcast::synth {
+
+struct PreprocessedTake {
+  MarkerFrames frames;                            // head-stabilised, short gaps filled
+  std::vector<MarkerGap> gaps;                    // every gap, filled or reported
+  std::vector<Eigen::Index> frames_without_pose;  // fewer than 3 rigid markers
+  double rms_rigid_residual_cm = 0;
+};
+
+// Fills short gaps (in the capture frame, where trajectories are smooth), then removes the head
+// pose using the rigid markers of marker_sites() against `rigid_reference_cm` (3 x 5, e.g. the
+// actor's neutral rigid markers or rigid_reference() of a chosen frame).
+PreprocessedTake preprocess_take(const MarkerFrames& captured, const Eigen::Matrix3Xd& rigid_reference_cm,
+                                 const GapFillOptions& gap_options = {});
+
+}  // namespace fapcast::synth

@@ -1,0 +1,80 @@
+#include "fapcast/synth/obj_mesh.hpp"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "fapcast/synth/data_file.hpp"
+#include "fapcast/synth/data_file_error.hpp"
+
+namespace fapcast::synth {
+namespace {
+
+// Hostile-input limits: far above ICT's 26,719 vertices, far below what would exhaust memory.
+constexpr std::uintmax_t kMaxMeshBytes = 64u << 20;
+constexpr std::int32_t kMaxVertices = 2'000'000;
+constexpr std::size_t kMaxPolygonSides = 64;
+
+}  // namespace
+
+ObjMesh read_obj_mesh(const std::filesystem::path& file) {
+  auto in = open_data_file(file, kMaxMeshBytes);
+  std::vector<float> xyz;
+  ObjMesh mesh;
+  std::vector<std::pair<std::size_t, std::int64_t>> raw_faces;  // (line, index as written)
+  std::string text;
+  std::size_t line = 0;
+  while (next_content_line(in, text, line)) {
+    const auto t = split_whitespace(text);
+    if (t[0] == "v") {
+      if (t.size() < 4)
+        throw DataFileError(file.string(), line, "vertex-arity", "a v line needs x y z");
+      if (xyz.size() / 3 >= static_cast<std::size_t>(kMaxVertices))
+        throw DataFileError(file.string(), line, "too-many-vertices",
+                            "more than " + std::to_string(kMaxVertices));
+      for (int k = 1; k <= 3; ++k) xyz.push_back(parse_coordinate(file, line, t[k]));
+    } else if (t[0] == "f") {
+      if (t.size() < 4 || t.size() - 1 > kMaxPolygonSides)
+        throw DataFileError(file.string(), line, "face-arity",
+                            std::to_string(t.size() - 1) + " corners (3 to 64 allowed)");
+      for (std::size_t k = 1; k < t.size(); ++k) {
+        const auto corner = t[k].substr(0, t[k].find('/'));
+        std::int64_t index = 0;
+        if (!parse_number(corner, index) || index == 0)
+          throw DataFileError(file.string(), line, "bad-face-index", "'" + std::string(t[k]) + "'");
+        raw_faces.emplace_back(line, index);
+      }
+      mesh.faces.face_starts.push_back(static_cast<std::int32_t>(raw_faces.size()));
+    }
+    // vt, vn, g, o, s, usemtl, mtllib: not needed for geometry.
+  }
+  const auto n = static_cast<std::int64_t>(xyz.size() / 3);
+  if (n == 0) throw DataFileError(file.string(), 0, "no-vertices", "no v lines");
+  mesh.vertices = Eigen::Map<const Positions>(xyz.data(), 3, n);
+  mesh.faces.face_vertices.reserve(raw_faces.size());
+  for (const auto& [face_line, index] : raw_faces) {
+    // OBJ: 1-based; negative counts back from the last vertex read (we resolve against all).
+    const std::int64_t zero_based = index > 0 ? index - 1 : n + index;
+    if (zero_based < 0 || zero_based >= n)
+      throw DataFileError(file.string(), face_line, "face-index-out-of-range",
+                          std::to_string(index) + " with " + std::to_string(n) + " vertices");
+    mesh.faces.face_vertices.push_back(static_cast<std::int32_t>(zero_based));
+  }
+  return mesh;
+}
+
+Eigen::Matrix3Xi triangulate(const PolygonFaces& faces) {
+  std::size_t count = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    count += static_cast<std::size_t>(faces.face_starts[f + 1] - faces.face_starts[f] - 2);
+  Eigen::Matrix3Xi tris(3, static_cast<Eigen::Index>(count));
+  Eigen::Index t = 0;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto* v = faces.face_vertices.data() + faces.face_starts[f];
+    const auto sides = faces.face_starts[f + 1] - faces.face_starts[f];
+    for (std::int32_t k = 1; k + 1 < sides; ++k) tris.col(t++) << v[0], v[k], v[k + 1];
+  }
+  return tris;
+}
+
+}  // namespace fapcast::synth

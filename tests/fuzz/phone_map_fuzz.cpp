@@ -1,11 +1,12 @@
 // Fuzzes the symbol mappers (IPA, espeak-ng, TIMIT, ARPAbet), the text validator, and the
 // Festival lexicon and word-count parsers: any input either parses or throws
-// std::invalid_argument; nothing else may happen.
+// std::invalid_argument (mappers) or InputError (parsers); nothing else may happen.
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string_view>
 
+#include "fapcast/synth/input_error.hpp"
 #include "fapcast/synth/phone.hpp"
 #include "fapcast/synth/phone_map.hpp"
 #include "fapcast/synth/syllabified_lexicon.hpp"
@@ -16,7 +17,8 @@ template <class F>
 void expect_parse_or_invalid(F&& f) {
   try {
     f();
-  } catch (const std::invalid_argument&) {
+  } catch (const std::invalid_argument&) {  // symbol mappers
+  } catch (const fapcast::synth::InputError&) {  // text and file parsers
   }
 }
 }  // namespace

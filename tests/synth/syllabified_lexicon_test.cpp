@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fapcast/synth/input_error.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -56,7 +58,7 @@ TEST(LexiconBadInputs, EachIsRefusedWithItsRuleAndGoldenMessage) {
       if (f.extension() == ".tsv") parse_word_counts(slurp(f), name);
       else parse_festival_lexicon(slurp(f), name);
       ADD_FAILURE() << name << " accepted";
-    } catch (const std::invalid_argument& e) {
+    } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(": " + rule + ": "), std::string::npos) << e.what();
       messages += std::string(e.what()) + "\n";
     }

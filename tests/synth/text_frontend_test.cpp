@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fapcast/synth/input_error.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -140,7 +142,7 @@ TEST_P(RejectedText, IsRefusedWithOffsetAndRule) {
   try {
     speak(GetParam().text);
     ADD_FAILURE() << "accepted";
-  } catch (const std::invalid_argument& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), GetParam().message);
   }
 }

@@ -197,3 +197,23 @@ TEST(MonoAudio, WavRoundTrip) {
 
 }  // namespace
 }  // namespace fapcast::synth
+
+namespace fapcast::synth {
+namespace {
+
+// Nonsense items of the recording script are spoken from espeak-ng phoneme input: the phones
+// that come back are the ones written.
+TEST(TextFrontend, PhonemeInputSpeaksTheWrittenPhones) {
+  SpeakOptions options;
+  options.phoneme_input = true;
+  const Speech s = speak("[[b'A:d]]", options);
+  expect_contiguous(s);
+  std::string non_silent;
+  for (const auto& p : s.phones) {
+    if (p.phone != Phone::SIL) non_silent += std::string(arpabet(p.phone)) + " ";
+  }
+  EXPECT_EQ(non_silent, "B AA D ");
+}
+
+}  // namespace
+}  // namespace fapcast::synth

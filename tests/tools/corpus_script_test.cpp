@@ -1,6 +1,7 @@
 // `fapcast corpus script` end to end, on small fixtures and on a bad lexicon.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -26,6 +27,16 @@ TEST(CorpusScriptCommand, WritesScriptAndPrintsCoverage) {
   text << in.rdbuf();
   EXPECT_NE(text.str().find("common\t1\tyou\tY UW1\t\n"), std::string::npos) << text.str();
   EXPECT_NE(text.str().find("\nnonsense\t1\t"), std::string::npos);
+}
+
+// Defaults: the vendored SUBTLEX-US counts (synth/data) and festlex-cmu; the paper's sizes.
+TEST(CorpusScriptCommand, DefaultDataGivesFullDivisemeCoverage) {
+  if (!std::filesystem::exists("/usr/share/festival/dicts/cmu/cmudict-0.4.out")) GTEST_SKIP() << "festlex-cmu missing";
+  const auto r = run_command("env -u FAPCAST_DATA -u FAPCAST_CMUDICT " + fapcast("corpus script"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("# sections: common 100, syllable 800, nonsense "), std::string::npos) << r.out.substr(0, 400);
+  EXPECT_NE(r.out.find("# uncovered divisemes: none"), std::string::npos);
+  EXPECT_NE(r.out.find("\ncommon\t1\tyou\t"), std::string::npos);
 }
 
 TEST(CorpusScriptCommand, BadLexiconNamesFileLineAndRule) {

@@ -1,5 +1,7 @@
 #include "fapcast/synth/syllabified_lexicon.hpp"
 
+#include "fapcast/synth/input_error.hpp"
+
 #include <charconv>
 #include <memory>
 #include <stdexcept>
@@ -8,10 +10,9 @@ namespace fapcast::synth {
 
 namespace {
 
-std::invalid_argument line_error(std::string_view source, std::size_t line, std::string_view rule,
-                                 const std::string& detail) {
-  return std::invalid_argument(std::string(source) + ":" + std::to_string(line) + ": " +
-                               std::string(rule) + ": " + detail);
+InputError line_error(std::string_view source, std::size_t line, std::string_view rule,
+                      const std::string& detail) {
+  return InputError({std::string(source), line, std::nullopt}, std::string(rule), detail);
 }
 
 // A parsed s-expression: an atom (string or symbol) or a list.

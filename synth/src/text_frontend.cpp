@@ -8,6 +8,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "fapcast/synth/input_error.hpp"
 #include "fapcast/synth/phone_map.hpp"
 
 namespace fapcast::synth {
@@ -81,8 +82,11 @@ class Energy {
 // Below this RMS (of full scale 32767) a stretch counts as silence, not as a sound to drop from.
 constexpr double kSilenceRms = 100.0;
 
-std::invalid_argument text_error(std::size_t offset, const std::string& rule) {
-  return std::invalid_argument("text: byte " + std::to_string(offset) + ": " + rule);
+// Rule and detail come as "rule: detail".
+InputError text_error(std::size_t offset, const std::string& rule_and_detail) {
+  const std::size_t colon = rule_and_detail.find(": ");
+  return InputError({"text", std::nullopt, offset}, rule_and_detail.substr(0, colon),
+                    rule_and_detail.substr(colon + 2));
 }
 
 }  // namespace

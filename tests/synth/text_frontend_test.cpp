@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "fapcast/synth/input_error.hpp"
+
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -140,7 +142,7 @@ TEST_P(RejectedText, IsRefusedWithOffsetAndRule) {
   try {
     speak(GetParam().text);
     ADD_FAILURE() << "accepted";
-  } catch (const std::invalid_argument& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()), GetParam().message);
   }
 }
@@ -191,6 +193,26 @@ TEST(MonoAudio, WavRoundTrip) {
   std::filesystem::remove(path);
   EXPECT_THROW(read_wav(path), std::runtime_error);
   EXPECT_THROW(write_wav("/nonexistent-dir/x.wav", s.audio), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace fapcast::synth
+
+namespace fapcast::synth {
+namespace {
+
+// Nonsense items of the recording script are spoken from espeak-ng phoneme input: the phones
+// that come back are the ones written.
+TEST(TextFrontend, PhonemeInputSpeaksTheWrittenPhones) {
+  SpeakOptions options;
+  options.phoneme_input = true;
+  const Speech s = speak("[[b'A:d]]", options);
+  expect_contiguous(s);
+  std::string non_silent;
+  for (const auto& p : s.phones) {
+    if (p.phone != Phone::SIL) non_silent += std::string(arpabet(p.phone)) + " ";
+  }
+  EXPECT_EQ(non_silent, "B AA D ");
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ struct LexiconEntry {
 // Longest entry line accepted (the longest in cmudict-0.4 is under 300 bytes).
 inline constexpr std::size_t kMaxLexiconLineBytes = 4096;
 
-// Parses a whole Festival lexicon. Throws std::invalid_argument "<source>:<line>: <rule>: <detail>"
+// Parses a whole Festival lexicon. Throws InputError "<source>:<line>: <rule>: <detail>"
 // for the first malformed line (rules: line-too-long, expected-entry, unterminated-string,
 // unbalanced-parentheses, too-deep, bad-syllable, bad-stress, unknown-phone, trailing-text).
 std::vector<LexiconEntry> parse_festival_lexicon(std::string_view text, std::string_view source);
@@ -41,7 +41,7 @@ struct WordCount {
   friend bool operator==(const WordCount&, const WordCount&) = default;
 };
 
-// Parses "word<TAB>count" lines ('#' starts a comment line). Throws std::invalid_argument
+// Parses "word<TAB>count" lines ('#' starts a comment line). Throws InputError
 // "<source>:<line>: <rule>: <detail>" (rules: expected-tab, empty-word, bad-count, not-sorted).
 std::vector<WordCount> parse_word_counts(std::string_view text, std::string_view source);
 

@@ -11,7 +11,7 @@
 //
 // Input rules (spec/phones.md, "Text front-end"):
 //  - valid UTF-8 of at most kMaxTextBytes bytes; no control characters except TAB, LF, CR;
-//    anything else throws std::invalid_argument naming the byte offset;
+//    anything else throws InputError (input_error.hpp) naming the byte offset;
 //  - empty or whitespace-only text gives empty speech (no samples, no phones) without espeak;
 //  - text espeak-ng says nothing for (e.g. "...") gives a short stretch of silence, phones all SIL;
 //  - emoji and non-Latin characters are read out by espeak-ng by name ("grinning face").
@@ -65,11 +65,11 @@ struct SpeakOptions {
 };
 
 // Synthesises `text` (UTF-8) with espeak-ng en-us and segments it into phones and words.
-// Throws std::invalid_argument for text that breaks the input rules above, std::runtime_error
+// Throws InputError for text that breaks the input rules above, std::runtime_error
 // if espeak-ng fails (e.g. its data is missing).
 Speech speak(std::string_view text, const SpeakOptions& options = {});
 
-// Checks the input rules; throws std::invalid_argument "text: byte N: <rule>" on the first
+// Checks the input rules; throws InputError "text: byte N: <rule>: <detail>" on the first
 // violation. Returns the byte offset of every code point (for espeak's character positions).
 std::vector<std::size_t> validate_text(std::string_view text);
 

@@ -169,8 +169,9 @@ void read_hierarchy(LineReader& in, BvhDocument& doc) {
 
   std::vector<bool> has_children(1, false);
   while (!open.empty()) {
-    const auto& t = in.expect("unclosed-joint", "'}' closing joint " + doc.joints[
-                                                    static_cast<std::size_t>(open.back())].name);
+    const auto& t = in.expect(
+        "unclosed-joint",
+        "'}' closing joint " + quoted(doc.joints[static_cast<std::size_t>(open.back())].name));
     BvhJoint& current = doc.joints[static_cast<std::size_t>(open.back())];
     if (keyword_is(t[0], "JOINT")) {
       if (current.end_site)

@@ -1,6 +1,8 @@
 #include "fapcast/codec/bvh_text.hpp"
 
 #include "fapcast/codec/input_error.hpp"
+#include "support/bad_inputs.hpp"
+#include "support/seed.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,12 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 const fs::path kDir = fs::path(FAPCAST_TEST_DATA) / "bvh";
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using test::slurp;
 
 TEST(BvhText, ReadsTheSmallFixture) {
   const BvhDocument doc = read_bvh(slurp(kDir / "small.bvh"), "small.bvh");
@@ -88,56 +85,32 @@ INSTANTIATE_TEST_SUITE_P(
     [](const auto& info) { return info.param.name; });
 
 // Every named bad input fails with the rule its name gives and the message in the golden list.
-std::map<std::string, std::string> golden_errors() {
-  std::map<std::string, std::string> golden;
-  std::istringstream lines(slurp(kDir / "bad" / "expected-errors.txt"));
-  for (std::string line; std::getline(lines, line);)
-    golden[line.substr(0, line.find(':'))] = line;
-  return golden;
-}
-
-std::vector<std::string> bad_inputs() {
-  std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(kDir / "bad"))
-    if (e.path().extension() == ".bvh") names.insert(e.path().filename().string());
-  return {names.begin(), names.end()};
-}
-
 class BvhBadInput : public testing::TestWithParam<std::string> {};
 
 TEST_P(BvhBadInput, FailsWithItsRuleAndTheGoldenMessage) {
   const std::string name = GetParam();
-  // bad.NNN.<rule>.bvh
-  const std::string rule = name.substr(8, name.size() - 8 - 4);
   try {
     read_bvh(slurp(kDir / "bad" / name), name);
     FAIL() << name << " was accepted";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.rule(), rule);
+    EXPECT_EQ(e.rule(), test::rule_of(name));
     EXPECT_EQ(e.where().source, name);
     EXPECT_TRUE(e.where().line.has_value());
-    EXPECT_EQ(e.what(), golden_errors()[name]);
+    EXPECT_EQ(e.what(), test::golden_errors(kDir / "bad")[name]);
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Named, BvhBadInput, testing::ValuesIn(bad_inputs()),
-                         [](const auto& info) {
-                           std::string n = info.param.substr(0, info.param.size() - 4);
-                           for (char& c : n)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return n;
-                         });
+INSTANTIATE_TEST_SUITE_P(Named, BvhBadInput,
+                         testing::ValuesIn(test::bad_input_names(kDir / "bad", ".bvh")),
+                         [](const auto& info) { return test::test_name_of(info.param); });
 
 TEST(BvhText, GoldenListCoversExactlyTheBadInputs) {
-  const auto golden = golden_errors();
-  EXPECT_EQ(golden.size(), bad_inputs().size());
-  for (const std::string& name : bad_inputs()) EXPECT_TRUE(golden.count(name)) << name;
+  const auto golden = test::golden_errors(kDir / "bad");
+  const auto names = test::bad_input_names(kDir / "bad", ".bvh");
+  EXPECT_EQ(golden.size(), names.size());
+  for (const std::string& name : names) EXPECT_TRUE(golden.count(name)) << name;
 }
 
-std::uint64_t seed() {
-  const char* env = std::getenv("FAPCAST_SEED");
-  return env ? std::strtoull(env, nullptr, 10) : 20261122u;
-}
 
 // A random well-formed document: random tree, channel subsets in random order, values of every
 // magnitude a rig produces, a random frame time.
@@ -179,7 +152,7 @@ BvhDocument random_document(std::mt19937_64& rng) {
 }
 
 TEST(BvhText, RandomDocumentsRoundTripExactly) {
-  const std::uint64_t s = seed();
+  const std::uint64_t s = test::seed_from_env();
   std::mt19937_64 rng(s);
   for (int i = 0; i < 300; ++i) {
     const BvhDocument doc = random_document(rng);

@@ -2,7 +2,7 @@
 
 #include "fapcast/codec/input_error.hpp"
 #include "support/bad_inputs.hpp"
-#include "support/seed.hpp"
+#include "support/fap_sequences.hpp"
 
 #include <gtest/gtest.h>
 
@@ -152,7 +152,7 @@ BvhDocument random_document(std::mt19937_64& rng) {
 }
 
 TEST(BvhText, RandomDocumentsRoundTripExactly) {
-  const std::uint64_t s = test::seed_from_env();
+  const std::uint64_t s = test::test_seed();
   std::mt19937_64 rng(s);
   for (int i = 0; i < 300; ++i) {
     const BvhDocument doc = random_document(rng);

@@ -37,6 +37,12 @@ TEST(FapJson, WritesTheGoldenFileByteForByte) {
   EXPECT_EQ(write_fap_json(small_sequence(), small_options()), test::slurp(kDir / "small.json"));
 }
 
+TEST(FapJson, SpecExampleIsTheGoldenFile) {
+  const std::string spec = test::slurp(fs::path(FAPCAST_SOURCE_DIR) / "spec" / "json.md");
+  const auto start = spec.find("```json\n") + 8;
+  EXPECT_EQ(spec.substr(start, spec.find("```", start) - start), test::slurp(kDir / "small.json"));
+}
+
 TEST(FapJson, ReadsTheGoldenFile) {
   const FapJsonRead r = read_fap_json(test::slurp(kDir / "small.json"), "small.json");
   EXPECT_EQ(r.sequence, small_sequence());

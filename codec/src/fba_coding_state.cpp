@@ -114,6 +114,9 @@ void FbaCodingState::begin_intra(int new_fap_quant, const FapMask& new_mask,
   fap_quant = new_fap_quant;
   mask = new_mask;
   ranges = new_ranges;
+  for (int fap = 1; fap <= kFapCount; ++fap) {
+    if (fap < kFirstLowLevelFap || !mask.test(fap)) ranges[static_cast<std::size_t>(fap - 1)] = {};  // carry no meaning
+  }
   reset_models(intra, mask, ranges, fap_quant, true);
   reset_models(predicted, mask, ranges, fap_quant, false);
 }

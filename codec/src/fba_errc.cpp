@@ -22,7 +22,7 @@ class FbaCategory final : public std::error_category {
       case fba_errc::bad_time_code: return "bad-time-code: minutes or seconds above 59";
       case fba_errc::skip_too_long: return "skip-too-long: more skipped frames than the decoder accepts";
       case fba_errc::bad_alignment_bits: return "bad-alignment-bits: byte-alignment bits are not all 1";
-      case fba_errc::trailing_bytes: return "trailing-bytes: bytes after the end of the plane";
+      case fba_errc::trailing_bytes: return "trailing-bytes: bytes after the end of a plane or of the stream";
       case fba_errc::missing_object_start_code: return "missing-object-start-code: the file does not open with 0x000001BA";
       case fba_errc::missing_end_code: return "missing-end-code: the file does not close with 0x000001B1";
       case fba_errc::uncodable_value: return "uncodable-value: a value beyond the codable range";

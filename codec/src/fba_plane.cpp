@@ -309,7 +309,7 @@ std::error_code read_plane(FbaCodingState& state, std::span<const std::uint8_t> 
   std::uint64_t in_offset = 0;  // bits before the reader's start
   const auto fail = [&](std::error_code e) {
     state.have_intra = false;
-    info.error_bit = in_offset + in.position().raw_bits;
+    info.error_bit = in_offset + (in.error() ? in.error_bits() : std::min<std::uint64_t>(in.position().raw_bits, 8 * unit.size()));
     return e;
   };
   // The start code is read as bytes: its 23 zeros are exactly what stuffing keeps out of a plane.

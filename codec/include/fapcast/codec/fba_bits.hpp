@@ -2,6 +2,7 @@
 // Bit writing and reading for the FBA stream, with start-code emulation prevention: after 22
 // consecutive 0 bits a 1 is stuffed, so 23 zeros (a start-code prefix) never occur inside a plane.
 // Writer and reader mirror each other and share one bit count (raw bits, stuffing included).
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -66,8 +67,12 @@ class FbaBitReader {
   const FbaBitPosition& position() const { return pos_; }
   std::error_code error() const { return error_; }
   void fail(std::error_code e) {
-    if (!error_) error_ = e;
+    if (error_) return;
+    error_ = e;
+    error_bits_ = std::min<std::uint64_t>(pos_.raw_bits, 8 * bytes_.size());
   }
+  // Where the first error was noticed: raw bits from the start, at most the data's length.
+  std::uint64_t error_bits() const { return error_bits_; }
   bool past_end() const { return pos_.raw_bits > 8 * bytes_.size(); }
 
  private:
@@ -76,6 +81,7 @@ class FbaBitReader {
   std::span<const std::uint8_t> bytes_;
   FbaBitPosition pos_;
   std::error_code error_;
+  std::uint64_t error_bits_ = 0;
   std::array<FbaBitPosition, 16> history_{};  // where each of the last 16 payload bits began
   std::uint32_t payload_bits_ = 0;
 };

@@ -106,3 +106,22 @@ TEST(FbaCliErrors, QuantOutOfRangeIsAUsageError) {
 
 }  // namespace
 }  // namespace fapcast::test
+
+namespace fapcast::test {
+namespace {
+
+TEST(FbaCliInfo, FapInfoReadsFbaToo) {
+  const std::string dir = make_temp_dir("fba-cli-info");
+  const std::string in = (fs::path(FAPCAST_TEST_DATA) / "xface" / "joy.fap").string();
+  ASSERT_EQ(run_command(fapcast("encode " + in + " -o " + dir + "/joy.fba")).exit_code, 0);
+  const auto text = run_command(fapcast("fap info " + in + " --json"));
+  const auto fba = run_command(fapcast("fap info " + dir + "/joy.fba --json"));
+  ASSERT_EQ(fba.exit_code, 0) << fba.err;
+  EXPECT_NE(fba.out.find("\"format\": \"fba\""), std::string::npos) << fba.out;
+  // Same frame count and masked FAPs as the text it came from.
+  const auto count = [](const std::string& s) { return s.substr(s.find("\"frames\":"), 16); };
+  EXPECT_EQ(count(fba.out), count(text.out));
+}
+
+}  // namespace
+}  // namespace fapcast::test

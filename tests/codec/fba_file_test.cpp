@@ -130,7 +130,9 @@ TEST(FbaFile, RandomRoundTrips) {
       if (f.mask.test(1)) f.viseme = {static_cast<std::uint8_t>(rng() % 15), static_cast<std::uint8_t>(rng() % 15), static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0};
       if (f.mask.test(2)) f.expression = {static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64), static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0, rng() % 2 == 0};
       if (rng() % 50 == 0) f.mask.set(3 + static_cast<int>(rng() % 66), false);  // a mask change
-      for (int n = 3; n <= kFapCount; ++n) if (!f.mask.test(n)) f.values[static_cast<std::size_t>(n - 1)] = 0;
+      for (int n = 3; n <= kFapCount; ++n) {
+        if (!f.mask.test(n)) f.values[static_cast<std::size_t>(n - 1)] = 0;
+      }
     }
     const FapSequence seq = sequence_of(frames, rng() % 2 ? FrameRate{25, 1} : FrameRate{30000, 1001});
     const auto result = round_trip(seq, {q, 1 + static_cast<int>(rng() % 30)});
@@ -141,8 +143,12 @@ TEST(FbaFile, RandomRoundTrips) {
       const FapFrame& in = seq.frames[k];
       const FapFrame& out = result.sequence.frames[k];
       ASSERT_EQ(out.mask, in.mask) << "frame " << k;
-      if (in.mask.test(1)) ASSERT_EQ(out.viseme, in.viseme);
-      if (in.mask.test(2)) ASSERT_EQ(out.expression, in.expression);
+      if (in.mask.test(1)) {
+        ASSERT_EQ(out.viseme, in.viseme);
+      }
+      if (in.mask.test(2)) {
+        ASSERT_EQ(out.expression, in.expression);
+      }
       for (int n = 3; n <= kFapCount; ++n) {
         ASSERT_LE(2 * std::abs(std::int64_t{out.value(n)} - in.value(n)), fba_step(n, q)) << "frame " << k << " FAP " << n;
       }

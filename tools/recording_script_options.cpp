@@ -1,6 +1,6 @@
 #include "recording_script_options.hpp"
 
-#include "fapcast/synth/data_dir.hpp"
+#include "fapcast/synth/data_root.hpp"
 #include "fapcast/synth/syllabified_lexicon.hpp"
 #include "fapcast/transport/file_io.hpp"
 

@@ -1,14 +1,13 @@
 #include "fapcast/synth/data_file_error.hpp"
 
+#include <optional>
 #include <utility>
 
 namespace fapcast::synth {
 
 DataFileError::DataFileError(std::string file, std::size_t line, std::string rule,
                              const std::string& detail)
-    : std::runtime_error(file + ":" + std::to_string(line) + ": " + rule + ": " + detail),
-      file_(std::move(file)),
-      line_(line),
-      rule_(std::move(rule)) {}
+    : InputError({std::move(file), line == 0 ? std::nullopt : std::optional<std::uint64_t>(line), std::nullopt},
+                 std::move(rule), detail) {}
 
 }  // namespace fapcast::synth

@@ -90,11 +90,7 @@ ReferenceTake record_take(const ScriptItem& item, std::string id, const FaceMode
   take.audio = take.speech.audio;
   take.alignment = take_alignment(take.speech);
   take.clean = talker_markers(actor, timeline_of(take.speech), {60, variation.effort});
-  take.captured = take.clean;
-  const HeadMotion head(random);
-  apply_head_motion(take.captured, head);
-  add_marker_noise(take.captured, random, 0.2);
-  drop_marker_runs(take.captured, random);
+  take.captured = capture_take(take.clean, random).frames;
   return take;
 }
 

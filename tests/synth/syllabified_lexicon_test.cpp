@@ -76,7 +76,7 @@ TEST(FestivalLexicon, WholeFestlexCmuParses) {
 
 TEST(WordCounts, VendoredSubtlexParsesAndIsSorted) {
   const auto counts = parse_word_counts(slurp(std::filesystem::path(FAPCAST_SOURCE_DIR) /
-                                              "synth/data/lexicon/subtlex-us-top20000.tsv"), "subtlex");
+                                              "data/lexicon/subtlex-us-top20000.tsv"), "subtlex");
   ASSERT_EQ(counts.size(), 20000u);
   EXPECT_EQ(counts.front().word, "you");
 }

@@ -29,7 +29,7 @@ TEST(CorpusScriptCommand, WritesScriptAndPrintsCoverage) {
   EXPECT_NE(text.str().find("\nnonsense\t1\t"), std::string::npos);
 }
 
-// Defaults: the vendored SUBTLEX-US counts (synth/data) and festlex-cmu; the paper's sizes.
+// Defaults: the vendored SUBTLEX-US counts (data/lexicon) and festlex-cmu; the paper's sizes.
 TEST(CorpusScriptCommand, DefaultDataGivesFullDivisemeCoverage) {
   if (!std::filesystem::exists("/usr/share/festival/dicts/cmu/cmudict-0.4.out")) GTEST_SKIP() << "festlex-cmu missing";
   const auto r = run_command("env -u FAPCAST_DATA -u FAPCAST_CMUDICT " + fapcast("corpus script"));

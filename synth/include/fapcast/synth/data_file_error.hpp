@@ -1,23 +1,17 @@
 #pragma once
-// The error every synth data reader throws: which file, which line, which rule was broken.
+// The InputError of synth's data-file readers (OBJ, sparse targets, TSV tables, JSON indices):
+// built from a file and a line number, where line 0 means the file as a whole.
+#include "fapcast/synth/input_error.hpp"
+
 #include <cstddef>
-#include <stdexcept>
 #include <string>
 
 namespace fapcast::synth {
 
-// "file:line: rule-id: detail" (line 0 = the file as a whole).
-class DataFileError : public std::runtime_error {
+class DataFileError : public InputError {
  public:
   DataFileError(std::string file, std::size_t line, std::string rule, const std::string& detail);
-  const std::string& file() const noexcept { return file_; }
-  std::size_t line() const noexcept { return line_; }
-  const std::string& rule() const noexcept { return rule_; }
-
- private:
-  std::string file_;
-  std::size_t line_;
-  std::string rule_;
+  std::size_t line() const noexcept { return static_cast<std::size_t>(where().line.value_or(0)); }
 };
 
 }  // namespace fapcast::synth

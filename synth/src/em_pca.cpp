@@ -59,7 +59,6 @@ PcaBasis em_pca(const FrameStream& frames, const EmPcaOptions& options) {
 
   PcaBasis basis;
   basis.mean = stream_mean(frames, chunk_frames, buffer);
-  const Eigen::VectorXf mean_f = basis.mean.cast<float>();
 
   std::mt19937_64 rng(options.seed);
   std::normal_distribution<double> normal;
@@ -69,24 +68,25 @@ PcaBasis em_pca(const FrameStream& frames, const EmPcaOptions& options) {
   }
   Eigen::MatrixXd c = orthonormal_basis(start);  // D x k, orthonormal
 
-  Eigen::MatrixXd yx(dim, k);      // sum over frames of y x^T
-  Eigen::MatrixXd xx(k, k);        // sum over frames of x x^T
-  Eigen::MatrixXf yx_chunk(dim, k);
-  Eigen::MatrixXf x_chunk(k, chunk_frames);
+  Eigen::MatrixXd yx(dim, k);  // sum over frames of y x^T
+  Eigen::MatrixXd xx(k, k);    // sum over frames of x x^T
+  Eigen::MatrixXd y(dim, chunk_frames);
+  Eigen::MatrixXd x(k, chunk_frames);
   basis.converged = false;
   for (int it = 1; it <= options.max_iterations; ++it) {
-    const Eigen::MatrixXf c_f = c.cast<float>();
     yx.setZero();
     xx.setZero();
     double total = 0.0;
     for_each_chunk(frames, chunk_frames, buffer, [&](Eigen::Index, Eigen::Ref<Eigen::MatrixXf> chunk) {
-      chunk.colwise() -= mean_f;
-      auto x = x_chunk.leftCols(chunk.cols());
-      x.noalias() = c_f.transpose() * chunk;         // E-step (C orthonormal: C^T C = I)
-      yx_chunk.noalias() = chunk * x.transpose();    // float GEMM per chunk, summed in double
-      yx += yx_chunk.cast<double>();
-      xx.noalias() += (x * x.transpose()).cast<double>();
-      total += chunk.cast<double>().squaredNorm();
+      // Double arithmetic from here on: float32 products put a noise floor near 1e-7 of the top
+      // variance, above the variance of the last of the 17 components on smooth data.
+      auto yc = y.leftCols(chunk.cols());
+      auto xc = x.leftCols(chunk.cols());
+      yc = chunk.cast<double>().colwise() - basis.mean;
+      xc.noalias() = c.transpose() * yc;   // E-step (C orthonormal: C^T C = I)
+      yx.noalias() += yc * xc.transpose();  // M-step sums
+      xx.noalias() += xc * xc.transpose();
+      total += yc.squaredNorm();
     });
     basis.iterations = it;
     basis.total_variance = total / static_cast<double>(frames.frame_count);
@@ -94,6 +94,7 @@ PcaBasis em_pca(const FrameStream& frames, const EmPcaOptions& options) {
     // M-step: C_new = YX^T (XX^T)^-1; its span is what counts, so orthonormalise it.
     const Eigen::MatrixXd c_new = orthonormal_basis(yx * xx.ldlt().solve(Eigen::MatrixXd::Identity(k, k)));
     const double moved = largest_angle_sine(c, c_new);
+    if (options.on_iteration) options.on_iteration(it, moved);
     if (moved < options.tolerance) {
       basis.converged = true;
       break;  // keep c: xx was measured exactly for it, so the rotation below is exact

@@ -54,12 +54,19 @@ inline Eigen::MatrixXd smooth_shape_map(const Eigen::MatrixXd& a, Eigen::Index r
   const Eigen::VectorXd base = 0.1 * random(rows, 1);
   const Eigen::MatrixXd linear = 0.01 * random(rows, 3);
   const Eigen::MatrixXd quadratic = 0.004 * random(rows, 6);
-  const Eigen::MatrixXd wave = 0.003 * random(rows, 3);
-  Eigen::MatrixXd features(6, a.cols()), waves(3, a.cols());
+  // 12 waves: with 3 linear and 6 quadratic terms the map has 21 features, so 21 prototypes of
+  // it span a full 20-dimensional centred space (as the ICT shape recipes do).
+  const Eigen::MatrixXd wave = 0.003 * random(rows, 12);
+  Eigen::MatrixXd features(6, a.cols()), waves(12, a.cols());
   for (Eigen::Index t = 0; t < a.cols(); ++t) {
     const double x = a(0, t), y = a(1, t), z = a(2, t);
     features.col(t) << x * x, y * y, z * z, x * y, y * z, x * z;
-    waves.col(t) << std::sin(3 * x + 1), std::sin(2.5 * y - 0.5), std::cos(2 * z + x);
+    for (int w = 0; w < 4; ++w) {
+      const double f = 1.5 + 0.5 * w;
+      waves(3 * w, t) = std::sin(f * x + w);
+      waves(3 * w + 1, t) = std::sin(f * y - 0.5 * w);
+      waves(3 * w + 2, t) = std::cos(f * z + x);
+    }
   }
   Eigen::MatrixXd out = linear * a + quadratic * features + wave * waves;
   out.colwise() += base;

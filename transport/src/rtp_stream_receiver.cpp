@@ -8,9 +8,10 @@
 
 namespace fapcast::transport {
 namespace {
-// RFC 3550 A.1: a forward jump beyond this needs confirmation; a step back beyond the history is
-// treated as late.
+// RFC 3550 A.1: a jump forward beyond kMaxDropout or back beyond kMaxMisorder needs
+// confirmation by the next packet before the receiver believes the sender restarted.
 constexpr std::int64_t kMaxDropout = 3000;
+constexpr std::int64_t kMaxMisorder = 100;
 constexpr std::uint64_t kFirstCycle = 1ull << 16;  // first extended sequence lies in cycle 1
 }  // namespace
 
@@ -73,7 +74,7 @@ std::error_code RtpStreamReceiver::on_datagram(std::span<const std::uint8_t> dat
   std::uint64_t ext = kFirstCycle + h.sequence;
   if (have_highest_) {
     const auto delta = static_cast<std::int16_t>(h.sequence - static_cast<std::uint16_t>(highest_));
-    if (delta > kMaxDropout) {
+    if (delta > kMaxDropout || delta < -kMaxMisorder) {
       if (probation_ != h.sequence) {
         probation_ = static_cast<std::uint16_t>(h.sequence + 1);
         ++stats_.sequence_jumps;

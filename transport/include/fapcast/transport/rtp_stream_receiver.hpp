@@ -72,6 +72,8 @@ class RtpStreamReceiver {
 
   const ReceiverStats& stats() const { return stats_; }
   std::optional<std::uint32_t> locked_ssrc() const { return ssrc_; }
+  // Packets waiting in the reorder buffer (never more than options.reorder_capacity).
+  std::size_t held_packets() const { return held_.size(); }
   // The jitter in seconds.
   double jitter_seconds() const;
 

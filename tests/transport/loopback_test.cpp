@@ -326,8 +326,9 @@ TEST(Loopback, TsharkDecodesTheStreamAsRtp) {
   const int n = 20;
   test::CommandResult capture;
   std::thread tshark([&] {
-    capture = test::run_command("timeout 20 tshark -q -i lo -f 'udp dst port " + std::to_string(port) + "' -c " +
-                                std::to_string(n) + " -a duration:15 -w " + pcap + " 2>" + dir + "/err");
+    // The subshell keeps our stderr file: run_command redirects the whole command's stderr.
+    capture = test::run_command("(timeout 20 tshark -q -i lo -f 'udp dst port " + std::to_string(port) + "' -c " +
+                                std::to_string(n) + " -a duration:15 -w " + pcap + " 2>" + dir + "/err)");
   });
   // Wait (bounded) until tshark says it is capturing.
   for (int i = 0; i < 100; ++i) {

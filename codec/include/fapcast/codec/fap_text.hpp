@@ -2,6 +2,7 @@
 // Reading and writing `.fap` text files in every dialect real players write (spec/fap-text.md).
 #include "fapcast/codec/fap_frame.hpp"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,18 +15,28 @@ enum class FapTextDialect {
   kMask69,  // 69 mask tokens (a leading unused slot); one integer each for FAP 1 and FAP 2
 };
 
+// Limits that keep a hostile file from making the reader allocate without bound
+// (spec/fap-text.md, "Limits"). Memory is bounded by what the file actually holds, never by
+// the header's claim.
+inline constexpr std::uint64_t kFapTextMaxFrames = 1'000'000;  // 11 h at 25 fps
+inline constexpr std::uint64_t kFapTextMaxHeldFrames = 1'000;  // one skip holds <= 40 s at 25 fps
+inline constexpr std::size_t kFapTextMaxWarnings = 32;         // further ones are only counted
+
 // What the reader saw, besides the frames: the dialect and every tolerated irregularity.
 struct FapTextInfo {
   std::string version;  // "2.1", "2.0" ...
   FapTextDialect dialect = FapTextDialect::kStrict;
   std::uint64_t header_frame_count = 0;  // what the header claimed
+  std::uint64_t frame_records = 0;       // mask+value pairs in the file (held frames excluded)
   bool crlf = false;
   bool tabs = false;
   bool comments = false;
   bool name_has_spaces = false;
   bool skipped_frames = false;    // frame numbers skipped; the previous frame was held
   bool real_valued_tokens = false;
+  bool header_count_short = false;  // the file holds slightly fewer frames than the header says
   std::vector<std::string> warnings;  // "joy.fap:14: real-value: 3.6 rounded to 4", ...
+  std::uint64_t warning_count = 0;    // all warnings, including those beyond kFapTextMaxWarnings
 
   // One line naming the dialect and the irregularities, e.g. "68-token masks, CRLF, comments".
   std::string describe() const;
@@ -42,6 +53,24 @@ FapTextRead read_fap_text(std::string_view bytes, std::string_view source);
 
 // Writes the strict profile by default: "2.1 NAME FPS N", 68-token masks, frames 0..N-1,
 // integers, single spaces, LF. kMask69 writes the 69-token dialect (FAP 1 and 2: select1 only).
+// The name is written as fap_text_name(seq.name). Throws std::invalid_argument when the rate
+// has no exact decimal form the reader maps back to it (fap_text_fps).
 std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect = FapTextDialect::kStrict);
+
+// The header's name token for `name`: invalid UTF-8 becomes U+FFFD, every space, tab or
+// control character becomes '_', and an empty name becomes "unnamed" — so that readers that
+// take the name as one token stay in step.
+std::string fap_text_name(std::string_view name);
+
+// The header's fps token for `rate`: "25", "12.5", and "29.97" for 30000/1001 (the reader maps
+// 29.97 back to 30000/1001). Throws std::invalid_argument for a rate with no such form (10/3).
+std::string fap_text_fps(FrameRate rate);
+
+// The frame as the 69-token dialect carries it: FAP 1 keeps viseme_select1 at full weight
+// (blend 63), FAP 2 keeps expression_select1 at full intensity (63); everything else is as is.
+FapFrame as_mask69(const FapFrame& frame);
+
+// How many frames the 69-token dialect cannot carry exactly (as_mask69(f) != f).
+std::size_t mask69_lossy_frames(const FapSequence& seq);
 
 }  // namespace fapcast::codec

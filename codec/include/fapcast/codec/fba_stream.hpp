@@ -5,10 +5,13 @@
 // whole-file coder shares the same coder state and segment coding; a file need not spend a start
 // code and byte alignment on every frame (spec/fba.md says what a file does).
 #include "fapcast/codec/fap_frame.hpp"
+#include "fapcast/codec/fba_coding_state.hpp"
+#include "fapcast/codec/fba_errc.hpp"
 
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <system_error>
 #include <vector>
 
@@ -34,6 +37,12 @@ class FbaFrameEncoder {
   // Codes the next frame. `force_intra` starts a new intra frame (a late joiner, a request).
   // Errors: a value outside the codable range (never clipped), an invalid option.
   std::error_code encode(const FapFrame& frame, FbaAccessUnit& out, bool force_intra = false);
+  // After an error from encode(): which frame and FAP, and why ("frame 12, FAP 48 head_pitch: ...").
+  const std::string& error_detail() const;
+  // The coder state after the last frame (tests compare it with the decoder's).
+  const FbaCodingState& coding_state() const;
+  // Bits of the last access unit before byte alignment, start code and stuffing included.
+  std::uint64_t last_bits() const;
 
  private:
   struct State;
@@ -54,6 +63,13 @@ class FbaFrameDecoder {
   void reset();
   bool needs_intra() const;
   FrameRate rate() const;  // from the last intra unit
+  // The coder state after the last unit, and the bits it consumed before byte alignment.
+  const FbaCodingState& coding_state() const;
+  std::uint64_t last_bits() const;
+  // Frames the last unit says were skipped before it (skip_frames), 0..255.
+  int last_skip_frames() const;
+  // After an error: the bit offset in the unit where it was noticed.
+  std::uint64_t error_bit() const;
 
  private:
   struct State;

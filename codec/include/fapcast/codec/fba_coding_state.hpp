@@ -1,0 +1,75 @@
+#pragma once
+// The state an FBA encoder and decoder share and keep in step, plane after plane: the intra
+// header in force (fap_quant, mask, coding ranges), the reconstructed values P planes predict
+// from, and the adaptive models (intra models reset at every I plane, P models kept until the
+// next). Both sides hold one; tests compare them after every frame. Quantisation lives here too.
+#include "fapcast/codec/arithmetic_coder.hpp"
+#include "fapcast/codec/fap_frame.hpp"
+#include "fapcast/codec/frame_rate.hpp"
+
+#include <array>
+#include <cstdint>
+#include <optional>
+
+namespace fapcast::codec {
+
+inline constexpr int kMaxFapQuant = 31;      // fap_quant is 5 bits; 0 = lossless
+inline constexpr int kMaxRangeField = 31;    // new-min/max fields are 5 bits
+inline constexpr int kRangeFieldUnit = 60;   // range = 60 * field / fap_quant levels
+
+// Quantiser step of FAP `fap` (3..68) at `fap_quant` (0..31): QP * fap_quant, 1 when lossless.
+int fba_step(int fap, int fap_quant);
+// Quantisation level of `value` (FAPU) at `step` (>= 1): 0 within step/2, else rounded away.
+std::int32_t fba_quantise(std::int64_t value, int step);
+// Levels a range field (0..31) spans at `fap_quant`: 60 * field / max(fap_quant, 1).
+int fba_range_levels(int field, int fap_quant);
+// The smallest field (0..31) whose range spans `levels` (>= 0) at `fap_quant`, or nullopt.
+std::optional<int> fba_range_field(std::int64_t levels, int fap_quant);
+
+// The four 5-bit range fields of one FAP; the range in levels is [-levels(min), levels(max)].
+struct FbaRangeFields {
+  std::uint8_t i_max = 0, i_min = 0, p_max = 0, p_min = 0;
+  bool operator==(const FbaRangeFields&) const = default;
+};
+// The fields a decoder assumes when an intra header sends none: the FAP table's default ranges.
+FbaRangeFields fba_default_range_fields(int fap);
+
+// frame_rate(8) / seconds(4), times 1000/1001 when frequency_offset is set.
+struct FbaRateFields {
+  int frame_rate = 25;  // 1..255
+  int seconds = 1;      // 1..15
+  bool frequency_offset = false;
+  FrameRate rate() const;
+};
+// The fields that say `rate` exactly, or nullopt when none do (e.g. 1000/3).
+std::optional<FbaRateFields> fba_rate_fields(FrameRate rate);
+
+// One set of models: one per low-level FAP, and the viseme and expression fields.
+struct FbaModels {
+  std::array<FrequencyModel, kFapCount> fap;  // fap[n-1] for FAP n (3..68)
+  FrequencyModel viseme_select1, viseme_select2, viseme_blend;
+  FrequencyModel expression_select1, expression_intensity1, expression_select2, expression_intensity2;
+  bool operator==(const FbaModels&) const = default;
+};
+
+struct FbaCodingState {
+  bool have_intra = false;  // false until an intra plane, and again after an error
+  FrameRate rate;           // from the last intra plane that carried one
+  int fap_quant = 0;
+  FapMask mask;
+  std::array<FbaRangeFields, kFapCount> ranges{};
+  std::array<std::int32_t, kFapCount> reconstructed{};  // what the decoder shows, FAPU
+  VisemeField viseme;
+  ExpressionField expression;
+  FbaModels intra, predicted;
+  std::uint64_t planes = 0;  // planes coded since the state was made
+
+  // Starts an intra period: the header fields in force, all models uniform over their ranges.
+  void begin_intra(int new_fap_quant, const FapMask& new_mask,
+                   const std::array<FbaRangeFields, kFapCount>& new_ranges);
+  // FNV-1a over everything above: a cheap end-of-stream check that two sides agree.
+  std::uint64_t checksum() const;
+  bool operator==(const FbaCodingState&) const = default;
+};
+
+}  // namespace fapcast::codec

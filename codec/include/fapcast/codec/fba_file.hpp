@@ -1,0 +1,55 @@
+#pragma once
+// Whole .fba files: the object start code, one object plane per frame (each byte-aligned, each
+// with its plane start code, exactly the access units of fba_stream.hpp), and the end code.
+// spec/fba.md defines the layout and says why a file spends a start code on every frame.
+#include "fapcast/codec/fap_frame.hpp"
+#include "fapcast/codec/fba_stream.hpp"
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace fapcast::codec {
+
+// Thrown by encode_fba: code() is an fba_errc (or std::errc::invalid_argument for bad options),
+// what() names the frame and FAP.
+class FbaEncodeError : public std::system_error {
+ public:
+  using std::system_error::system_error;
+};
+
+// Encodes a whole sequence. Intra planes come every options.intra_period frames, and earlier
+// when the mask changes or a P difference leaves the widest range; each intra plane's ranges
+// are sized to the frames it heads. Throws FbaEncodeError for a value it cannot code.
+std::vector<std::uint8_t> encode_fba(const FapSequence& seq, const FbaEncoderOptions& options);
+
+// One refusal met while decoding: where (byte offset in the file) and why.
+struct FbaDecodeError {
+  std::uint64_t byte_offset = 0;
+  std::error_code code;
+  std::string message() const;  // "byte 1234: truncated: the bits end before the plane does"
+};
+
+struct FbaDecodeReport {
+  std::uint64_t frames_decoded = 0;
+  std::uint64_t frames_lost = 0;     // corrupt planes, and P planes refused until the next intra
+  std::uint64_t frames_skipped = 0;  // skip_frames the stream asked for (held frames)
+  std::vector<FbaDecodeError> errors;  // at most kMaxReportedErrors; errors_total counts all
+  std::uint64_t errors_total = 0;
+  std::uint64_t bytes = 0;
+  bool ok() const { return errors_total == 0; }
+  static constexpr std::size_t kMaxReportedErrors = 64;
+};
+
+struct FbaDecodeResult {
+  FapSequence sequence;  // lost and skipped frames hold the frame before them (an empty frame at the start)
+  FbaDecodeReport report;
+};
+
+// Decodes a whole file, never trusting it: after a corrupt plane it resumes at the next intra
+// plane and counts the frames in between as lost. Never throws for a bad stream.
+FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes);
+
+}  // namespace fapcast::codec

@@ -1,0 +1,228 @@
+// Guarantees of the whole-file FBA coder (spec/fba.md), each a test.
+#include "fapcast/codec/fba_errc.hpp"
+#include "fapcast/codec/fba_file.hpp"
+#include "codec/fba_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+namespace fapcast::codec {
+namespace {
+
+using test::fba_seed;
+using test::reproduce;
+
+FapMask lip_jaw_tongue_mask() {
+  FapMask m;
+  for (int g : {2, 6, 8}) {
+    const FapRange r = fap_group(g);
+    for (int n = r.first; n <= r.last; ++n) m.set(n);
+  }
+  return m;
+}
+
+FapSequence sequence_of(std::vector<FapFrame> frames, FrameRate rate = {25, 1}) {
+  return FapSequence{"", rate, std::move(frames)};
+}
+
+FbaDecodeResult round_trip(const FapSequence& seq, FbaEncoderOptions o) {
+  const auto bytes = encode_fba(seq, o);
+  return decode_fba(bytes);
+}
+
+// At fap_quant 0 every value inside +/-1860 comes back exactly, on every low-level FAP.
+TEST(FbaFile, LosslessAtQuantZeroOverTheWholeCodableRange) {
+  const std::uint64_t seed = fba_seed();
+  SCOPED_TRACE(reproduce(seed, "FbaFile.LosslessAtQuantZeroOverTheWholeCodableRange"));
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> value(-1860, 1860);
+  std::vector<FapFrame> frames(60);
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) frames[k].set(n, value(rng));
+  }
+  frames[0].set(3, 1860).set(4, -1860);  // both ends of the range
+  frames[1].set(3, -1860).set(4, 1860);  // and a P difference of 3720
+  const FapSequence seq = sequence_of(frames);
+  const auto result = round_trip(seq, {0, 25});
+  ASSERT_TRUE(result.report.ok()) << result.report.errors.front().message();
+  EXPECT_EQ(result.sequence, seq);
+}
+
+// A value one unit beyond the range is refused, naming frame and FAP; never clipped.
+TEST(FbaFile, ValueBeyond1860IsRefusedNotClipped) {
+  for (const std::int32_t bad : {1861, -1861, 100000}) {
+    std::vector<FapFrame> frames(5);
+    for (auto& f : frames) f.set(48, 10);
+    frames[3].set(48, bad);
+    try {
+      encode_fba(sequence_of(frames), {0, 25});
+      FAIL() << bad << " was accepted";
+    } catch (const FbaEncodeError& e) {
+      EXPECT_EQ(e.code(), fba_errc::uncodable_value);
+      const std::string what = e.what();
+      EXPECT_NE(what.find("frame 3"), std::string::npos) << what;
+      EXPECT_NE(what.find("FAP 48 head_pitch"), std::string::npos) << what;
+      EXPECT_NE(what.find(std::to_string(bad)), std::string::npos) << what;
+      EXPECT_NE(what.find("never clipped"), std::string::npos) << what;
+    }
+  }
+}
+
+TEST(FbaFile, InvalidOptionsAreTheCallersMistake) {
+  const FapSequence seq = sequence_of({FapFrame{}.set(3, 1)});
+  for (const FbaEncoderOptions o : {FbaEncoderOptions{-1, 25}, FbaEncoderOptions{32, 25}, FbaEncoderOptions{1, 0}}) {
+    try {
+      encode_fba(seq, o);
+      FAIL();
+    } catch (const FbaEncodeError& e) {
+      EXPECT_EQ(e.code(), std::errc::invalid_argument);
+    }
+  }
+}
+
+struct QuantCase {
+  int fap_quant;
+  std::size_t frames;
+};
+class FbaQuantised : public ::testing::TestWithParam<QuantCase> {};
+
+// With fap_quant q every decoded value is within step/2 of the input, with no drift.
+// (The long run at two quantisers keeps the suite fast under ASan.)
+TEST_P(FbaQuantised, WithinHalfAStepWithoutDrift) {
+  const int q = GetParam().fap_quant;
+  const std::uint64_t seed = fba_seed() + static_cast<std::uint64_t>(q);
+  SCOPED_TRACE(reproduce(seed - static_cast<std::uint64_t>(q), "Quant/FbaQuantised.*"));
+  std::mt19937_64 rng(seed);
+  FapMask mask;
+  mask.set(3).set(5).set(48);  // small mask: the test stays fast under ASan
+  const FapSequence seq = sequence_of(test::smooth_track(rng, mask, GetParam().frames, 800));
+  const auto result = round_trip(seq, {q, 250});
+  ASSERT_TRUE(result.report.ok());
+  ASSERT_EQ(result.sequence.frames.size(), seq.frames.size());
+  std::int64_t worst_excess = 0;
+  for (std::size_t k = 0; k < seq.frames.size(); ++k) {
+    for (int n : {3, 5, 48}) {
+      const std::int64_t error = std::abs(std::int64_t{result.sequence.frames[k].value(n)} - seq.frames[k].value(n));
+      worst_excess = std::max(worst_excess, 2 * error - fba_step(n, q));  // 2*error <= step
+    }
+  }
+  EXPECT_LE(worst_excess, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Quant, FbaQuantised,
+                         ::testing::Values(QuantCase{1, 100000}, QuantCase{2, 10000}, QuantCase{4, 10000},
+                                           QuantCase{8, 100000}, QuantCase{31, 10000}));
+
+// Random sequences of every shape round-trip within step/2: random masks, rates, quants.
+TEST(FbaFile, RandomRoundTrips) {
+  const std::uint64_t seed = fba_seed();
+  SCOPED_TRACE(reproduce(seed, "FbaFile.RandomRoundTrips"));
+  std::mt19937_64 rng(seed);
+  for (int trial = 0; trial < 40; ++trial) {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    FapMask mask;
+    for (int n = 1; n <= kFapCount; ++n) mask.set(n, rng() % 3 == 0);
+    const int q = static_cast<int>(rng() % 9);
+    auto frames = test::smooth_track(rng, mask, 1 + rng() % 120, 1 + static_cast<int>(rng() % 1800) / std::max(q, 1));
+    for (auto& f : frames) {
+      if (f.mask.test(1)) f.viseme = {static_cast<std::uint8_t>(rng() % 15), static_cast<std::uint8_t>(rng() % 15), static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0};
+      if (f.mask.test(2)) f.expression = {static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64), static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0, rng() % 2 == 0};
+      if (rng() % 50 == 0) f.mask.set(3 + static_cast<int>(rng() % 66), false);  // a mask change
+      for (int n = 3; n <= kFapCount; ++n) if (!f.mask.test(n)) f.values[static_cast<std::size_t>(n - 1)] = 0;
+    }
+    const FapSequence seq = sequence_of(frames, rng() % 2 ? FrameRate{25, 1} : FrameRate{30000, 1001});
+    const auto result = round_trip(seq, {q, 1 + static_cast<int>(rng() % 30)});
+    ASSERT_TRUE(result.report.ok()) << result.report.errors.front().message();
+    ASSERT_EQ(result.sequence.frames.size(), seq.frames.size());
+    EXPECT_EQ(result.sequence.rate, seq.rate);
+    for (std::size_t k = 0; k < seq.frames.size(); ++k) {
+      const FapFrame& in = seq.frames[k];
+      const FapFrame& out = result.sequence.frames[k];
+      ASSERT_EQ(out.mask, in.mask) << "frame " << k;
+      if (in.mask.test(1)) ASSERT_EQ(out.viseme, in.viseme);
+      if (in.mask.test(2)) ASSERT_EQ(out.expression, in.expression);
+      for (int n = 3; n <= kFapCount; ++n) {
+        ASSERT_LE(2 * std::abs(std::int64_t{out.value(n)} - in.value(n)), fba_step(n, q)) << "frame " << k << " FAP " << n;
+      }
+    }
+  }
+}
+
+// After corruption the decoder resumes at the next intra plane and counts the frames lost.
+TEST(FbaFile, ResynchronisesAfterCorruptionAndCountsLostFrames) {
+  std::mt19937_64 rng(fba_seed());
+  const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 100, 300));
+  auto bytes = encode_fba(seq, {0, 25});
+  // Find the plane start codes; corrupt plane 30 (a P plane: intra planes are 0, 25, 50, 75).
+  std::vector<std::size_t> planes;
+  for (std::size_t i = 0; i + 3 < bytes.size(); ++i)
+    if (bytes[i] == 0 && bytes[i + 1] == 0 && bytes[i + 2] == 1 && bytes[i + 3] == 0xBB) planes.push_back(i);
+  ASSERT_EQ(planes.size(), 100u);
+  bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(planes[30] + 6), bytes.begin() + static_cast<std::ptrdiff_t>(planes[31] - 1));
+  const auto result = decode_fba(bytes);
+  ASSERT_EQ(result.report.errors_total, 1u);
+  EXPECT_GE(result.report.errors[0].byte_offset, planes[30]);
+  EXPECT_EQ(result.report.frames_lost, 20u);  // planes 30..49
+  EXPECT_EQ(result.report.frames_decoded, 80u);
+  ASSERT_EQ(result.sequence.frames.size(), 100u);
+  for (std::size_t k = 0; k < 100; ++k) {
+    if (k >= 30 && k < 50) {
+      EXPECT_EQ(result.sequence.frames[k], seq.frames[29]) << "lost frames hold the last good one";
+    } else {
+      EXPECT_EQ(result.sequence.frames[k], seq.frames[k]) << k;
+    }
+  }
+}
+
+// Stuffing: a stream rich in zero bits round-trips, and no 23 zeros occur inside it.
+TEST(FbaFile, StuffingPreventsStartCodeEmulation) {
+  // Downward steps make the P range [-1000, 0], so a zero difference is the lowest interval
+  // and codes as a long run of 0 bits.
+  std::vector<FapFrame> frames(30);
+  for (std::size_t k = 0; k < frames.size(); ++k)
+    for (int n = 3; n <= 18; ++n) frames[k].set(n, k == 1 ? -1000 : (k >= 2 ? -1000 : 0));
+  const FapSequence seq = sequence_of(frames);
+  const auto bytes = encode_fba(seq, {0, 100});
+  int run = 0, longest = 0;
+  std::size_t start_codes = 0;
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    if (i + 3 < bytes.size() && bytes[i] == 0 && bytes[i + 1] == 0 && bytes[i + 2] == 1) {
+      ++start_codes;
+      i += 3;
+      run = 0;
+      continue;
+    }
+    for (int b = 7; b >= 0; --b) {
+      run = (bytes[i] >> b) & 1 ? 0 : run + 1;
+      longest = std::max(longest, run);
+    }
+  }
+  EXPECT_EQ(start_codes, 32u);  // object + 30 planes + end
+  EXPECT_EQ(longest, 22);       // reached, and stuffed
+  const auto result = decode_fba(bytes);
+  ASSERT_TRUE(result.report.ok()) << result.report.errors.front().message();
+  EXPECT_EQ(result.sequence, seq);
+}
+
+TEST(FbaFile, EmptySequenceIsObjectAndEndCodes) {
+  const auto bytes = encode_fba(sequence_of({}), {});
+  EXPECT_EQ(bytes, (std::vector<std::uint8_t>{0, 0, 1, 0xBA, 0, 0, 1, 0xB1}));
+  const auto result = decode_fba(bytes);
+  EXPECT_TRUE(result.report.ok());
+  EXPECT_TRUE(result.sequence.frames.empty());
+}
+
+TEST(FbaFile, GarbageIsReportedNeverThrown) {
+  std::mt19937_64 rng(fba_seed());
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<std::uint8_t> bytes(rng() % 200);
+    for (auto& b : bytes) b = static_cast<std::uint8_t>(rng() % 4 == 0 ? 0 : rng());
+    const auto result = decode_fba(bytes);
+    EXPECT_FALSE(result.report.ok());
+    EXPECT_EQ(result.sequence.frames.size(), result.report.frames_decoded + result.report.frames_lost + result.report.frames_skipped);
+  }
+}
+
+}  // namespace
+}  // namespace fapcast::codec

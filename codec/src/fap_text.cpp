@@ -514,21 +514,24 @@ std::string fap_text_name(std::string_view name) {
 
 std::string fap_text_fps(FrameRate rate) {
   if (!rate.valid()) throw std::invalid_argument("frame rate with a zero term");
-  // Try 0..6 decimal places; the reader decides which spelling means this rate.
+  // The shortest spelling with 0..6 decimal places that is within 0.001 fps of the rate (so
+  // that naive readers are close too: 23.976, not 23.98) and that this reader maps back to it.
   std::uint64_t scale = 1;
   for (int digits = 0; digits <= kMaxFpsDigits; ++digits, scale *= 10) {
-    const std::uint64_t scaled =
-        (2 * std::uint64_t{rate.numerator} * scale + rate.denominator) / (2 * rate.denominator);
+    const std::uint64_t num = rate.numerator, den = rate.denominator;
+    const std::uint64_t scaled = (2 * num * scale + den) / (2 * den);
+    const std::uint64_t error = scaled * den > num * scale ? scaled * den - num * scale
+                                                           : num * scale - scaled * den;
+    if (error * 1000 >= scale * den) continue;
     std::string s = std::to_string(scaled / scale);
     if (digits > 0) {
-      std::string frac = std::to_string(scaled % scale);
+      const std::string frac = std::to_string(scaled % scale);
       s += "." + std::string(static_cast<std::size_t>(digits) - frac.size(), '0') + frac;
     }
-    const std::string header = "2.1 x " + s + " 0\n";
     try {
-      if (read_fap_text(header, "").sequence.rate == rate) return s;
+      if (read_fap_text("2.1 x " + s + " 0\n", "").sequence.rate == rate) return s;
     } catch (const InputError&) {
-      break;  // out of range: more digits will not help
+      // 0 or above 1000 fps at this precision: try the next one
     }
   }
   throw std::invalid_argument("frame rate " + std::to_string(rate.numerator) + "/" +

@@ -56,9 +56,17 @@ void write_track_file(const std::filesystem::path& path, const codec::FapSequenc
       return;
     }
     case TrackFormat::kFba: {
+      // fap_quant 0 is lossless but has a narrower codable range; values it refuses were received
+      // as multiples of QP[fap] * the sender's fap_quant (>= 1), which fap_quant 1 codes exactly.
       codec::FbaEncoderOptions options;
-      options.fap_quant = 0;  // the values are already quantised: re-code them exactly
-      const auto bytes = codec::encode_fba(seq, options);
+      options.fap_quant = 0;
+      std::vector<std::uint8_t> bytes;
+      try {
+        bytes = codec::encode_fba(seq, options);
+      } catch (const codec::FbaEncodeError&) {
+        options.fap_quant = 1;
+        bytes = codec::encode_fba(seq, options);
+      }
       write_file_atomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
       return;
     }

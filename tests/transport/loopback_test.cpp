@@ -299,6 +299,11 @@ TEST(Loopback, AudioAndSenderReportsShareOneClock) {
     EXPECT_EQ(a.ssrc, 0x5eed0001u);
     EXPECT_EQ(b.ssrc, 0x5eed0002u);
     EXPECT_EQ(a.ntp, b.ntp);
+    // Compound packets: SR then SDES with the same CNAME on both streams.
+    ASSERT_GT(got[1][k].size(), 36u);
+    EXPECT_EQ(got[1][k][29], 202);
+    EXPECT_EQ(std::vector<std::uint8_t>(got[1][k].begin() + 36, got[1][k].end()),
+              std::vector<std::uint8_t>(got[3][k].begin() + 36, got[3][k].end()));
     const std::uint32_t pos_a = a.rtp_timestamp - 4'294'960'000u;
     const std::uint32_t pos_b = b.rtp_timestamp - 7u;
     EXPECT_EQ(pos_a, pos_b);  // the same instant on both media clocks

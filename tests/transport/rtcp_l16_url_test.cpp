@@ -55,6 +55,20 @@ TEST(SenderReport, RefusesWhatIsNotOne) {
   EXPECT_EQ(parse_sender_report(long_length, parsed), bad);
 }
 
+TEST(Sdes, CnameChunkIsPaddedToAWordWithANull) {
+  Bytes packet;
+  pack_sdes_cname(0x01020304, "ab", packet);
+  // header (4) + SSRC (4) + type, length, "ab" (4) + null padding to a word (4)
+  EXPECT_EQ(packet, (Bytes{0x81, 202, 0, 3, 1, 2, 3, 4, 1, 2, 'a', 'b', 0, 0, 0, 0}));
+  for (const std::size_t len : {0u, 1u, 5u, 6u, 255u, 300u}) {
+    Bytes p;
+    pack_sdes_cname(7, std::string(len, 'x'), p);
+    EXPECT_EQ(p.size() % 4, 0u) << len;
+    EXPECT_EQ(p.size(), 4u * (((p[2] << 8) | p[3]) + 1u)) << len;  // the length field is right
+    EXPECT_EQ(p.back(), 0) << len;                                  // the item list ends with a null
+  }
+}
+
 TEST(L16, NetworkByteOrderRoundTrip) {
   const std::vector<std::int16_t> samples{0, 1, -1, 32767, -32768, 0x1234};
   Bytes payload;

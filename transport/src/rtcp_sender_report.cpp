@@ -40,6 +40,20 @@ void pack_sender_report(const SenderReport& sr, std::vector<std::uint8_t>& out) 
   append_be32(out, sr.octet_count);
 }
 
+void pack_sdes_cname(std::uint32_t ssrc, std::string_view cname, std::vector<std::uint8_t>& out) {
+  if (cname.size() > 255) cname = cname.substr(0, 255);
+  // Chunk: SSRC (4) + CNAME item (type, length, text) + at least one null, to a 4-byte boundary.
+  const std::size_t chunk = (4 + 2 + cname.size() + 1 + 3) / 4 * 4;
+  out.push_back(0x81);  // V=2, P=0, SC=1
+  out.push_back(kRtcpSdesType);
+  append_be16(out, static_cast<std::uint16_t>(chunk / 4));  // (4 + chunk) / 4 - 1
+  append_be32(out, ssrc);
+  out.push_back(1);  // CNAME
+  out.push_back(static_cast<std::uint8_t>(cname.size()));
+  out.insert(out.end(), cname.begin(), cname.end());
+  out.insert(out.end(), chunk - 6 - cname.size(), std::uint8_t{0});
+}
+
 std::error_code parse_sender_report(std::span<const std::uint8_t> d, SenderReport& out) {
   if (d.size() < kSenderReportBytes) return RtpErrc::kBadRtcp;
   if ((d[0] >> 6) != 2 || d[1] != kRtcpSenderReportType) return RtpErrc::kBadRtcp;

@@ -18,6 +18,12 @@ std::uint32_t rtp_timestamp(const RtpStreamIds& ids, std::int64_t sample) {
 }
 }  // namespace
 
+std::string default_cname() {
+  boost::system::error_code ec;
+  const std::string host = asio::ip::host_name(ec);
+  return "fapcast@" + (ec || host.empty() ? std::string("localhost") : host);
+}
+
 RtpStreamIds RtpStreamIds::random() {
   std::random_device rd;
   RtpStreamIds ids;
@@ -95,6 +101,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Wav
     pack_sender_report({options_.animation_ids.ssrc, ntp, rtp_timestamp(options_.animation_ids, s),
                         report.animation.packets, report.animation.payload_octets},
                        packet);
+    pack_sdes_cname(options_.animation_ids.ssrc, options_.cname, packet);
     animation_rtcp_.send(packet, ec);
     if (!ec) ++report.animation.sender_reports;
     if (audio && !ec) {
@@ -102,6 +109,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Wav
       pack_sender_report({options_.audio_ids.ssrc, ntp, rtp_timestamp(options_.audio_ids, s),
                           report.audio.packets, report.audio.payload_octets},
                          packet);
+      pack_sdes_cname(options_.audio_ids.ssrc, options_.cname, packet);
       audio_rtcp_->send(packet, ec);
       if (!ec) ++report.audio.sender_reports;
     }

@@ -12,6 +12,7 @@
 #endif
 
 #include <boost/asio/buffer.hpp>
+#include <boost/asio/ip/host_name.hpp>
 #include <boost/asio/io_context.hpp>
 #include <boost/asio/ip/multicast.hpp>
 #include <boost/asio/ip/udp.hpp>

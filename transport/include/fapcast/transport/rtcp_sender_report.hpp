@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <span>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -35,6 +36,13 @@ struct SenderReport {
 
 // Appends a sender report with no report blocks (28 bytes) to `out`.
 void pack_sender_report(const SenderReport& sr, std::vector<std::uint8_t>& out);
+
+inline constexpr std::uint8_t kRtcpSdesType = 202;
+
+// Appends an SDES packet with one chunk: `ssrc` and its CNAME item (RFC 3550 6.5.1), padded
+// with nulls to a 32-bit boundary. `cname` is cut to 255 bytes. A sender report followed by this
+// is the smallest valid compound RTCP packet (6.1); equal CNAMEs tie a sender's streams together.
+void pack_sdes_cname(std::uint32_t ssrc, std::string_view cname, std::vector<std::uint8_t>& out);
 
 // Parses the first RTCP packet of a compound datagram if it is a sender report (report blocks
 // and anything after are skipped). Errors: RtpErrc::kBadRtcp.

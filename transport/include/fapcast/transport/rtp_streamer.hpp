@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <string>
 #include <system_error>
 #include <vector>
 
@@ -29,6 +30,9 @@ struct RtpStreamIds {
   static RtpStreamIds random();
 };
 
+// "fapcast@HOSTNAME": the canonical name both streams of one sender report.
+std::string default_cname();
+
 struct StreamOptions {
   bool pace = true;                          // real time; false: as fast as the socket takes it
   std::int64_t clock_rate = 48'000;          // RTP clock of both streams (the audio rate)
@@ -37,6 +41,7 @@ struct StreamOptions {
   RtpStreamIds animation_ids = RtpStreamIds::random();
   RtpStreamIds audio_ids = RtpStreamIds::random();
   std::chrono::milliseconds rtcp_interval{1000};  // between sender reports (0: none)
+  std::string cname = default_cname();       // SDES CNAME of both streams (ties them together)
   SenderSocketOptions socket;
 };
 

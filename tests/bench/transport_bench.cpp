@@ -137,6 +137,17 @@ void BM_Send(benchmark::State& state) {
     tx.send_to(asio::buffer(packet), to, 0, ec);
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(i));
+  if constexpr (kRtp) {  // the access-unit sizes this run carried
+    std::size_t lo = SIZE_MAX, hi = 0, sum = 0;
+    for (const auto& u : sample_units()) {
+      lo = std::min(lo, u.bytes.size());
+      hi = std::max(hi, u.bytes.size());
+      sum += u.bytes.size();
+    }
+    state.counters["au_bytes_min"] = static_cast<double>(lo);
+    state.counters["au_bytes_max"] = static_cast<double>(hi);
+    state.counters["au_bytes_mean"] = static_cast<double>(sum) / static_cast<double>(sample_units().size());
+  }
 }
 BENCHMARK_TEMPLATE(BM_Send, false)->Name("Send/raw_udp");
 BENCHMARK_TEMPLATE(BM_Send, true)->Name("Send/rtp");

@@ -95,10 +95,11 @@ TEST_P(FbaOverLossyRtp, DecodedFramesAreExactAndGapsHold) {
     if (decoded.contains(i)) last = i;
   ASSERT_EQ(got.frames.size(), last + 1) << "reproduce: FAPCAST_SEED=" << seed;
   for (std::size_t i = 0; i < got.frames.size(); ++i) {
-    if (decoded.contains(i))
+    if (decoded.contains(i)) {
       EXPECT_EQ(got.frames[i], seq.frames[i]) << "frame " << i;
-    else
+    } else {
       EXPECT_EQ(got.frames[i], got.frames[i - 1]) << "held frame " << i;
+    }
   }
   EXPECT_EQ(track.stats().held_frames, got.frames.size() - decoded.size());
   EXPECT_EQ(track.stats().decode_errors, 0u);

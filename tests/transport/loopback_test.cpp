@@ -103,7 +103,9 @@ TEST_P(LossyLoopback, RecoversAtTheNextIntraUnitAndCountsTheLoss) {
     const int i = index_of(static_cast<std::uint16_t>(u.extended_sequence));
     delivered.push_back(i);
     EXPECT_EQ(u.bytes, units[static_cast<std::size_t>(i)].bytes) << i;
-    if (u.after_loss) EXPECT_TRUE(u.intra) << "resumed at a predicted unit " << i;
+    if (u.after_loss) {
+      EXPECT_TRUE(u.intra) << "resumed at a predicted unit " << i;
+    }
   }
   const ReceiverStats& s = rx.stream.stats();
   EXPECT_EQ(delivered, expected) << s << "\n  reproduce: FAPCAST_SEED=" << seed;

@@ -100,7 +100,9 @@ TEST_P(UdpUrlParse, SplitsHostAndPort) {
   UdpUrl url;
   const auto ec = parse_udp_url(GetParam().text, url);
   EXPECT_EQ(!ec, GetParam().ok) << GetParam().text;
-  if (GetParam().ok) EXPECT_EQ(url, GetParam().url);
+  if (GetParam().ok) {
+    EXPECT_EQ(url, GetParam().url);
+  }
 }
 INSTANTIATE_TEST_SUITE_P(Table, UdpUrlParse,
                          testing::Values(UrlCase{"udp://127.0.0.1:5004", true, {"127.0.0.1", 5004}},

@@ -6,11 +6,15 @@
 #include "fapcast/codec/fap_stats.hpp"
 #include "fapcast/codec/fap_table.hpp"
 #include "fapcast/codec/fap_text.hpp"
+#include "fapcast/codec/fba_file.hpp"
 #include "fapcast/transport/file_io.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <filesystem>
+#include <span>
+#include <stdexcept>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -92,10 +96,33 @@ nlohmann::json to_json(const std::string& path, const std::string& name, const S
           {"warnings", warnings}};
 }
 
+// A binary FBA stream (spec/fba.md) read as a text file would be: frames plus a summary.
+codec::FapTextRead read_fba_file(const std::string& path, const std::string& bytes, SourceSummary& src) {
+  codec::FbaDecodeResult d = codec::decode_fba(
+      std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
+  codec::FapTextRead r;
+  r.sequence = std::move(d.sequence);
+  r.sequence.name = std::filesystem::path(path).stem().string();  // .fba carries no name
+  for (const auto& e : d.report.errors) r.info.warnings.push_back(path + ": " + e.message());
+  for (const auto& w : r.info.warnings) std::cerr << "fapcast: warning: " << w << "\n";
+  if (d.report.frames_decoded == 0 && !d.report.ok()) throw std::runtime_error(path + ": no frame could be decoded");
+  src = {"fba", "predictive", std::to_string(d.report.frames_lost) + " frames lost, " +
+                                  std::to_string(d.report.bytes) + " bytes",
+         d.report.frames_decoded + d.report.frames_lost + d.report.frames_skipped};
+  return r;
+}
+
 void info(const std::string& path, bool json) {
-  const codec::FapTextRead r = read_fap_file(path);
-  const SourceSummary src{"fap-text", r.info.version, r.info.describe(),
-                          r.info.header_frame_count};
+  const std::string bytes = transport::read_file(path);
+  SourceSummary src;
+  codec::FapTextRead r;
+  if (bytes.starts_with(std::string_view("\0\0\1\xBA", 4))) {
+    r = read_fba_file(path, bytes, src);
+  } else {
+    r = codec::read_fap_text(bytes, path);
+    for (const auto& w : r.info.warnings) std::cerr << "fapcast: warning: " << w << "\n";
+    src = {"fap-text", r.info.version, r.info.describe(), r.info.header_frame_count};
+  }
   const codec::FapStats stats = codec::fap_stats(r.sequence);
   if (json)
     // Names from old Windows files may not be UTF-8; the reader has already repaired them.
@@ -123,10 +150,10 @@ const tools::Registration reg{"40-fap", [](CLI::App& app) {
   fap->require_subcommand(1);
 
   auto* info_cmd = fap->add_subcommand(
-      "info", "Version, dialect, fps, frames, duration, masked FAPs with min/max");
+      "info", "Version, dialect, fps, frames, duration, masked FAPs with min/max (.fap or .fba)");
   auto info_path = std::make_shared<std::string>();
   auto as_json = std::make_shared<bool>(false);
-  info_cmd->add_option("FILE", *info_path, ".fap file")->required();
+  info_cmd->add_option("FILE", *info_path, ".fap or .fba file")->required();
   info_cmd->add_flag("--json", *as_json, "Machine-readable output");
   info_cmd->callback([=] { info(*info_path, *as_json); });
 

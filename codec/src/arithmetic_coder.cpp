@@ -2,6 +2,7 @@
 
 #include "fapcast/codec/fba_errc.hpp"
 
+#include <algorithm>
 #include <cassert>
 
 namespace fapcast::codec {
@@ -15,6 +16,13 @@ void FrequencyModel::reset(int size) {
   assert(size >= 1 && size <= kMaxSymbols);
   cumulative_.resize(static_cast<std::size_t>(size) + 1);
   for (int i = 0; i <= size; ++i) cumulative_[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(size - i);
+}
+
+int FrequencyModel::find(std::uint32_t target) const {
+  // The table descends: the first entry after the total that is <= target ends the symbol.
+  const auto it = std::partition_point(cumulative_.begin() + 1, cumulative_.end() - 1,
+                                       [target](std::uint16_t c) { return c > target; });
+  return static_cast<int>(it - cumulative_.begin());
 }
 
 void FrequencyModel::update(int s) {
@@ -76,9 +84,7 @@ int ArithmeticDecoder::decode(FrequencyModel& model) {
   const std::uint32_t length = high_ - low_ + 1;
   const std::uint32_t total = model.cumulative(0);
   const std::uint32_t cum = ((value_ - low_ + 1) * total - 1) / length;
-  int i = 1;
-  const int size = model.size();
-  while (i < size && model.cumulative(i) > cum) ++i;
+  const int i = model.find(cum);
   high_ = low_ - 1 + length * model.cumulative(i - 1) / total;
   low_ += length * model.cumulative(i) / total;
   for (;;) {

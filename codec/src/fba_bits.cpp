@@ -38,36 +38,12 @@ void FbaBitWriter::align() {
   pos_.zero_run = 0;
 }
 
-int FbaBitReader::raw_bit(bool allow_past_end) {
-  const std::uint64_t at = pos_.raw_bits++;
-  if (at >= 8 * bytes_.size()) {
-    if (!allow_past_end) fail(fba_errc::truncated);
-    return 0;
-  }
-  return (bytes_[at / 8] >> (7 - at % 8)) & 1;
-}
+void FbaBitReader::fail_truncated() { fail(fba_errc::truncated); }
 
-int FbaBitReader::payload_bit(bool allow_past_end) {
-  history_[payload_bits_++ % history_.size()] = pos_;
-  const int bit = raw_bit(allow_past_end);
-  if (bit) {
-    pos_.zero_run = 0;
-  } else if (++pos_.zero_run == kStuffAfterZeros) {
-    pos_.zero_run = 0;
-    const bool inside = pos_.raw_bits < 8 * bytes_.size();
-    if (raw_bit(allow_past_end) != 1 && inside) fail(fba_errc::stuffing_bit_missing);
-  }
-  return bit;
-}
-
-int FbaBitReader::get_bit() {
-  const int bit = payload_bit(false);
-  return error_ ? 0 : bit;
-}
-
-int FbaBitReader::lookahead_bit() {
-  const int bit = payload_bit(true);
-  return error_ ? 0 : bit;
+void FbaBitReader::check_stuffed_bit(bool allow_past_end) {
+  pos_.zero_run = 0;
+  const bool inside = pos_.raw_bits < 8 * bytes_.size();
+  if (raw_bit(allow_past_end) != 1 && inside) fail(fba_errc::stuffing_bit_missing);
 }
 
 std::uint32_t FbaBitReader::get(int count) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace fapcast::codec {
@@ -129,7 +130,9 @@ TEST(FbaFile, RandomRoundTrips) {
       if (f.mask.test(1)) f.viseme = {static_cast<std::uint8_t>(rng() % 15), static_cast<std::uint8_t>(rng() % 15), static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0};
       if (f.mask.test(2)) f.expression = {static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64), static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0, rng() % 2 == 0};
       if (rng() % 50 == 0) f.mask.set(3 + static_cast<int>(rng() % 66), false);  // a mask change
-      for (int n = 3; n <= kFapCount; ++n) if (!f.mask.test(n)) f.values[static_cast<std::size_t>(n - 1)] = 0;
+      for (int n = 3; n <= kFapCount; ++n) {
+        if (!f.mask.test(n)) f.values[static_cast<std::size_t>(n - 1)] = 0;
+      }
     }
     const FapSequence seq = sequence_of(frames, rng() % 2 ? FrameRate{25, 1} : FrameRate{30000, 1001});
     const auto result = round_trip(seq, {q, 1 + static_cast<int>(rng() % 30)});
@@ -140,8 +143,12 @@ TEST(FbaFile, RandomRoundTrips) {
       const FapFrame& in = seq.frames[k];
       const FapFrame& out = result.sequence.frames[k];
       ASSERT_EQ(out.mask, in.mask) << "frame " << k;
-      if (in.mask.test(1)) ASSERT_EQ(out.viseme, in.viseme);
-      if (in.mask.test(2)) ASSERT_EQ(out.expression, in.expression);
+      if (in.mask.test(1)) {
+        ASSERT_EQ(out.viseme, in.viseme);
+      }
+      if (in.mask.test(2)) {
+        ASSERT_EQ(out.expression, in.expression);
+      }
       for (int n = 3; n <= kFapCount; ++n) {
         ASSERT_LE(2 * std::abs(std::int64_t{out.value(n)} - in.value(n)), fba_step(n, q)) << "frame " << k << " FAP " << n;
       }
@@ -204,6 +211,41 @@ TEST(FbaFile, StuffingPreventsStartCodeEmulation) {
   ASSERT_TRUE(result.report.ok()) << result.report.errors.front().message();
   EXPECT_EQ(result.sequence, seq);
 }
+
+// Which planes of a file are intra (is_intra is the first bit after each plane start code).
+std::vector<std::size_t> intra_planes(const std::vector<std::uint8_t>& b) {
+  std::vector<std::size_t> out;
+  std::size_t plane = 0;
+  for (std::size_t i = 0; i + 4 < b.size(); ++i) {
+    if (b[i] == 0 && b[i + 1] == 0 && b[i + 2] == 1 && b[i + 3] == 0xBB) {
+      if (b[i + 4] & 0x80) out.push_back(plane);
+      ++plane;
+    }
+  }
+  return out;
+}
+
+class FbaIntraPeriod : public ::testing::TestWithParam<int> {};
+
+// The file encoder puts an intra plane every intra_period frames, and at every mask change.
+TEST_P(FbaIntraPeriod, HonouredAndMaskChangesForceIntra) {
+  const int period = GetParam();
+  std::mt19937_64 rng(fba_seed());
+  auto frames = test::smooth_track(rng, lip_jaw_tongue_mask(), 100, 200);
+  const auto plain = encode_fba(sequence_of(frames), {1, period});
+  std::vector<std::size_t> expected;
+  for (std::size_t k = 0; k < 100; k += static_cast<std::size_t>(period)) expected.push_back(k);
+  EXPECT_EQ(intra_planes(plain), expected);
+  // Drop FAP 3 from frame 37 on: frame 37 must be intra, and the period restarts there.
+  for (std::size_t k = 37; k < 100; ++k) frames[k].mask.set(3, false), frames[k].values[2] = 0;
+  const auto changed = encode_fba(sequence_of(frames), {1, period});
+  const auto planes = intra_planes(changed);
+  EXPECT_NE(std::find(planes.begin(), planes.end(), 37u), planes.end());
+  for (std::size_t i = 1; i < planes.size(); ++i) EXPECT_LE(planes[i] - planes[i - 1], static_cast<std::size_t>(period));
+  EXPECT_EQ(decode_fba(changed).sequence.frames[50].mask, frames[50].mask);
+}
+
+INSTANTIATE_TEST_SUITE_P(Periods, FbaIntraPeriod, ::testing::Values(1, 7, 25, 1000));
 
 TEST(FbaFile, EmptySequenceIsObjectAndEndCodes) {
   const auto bytes = encode_fba(sequence_of({}), {});

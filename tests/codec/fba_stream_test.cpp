@@ -13,12 +13,6 @@ namespace {
 using test::fba_seed;
 using test::reproduce;
 
-FapMask mask_of(std::initializer_list<int> faps) {
-  FapMask m;
-  for (int n : faps) m.set(n);
-  return m;
-}
-
 // Encoder and decoder agree on the bit count and the whole coder state after every frame.
 TEST(FbaStream, EncoderAndDecoderAgreeOnBitsAndStateAfterEveryFrame) {
   const std::uint64_t seed = fba_seed();

@@ -25,6 +25,9 @@ class FrequencyModel {
   void update(int s);
   // cumulative(i): the total count of symbols i..size-1; cumulative(0) is the total.
   std::uint32_t cumulative(int i) const { return cumulative_[static_cast<std::size_t>(i)]; }
+  // The decoder's search: the index i (1..size) with cumulative(i) <= target < cumulative(i-1),
+  // i.e. symbol i-1. Precondition: target < cumulative(0).
+  int find(std::uint32_t target) const;
   bool operator==(const FrequencyModel&) const = default;
 
  private:

@@ -52,7 +52,10 @@ class FbaBitReader {
   // truncated; a missing stuffed bit sets stuffing_bit_missing. Errors are sticky: once set,
   // every later read returns 0.
   std::uint32_t get(int count);
-  int get_bit();
+  int get_bit() {
+    const int bit = payload_bit(false);
+    return error_ ? 0 : bit;
+  }
   // Reads a marker bit; a 0 sets marker_bit_missing.
   void marker();
   // Gives back the last `count` payload bits (count 0..16): ends an arithmetic segment at the
@@ -62,7 +65,10 @@ class FbaBitReader {
   void expect_end();
   // The same bits as get(), but past the end of the data reads zeros without an error: the
   // arithmetic decoder's 16-bit look-ahead may run past the last plane of a unit.
-  int lookahead_bit();
+  int lookahead_bit() {
+    const int bit = payload_bit(true);
+    return error_ ? 0 : bit;
+  }
 
   const FbaBitPosition& position() const { return pos_; }
   std::error_code error() const { return error_; }
@@ -76,8 +82,27 @@ class FbaBitReader {
   bool past_end() const { return pos_.raw_bits > 8 * bytes_.size(); }
 
  private:
-  int raw_bit(bool allow_past_end);
-  int payload_bit(bool allow_past_end);
+  // Inline: the decoder's hot path is one call per bit.
+  int raw_bit(bool allow_past_end) {
+    const std::uint64_t at = pos_.raw_bits++;
+    if (at >= 8 * bytes_.size()) {
+      if (!allow_past_end) fail_truncated();
+      return 0;
+    }
+    return (bytes_[at / 8] >> (7 - at % 8)) & 1;
+  }
+  int payload_bit(bool allow_past_end) {
+    history_[payload_bits_++ % history_.size()] = pos_;
+    const int bit = raw_bit(allow_past_end);
+    if (bit) {
+      pos_.zero_run = 0;
+    } else if (++pos_.zero_run == kStuffAfterZeros) {
+      check_stuffed_bit(allow_past_end);
+    }
+    return bit;
+  }
+  void fail_truncated();
+  void check_stuffed_bit(bool allow_past_end);
   std::span<const std::uint8_t> bytes_;
   FbaBitPosition pos_;
   std::error_code error_;

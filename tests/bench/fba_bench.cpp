@@ -1,0 +1,210 @@
+// FBA stream: bitrate of the lip, jaw and tongue FAPs (groups 2, 6, 8) at fap_quant 1, 2, 4, 8
+// against gzip -9 and xz -9 of the .fap text holding the same quantised values, on the Xface
+// samples and on SYNTHETIC lip/jaw tracks (sums of low-frequency sinusoids and a low-passed random
+// walk, not motion capture); and encode/decode speed against reading the same frames as .fap text.
+// Run: build/dev/tests/fba_bench   (counters: kbit/s at 25 fps, and ratios)
+#include "fapcast/codec/fap_text.hpp"
+#include "fapcast/codec/fba_file.hpp"
+#include "fapcast/codec/fba_stream.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace {
+using namespace fapcast::codec;
+namespace fs = std::filesystem;
+
+constexpr double kFps = 25.0;
+
+FapMask lip_jaw_tongue() {
+  FapMask m;
+  for (int g : {2, 6, 8})
+    for (int n = fap_group(g).first; n <= fap_group(g).last; ++n) m.set(n);
+  return m;
+}
+
+// Keeps only groups 2, 6 and 8 of a sequence, at 25 fps.
+FapSequence restrict_to_lips(FapSequence seq) {
+  const FapMask keep = lip_jaw_tongue();
+  for (FapFrame& f : seq.frames) {
+    FapFrame g;
+    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n)
+      if (keep.test(n)) g.set(n, f.mask.test(n) ? f.value(n) : 0);
+    f = g;
+  }
+  seq.rate = {25, 1};
+  return seq;
+}
+
+// SYNTHETIC speech-like lip/jaw/tongue motion: a 4-5 Hz syllable rhythm with pauses, each FAP a
+// sum of low-frequency sinusoids plus a low-passed random walk, rounded to whole FAPU.
+FapSequence synthetic_track(double seconds, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> phase(0, 2 * std::numbers::pi), unit(0, 1);
+  std::normal_distribution<double> noise(0, 1);
+  const FapMask mask = lip_jaw_tongue();
+  FapSequence seq{"synthetic", {25, 1}, {}};
+  const auto frames = static_cast<std::size_t>(seconds * kFps);
+  std::map<int, std::array<double, 6>> p;  // amplitude, f1, f2, phases, walk
+  for (int n = kFirstLowLevelFap; n <= kFapCount; ++n)
+    if (mask.test(n)) p[n] = {n == 3 ? 260.0 : 40 + 80 * unit(rng), 3.8 + unit(rng), 0.3 + 0.5 * unit(rng), phase(rng), phase(rng), 0};
+  double envelope = 1, walk_state = 0;
+  for (std::size_t k = 0; k < frames; ++k) {
+    const double t = static_cast<double>(k) / kFps;
+    // Phrases of ~2-4 s separated by short pauses, with a smooth attack and release.
+    const double phrase = std::sin(2 * std::numbers::pi * 0.3 * t) + 0.6;
+    envelope += 0.15 * ((phrase > 0 ? 1.0 : 0.1) - envelope);
+    walk_state = 0.9 * walk_state + noise(rng);
+    FapFrame f;
+    for (auto& [n, q] : p) {
+      q[5] = 0.95 * q[5] + 0.8 * noise(rng);  // per-FAP low-passed random walk
+      const double v = q[0] * envelope * (0.5 + 0.5 * std::sin(2 * std::numbers::pi * q[1] * t + q[3])) +
+                       0.3 * q[0] * std::sin(2 * std::numbers::pi * q[2] * t + q[4]) + 3 * q[5] + 2 * walk_state;
+      f.set(n, static_cast<std::int32_t>(std::lround(v)));
+    }
+    seq.frames.push_back(f);
+  }
+  return seq;
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Bytes `command` (gzip -9 / xz -9) makes of `text`, run as a subprocess on a temporary file.
+std::size_t compressed_size(const std::string& text, const std::string& command) {
+  const fs::path tmp = fs::temp_directory_path() / ("fba_bench_" + std::to_string(::getpid()) + ".fap");
+  std::ofstream(tmp, std::ios::binary) << text;
+  const std::string cmd = command + " -c '" + tmp.string() + "' | wc -c";
+  FILE* pipe = ::popen(cmd.c_str(), "r");
+  if (!pipe) throw std::runtime_error("cannot run " + command);
+  unsigned long long bytes = 0;
+  if (std::fscanf(pipe, "%llu", &bytes) != 1) bytes = 0;
+  ::pclose(pipe);
+  fs::remove(tmp);
+  return static_cast<std::size_t>(bytes);
+}
+
+struct Source {
+  std::string name;
+  FapSequence seq;
+};
+
+std::vector<Source> sources() {
+  std::vector<Source> out;
+  for (const char* s : {"anger", "beg", "disgust", "fear", "happy-for", "hate", "joy", "pride"}) {
+    const fs::path p = fs::path(FAPCAST_TEST_DATA) / "xface" / (std::string(s) + ".fap");
+    out.push_back({std::string("xface/") + s, restrict_to_lips(read_fap_text(read_text(p), p.string()).sequence)});
+  }
+  out.push_back({"SYNTHETIC-60s", synthetic_track(60, 1)});
+  out.push_back({"SYNTHETIC-300s", synthetic_track(300, 2)});
+  return out;
+}
+
+const std::vector<Source>& all_sources() {
+  static const std::vector<Source> s = sources();
+  return s;
+}
+
+// What the same planes would take bit-packed as in the notes' codec (a start code and alignment
+// only before intra planes): each plane's bit count from the frame decoder, minus the P planes'
+// start codes and alignment. A measured estimate of the layout fapcast did not choose.
+std::size_t packed_bytes(const std::vector<std::uint8_t>& fba) {
+  std::vector<std::size_t> starts;
+  for (std::size_t i = 0; i + 3 < fba.size(); ++i)
+    if (fba[i] == 0 && fba[i + 1] == 0 && fba[i + 2] == 1 && fba[i + 3] == 0xBB) starts.push_back(i);
+  FbaFrameDecoder decoder;
+  std::uint64_t bits = 64;  // object start code and end code
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const std::size_t end = k + 1 < starts.size() ? starts[k + 1] : fba.size() - 4;
+    FapFrame frame;
+    if (decoder.decode(std::span(fba).subspan(starts[k], end - starts[k]), frame)) throw std::runtime_error("bench: bad plane");
+    const bool intra = (fba[starts[k] + 4] & 0x80) != 0;
+    bits += intra ? 8 * (end - starts[k]) : decoder.last_bits() - 32;
+  }
+  return static_cast<std::size_t>((bits + 7) / 8);
+}
+
+double kbps(std::size_t bytes, std::size_t frames) { return 8.0 * static_cast<double>(bytes) / (static_cast<double>(frames) / kFps) / 1000.0; }
+
+// One row of the table: bitrates of FBA (intra period 25 and 250), gzip -9 and xz -9.
+void BM_Bitrate(benchmark::State& state) {
+  const Source& src = all_sources()[static_cast<std::size_t>(state.range(0))];
+  const int q = static_cast<int>(state.range(1));
+  state.SetLabel(src.name + " q" + std::to_string(q));
+  std::vector<std::uint8_t> fba;
+  for (auto _ : state) {
+    fba = encode_fba(src.seq, {q, 25});
+    benchmark::DoNotOptimize(fba.data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * src.seq.frames.size()));  // encode frames/s
+  const std::size_t fba_long = encode_fba(src.seq, {q, 250}).size();
+  FapSequence quantised = decode_fba(fba).sequence;  // the same quantised values, as text
+  quantised.name = "synthetic";
+  const std::string text = write_fap_text(quantised);
+  const std::size_t gz = compressed_size(text, "gzip -9"), xz = compressed_size(text, "xz -9");
+  const std::size_t n = src.seq.frames.size();
+  state.counters["fba_kbps"] = kbps(fba.size(), n);
+  state.counters["fba_i250_kbps"] = kbps(fba_long, n);
+  state.counters["packed_kbps"] = kbps(packed_bytes(fba), n);
+  state.counters["gzip_kbps"] = kbps(gz, n);
+  state.counters["xz_kbps"] = kbps(xz, n);
+  state.counters["xz_over_fba"] = static_cast<double>(xz) / static_cast<double>(fba.size());
+  state.counters["xz_over_fba_i250"] = static_cast<double>(xz) / static_cast<double>(fba_long);
+}
+
+void bitrate_args(benchmark::internal::Benchmark* b) {
+  for (int s = 0; s < 10; ++s)
+    for (int q : {1, 2, 4, 8}) b->Args({s, q});
+}
+BENCHMARK(BM_Bitrate)->Apply(bitrate_args)->Unit(benchmark::kMillisecond);
+
+// Decoding speed on the 300 s synthetic track, frames/s; and the alternative: parsing .fap text.
+void BM_DecodeFba(benchmark::State& state) {
+  const FapSequence& seq = all_sources()[9].seq;
+  const auto fba = encode_fba(seq, {static_cast<int>(state.range(0)), 25});
+  for (auto _ : state) {
+    auto r = decode_fba(fba);
+    benchmark::DoNotOptimize(r.sequence.frames.data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * seq.frames.size()));
+}
+BENCHMARK(BM_DecodeFba)->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond);
+
+void BM_EncodeFba(benchmark::State& state) {
+  const FapSequence& seq = all_sources()[9].seq;
+  for (auto _ : state) {
+    auto b = encode_fba(seq, {static_cast<int>(state.range(0)), 25});
+    benchmark::DoNotOptimize(b.data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * seq.frames.size()));
+}
+BENCHMARK(BM_EncodeFba)->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond);
+
+void BM_ReadFapText(benchmark::State& state) {
+  const FapSequence& seq = all_sources()[9].seq;
+  const std::string text = write_fap_text(seq);
+  for (auto _ : state) {
+    auto r = read_fap_text(text, "synthetic.fap");
+    benchmark::DoNotOptimize(r.sequence.frames.data());
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * seq.frames.size()));
+}
+BENCHMARK(BM_ReadFapText)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,79 @@
+// `fapcast encode IN.fap -o OUT.fba [--quant q] [--iperiod n]` and
+// `fapcast decode IN.fba -o OUT.fap`: the binary MPEG-4 FBA stream (spec/fba.md).
+// Argument parsing only; coding is codec::encode_fba / codec::decode_fba.
+#include "command.hpp"
+
+#include "fapcast/codec/fap_text.hpp"
+#include "fapcast/codec/fba_file.hpp"
+#include "fapcast/transport/file_io.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
+
+namespace {
+using namespace fapcast;
+
+struct EncodeArgs {
+  std::string in, out;
+  int quant = codec::FbaEncoderOptions{}.fap_quant;
+  int iperiod = codec::FbaEncoderOptions{}.intra_period;
+};
+
+struct DecodeArgs {
+  std::string in, out;
+};
+
+void encode(const EncodeArgs& a) {
+  const codec::FapTextRead r = codec::read_fap_text(transport::read_file(a.in), a.in);
+  for (const auto& w : r.info.warnings) std::cerr << "fapcast: warning: " << w << "\n";
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes = codec::encode_fba(r.sequence, {a.quant, a.iperiod});
+  } catch (const codec::FbaEncodeError& e) {
+    throw std::runtime_error(a.in + ": " + e.what());
+  }
+  transport::write_file_atomically(a.out, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+  std::cerr << "fapcast: " << a.out << ": " << r.sequence.frames.size() << " frames, " << bytes.size()
+            << " bytes\n";
+}
+
+void decode(const DecodeArgs& a) {
+  const std::string bytes = transport::read_file(a.in);
+  codec::FbaDecodeResult result = codec::decode_fba(
+      std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
+  const auto& report = result.report;
+  for (const auto& e : report.errors) std::cerr << "fapcast: " << a.in << ": " << e.message() << "\n";
+  if (report.frames_decoded == 0 && !report.ok())
+    throw std::runtime_error(a.in + ": no frame could be decoded");
+  if (!report.ok())
+    std::cerr << "fapcast: " << a.in << ": " << report.frames_lost << " frames lost (held), "
+              << report.errors_total << " errors\n";
+  // .fba carries no name; the .fap header takes the file's stem.
+  result.sequence.name = std::filesystem::path(a.out).stem().string();
+  transport::write_file_atomically(a.out, codec::write_fap_text(result.sequence));
+  if (!report.ok()) throw std::runtime_error(a.in + ": decoded with losses; " + a.out + " holds what survived");
+}
+
+const tools::Registration reg{"45-fba", [](CLI::App& app) {
+  auto enc = std::make_shared<EncodeArgs>();
+  auto* e = app.add_subcommand("encode", "Encode a .fap track as a binary MPEG-4 FBA stream (.fba)");
+  e->add_option("input", enc->in, "input .fap file")->required();
+  e->add_option("-o,--output", enc->out, "output .fba file")->required();
+  e->add_option("--quant", enc->quant, "fap_quant 0 (lossless) .. 31; step = QP x quant")
+      ->check(CLI::Range(0, 31))->capture_default_str();
+  e->add_option("--iperiod", enc->iperiod, "an intra frame at least every this many frames")
+      ->check(CLI::Range(1, 1 << 20))->capture_default_str();
+  e->callback([enc] { encode(*enc); });
+
+  auto dec = std::make_shared<DecodeArgs>();
+  auto* d = app.add_subcommand("decode", "Decode a binary MPEG-4 FBA stream (.fba) to a .fap track");
+  d->add_option("input", dec->in, "input .fba file")->required();
+  d->add_option("-o,--output", dec->out, "output .fap file")->required();
+  d->callback([dec] { decode(*dec); });
+}};
+
+}  // namespace

@@ -125,8 +125,10 @@ void info(const std::string& path, bool json) {
   }
   const codec::FapStats stats = codec::fap_stats(r.sequence);
   if (json)
-    // Names from old Windows files may not be UTF-8; the reader has already repaired them.
-    std::cout << to_json(path, r.sequence.name, src, stats, r.info.warnings).dump(2) << "\n";
+    // The reader repairs names that are not UTF-8; a path may still not be: replace, not throw.
+    std::cout << to_json(path, r.sequence.name, src, stats, r.info.warnings)
+                     .dump(2, ' ', false, nlohmann::json::error_handler_t::replace)
+              << "\n";
   else
     print_text(std::cout, path, r.sequence.name, src, stats);
 }

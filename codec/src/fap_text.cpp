@@ -25,6 +25,8 @@ constexpr std::size_t kMaxLineTokens = 1 + kVisemeFieldsStrict + kExpressionFiel
 constexpr std::uint32_t kMaxFpsMillis = 1'000'000;  // fps <= 1000
 constexpr int kMaxFpsDigits = 6;                    // fractional digits of the fps token
 constexpr std::uint8_t kFullWeight = 63;            // viseme_blend / expression_intensity maximum
+constexpr int kLastViseme = 14;                     // visemes 0 (none) .. 14 (U, book)
+constexpr int kLastExpression = 6;                  // expressions 0 (none) .. 6 (surprise)
 // NTSC-family rates written as decimals: N x 1000/1001 (29.97 is 30000/1001).
 constexpr std::array<std::uint32_t, 6> kNtscBases{24, 30, 48, 60, 120, 240};
 
@@ -193,6 +195,10 @@ std::optional<Reader::Line> Reader::next_line() {
     }
     for (std::size_t i = 0; i < text.size(); ++i) {
       const auto c = static_cast<unsigned char>(text[i]);
+      if (c == '\r')
+        fail(line_number_, "bare-cr",
+             "a CR not followed by LF at column " + std::to_string(i + 1) +
+                 " (lines end with LF or CRLF)");
       if ((c < 0x20 && c != '\t') || c == 0x7F)
         fail(line_number_, "binary-byte",
              "byte " + quote(text.substr(i, 1)) + " at column " + std::to_string(i + 1) +
@@ -284,10 +290,11 @@ FrameRate Reader::read_fps(std::string_view token, std::uint64_t line) {
   if (!d || d->fraction.size() > kMaxFpsDigits)
     fail(line, "header-fps",
          "fps " + quote(token) + " is not a number with at most 6 decimal places");
-  if (d->whole.size() > 7) fail(line, "fps-range", "fps " + quote(token) + " is not in (0, 1000]");
   std::uint64_t scale = 1;
   for (std::size_t i = 0; i < d->fraction.size(); ++i) scale *= 10;
-  const std::uint64_t raw = *parse_digits(d->whole) * scale + *parse_digits(d->fraction);
+  // At most 7 whole digits keeps raw * 1000 far inside uint64.
+  const std::uint64_t raw =
+      d->whole.size() > 7 ? 0 : *parse_digits(d->whole) * scale + *parse_digits(d->fraction);
   if (d->negative || raw == 0 || raw * 1000 > kMaxFpsMillis * scale)
     fail(line, "fps-range", "fps " + quote(token) + " is not in (0, 1000]");
   if (d->fraction.size() >= 2) {
@@ -408,24 +415,24 @@ void Reader::read_frame(const FapMask& mask, std::uint64_t mask_line, const Line
   const std::uint64_t ln = values.number;
   if (mask.test(kVisemeFap)) {
     auto& v = f.viseme;
-    v.select1 = field(t[i++], ln, "viseme-range", "viseme_select1", 14);
+    v.select1 = field(t[i++], ln, "viseme-range", "viseme_select1", kLastViseme);
     if (d69) {
       v.blend = kFullWeight;
     } else {
-      v.select2 = field(t[i++], ln, "viseme-range", "viseme_select2", 14);
-      v.blend = field(t[i++], ln, "viseme-range", "viseme_blend", 63);
+      v.select2 = field(t[i++], ln, "viseme-range", "viseme_select2", kLastViseme);
+      v.blend = field(t[i++], ln, "viseme-range", "viseme_blend", kFullWeight);
       v.def = field(t[i++], ln, "viseme-range", "viseme_def", 1) != 0;
     }
   }
   if (mask.test(kExpressionFap)) {
     auto& e = f.expression;
-    e.select1 = field(t[i++], ln, "expression-range", "expression_select1", 6);
+    e.select1 = field(t[i++], ln, "expression-range", "expression_select1", kLastExpression);
     if (d69) {
       e.intensity1 = kFullWeight;
     } else {
-      e.intensity1 = field(t[i++], ln, "expression-range", "expression_intensity1", 63);
-      e.select2 = field(t[i++], ln, "expression-range", "expression_select2", 6);
-      e.intensity2 = field(t[i++], ln, "expression-range", "expression_intensity2", 63);
+      e.intensity1 = field(t[i++], ln, "expression-range", "expression_intensity1", kFullWeight);
+      e.select2 = field(t[i++], ln, "expression-range", "expression_select2", kLastExpression);
+      e.intensity2 = field(t[i++], ln, "expression-range", "expression_intensity2", kFullWeight);
       e.init_face = field(t[i++], ln, "expression-range", "init_face", 1) != 0;
       e.def = field(t[i++], ln, "expression-range", "expression_def", 1) != 0;
     }
@@ -457,6 +464,11 @@ void Reader::check_count_against_file() {
 }
 
 FapTextRead Reader::run() {
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";  // Windows editors write one
+  if (bytes_.substr(0, kBom.size()) == kBom) {
+    pos_ = kBom.size();
+    out_.info.utf8_bom = true;
+  }
   const auto header = next_line();
   if (!header) fail(line_number_ == 0 ? 1 : line_number_, "missing-header", "the file has no header line");
   read_header(*header);
@@ -487,6 +499,7 @@ void append_int(std::string& out, std::int64_t v) {
 std::string FapTextInfo::describe() const {
   std::string s = dialect == FapTextDialect::kMask69 ? "69-token masks" : "68-token masks";
   const std::pair<bool, const char*> flags[] = {
+      {utf8_bom, "UTF-8 BOM"},
       {crlf, "CRLF"},
       {tabs, "tabs"},
       {comments, "comments"},
@@ -554,9 +567,15 @@ std::size_t mask69_lossy_frames(const FapSequence& seq) {
 
 std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect) {
   const bool d69 = dialect == FapTextDialect::kMask69;
+  if (seq.frames.size() > kFapTextMaxFrames)  // the reader would refuse the file
+    throw std::invalid_argument(std::to_string(seq.frames.size()) + " frames: a .fap file holds at most " +
+                                std::to_string(kFapTextMaxFrames));
   std::string out = "2.1 " + fap_text_name(seq.name) + " " + fap_text_fps(seq.rate) + " " +
                     std::to_string(seq.frames.size()) + "\n";
-  out.reserve(out.size() + seq.frames.size() * 400);  // our own count: ~ a mask and 66 values
+  std::size_t values = 0;
+  for (const FapFrame& f : seq.frames) values += static_cast<std::size_t>(f.mask.count());
+  // Our own counts, not a file's: 137 bytes of mask, a frame number, ~8 bytes per value.
+  out.reserve(out.size() + seq.frames.size() * 145 + values * 8);
   std::uint64_t k = 0;
   for (const FapFrame& f : seq.frames) {
     if (d69) out += "0 ";

@@ -2,7 +2,7 @@
 
 #include "fapcast/codec/input_error.hpp"
 #include "support/bad_inputs.hpp"
-#include "support/seed.hpp"
+#include "support/fap_sequences.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +12,6 @@
 #include <functional>
 #include <map>
 #include <random>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -48,7 +47,9 @@ struct Variant {
 std::ostream& operator<<(std::ostream& out, const Variant& v) { return out << v.name; }
 
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  return std::regex_replace(s, std::regex(from), to);
+  for (auto at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
+    s.replace(at, from.size(), to);
+  return s;
 }
 
 class BvhTextVariant : public testing::TestWithParam<Variant> {};
@@ -79,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(
         Variant{"named_end_site", [](std::string s) { return replace_all(s, "End Site", "End Site chin"); }},
         Variant{"explicit_plus_and_exponents",
                 [](std::string s) {
-                  return replace_all(replace_all(s, " 1\\.5 ", " +1.5 "), " 10 ", " 1e1 ");
+                  return replace_all(replace_all(s, " 1.5 ", " +1.5 "), " 10 ", " 1e1 ");
                 }},
         Variant{"no_final_newline", [](std::string s) { return s.substr(0, s.size() - 1); }}),
     [](const auto& info) { return info.param.name; });
@@ -152,7 +153,7 @@ BvhDocument random_document(std::mt19937_64& rng) {
 }
 
 TEST(BvhText, RandomDocumentsRoundTripExactly) {
-  const std::uint64_t s = test::seed_from_env();
+  const std::uint64_t s = test::test_seed();
   std::mt19937_64 rng(s);
   for (int i = 0; i < 300; ++i) {
     const BvhDocument doc = random_document(rng);

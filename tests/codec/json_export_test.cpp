@@ -3,7 +3,7 @@
 #include "fapcast/codec/face_geometry.hpp"
 #include "fapcast/codec/input_error.hpp"
 #include "support/bad_inputs.hpp"
-#include "support/seed.hpp"
+#include "support/fap_sequences.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -35,6 +35,12 @@ FapJsonOptions small_options() {
 
 TEST(FapJson, WritesTheGoldenFileByteForByte) {
   EXPECT_EQ(write_fap_json(small_sequence(), small_options()), test::slurp(kDir / "small.json"));
+}
+
+TEST(FapJson, SpecExampleIsTheGoldenFile) {
+  const std::string spec = test::slurp(fs::path(FAPCAST_SOURCE_DIR) / "spec" / "json.md");
+  const auto start = spec.find("```json\n") + 8;
+  EXPECT_EQ(spec.substr(start, spec.find("```", start) - start), test::slurp(kDir / "small.json"));
 }
 
 TEST(FapJson, ReadsTheGoldenFile) {
@@ -71,39 +77,13 @@ TEST(FapJson, SamplePositionsAreTheExactTimelineAtNtscRates) {
   EXPECT_EQ(j["frames"][2997]["sample"], 4409996);
 }
 
-FapSequence random_sequence(std::mt19937_64& rng) {
-  const FrameRate rates[] = {{25, 1}, {30000, 1001}, {60, 1}, {24000, 1001}, {1, 7}};
-  FapSequence seq;
-  seq.name = "random \"quoted\" \\ name \xc3\xa9";
-  seq.rate = rates[rng() % 5];
-  const int frames = static_cast<int>(rng() % 40);
-  std::uniform_int_distribution<std::int32_t> any(INT32_MIN, INT32_MAX), small(-1860, 1860);
-  for (int k = 0; k < frames; ++k) {
-    FapFrame f;
-    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n)
-      if (rng() % 3 == 0) f.set(n, rng() % 10 == 0 ? any(rng) : small(rng));
-    if (rng() % 2) {
-      f.mask.set(kVisemeFap);
-      f.viseme = {static_cast<std::uint8_t>(rng() % 15), static_cast<std::uint8_t>(rng() % 15),
-                  static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0};
-    }
-    if (rng() % 2) {
-      f.mask.set(kExpressionFap);
-      f.expression = {static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64),
-                      static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64),
-                      rng() % 2 == 0, rng() % 2 == 0};
-    }
-    seq.frames.push_back(f);
-  }
-  return seq;
-}
-
 TEST(FapJson, RandomSequencesRoundTripExactly) {
-  const std::uint64_t s = test::seed_from_env();
+  const std::uint64_t s = test::test_seed();
   std::mt19937_64 rng(s);
   const std::optional<std::int64_t> sample_rates[] = {std::nullopt, 8000, 44100, 48000};
   for (int i = 0; i < 200; ++i) {
-    const FapSequence seq = random_sequence(rng);
+    FapSequence seq = test::random_fap_sequence(rng, rng() % 40);
+    if (i % 2) seq.name = "escapes: \"quoted\" \\ tab\t \xc3\xa9";  // JSON string escaping
     FapJsonOptions options;
     options.sample_rate = sample_rates[rng() % 4];
     if (rng() % 2) options.fapu = FapuValues{0.1, 0.2, 0.3, 0.4, 1e-9};

@@ -57,6 +57,18 @@ TEST(FapCli, WarningsGoToStderr) {
   EXPECT_NE(r.out.find("real-valued tokens"), std::string::npos) << r.out;
 }
 
+TEST(FapCli, InfoJsonCopesWithNamesAndPathsThatAreNotUtf8) {
+  const std::string dir = test::make_temp_dir("fapcli");
+  const std::string path = dir + "/caf\xE9.fap";
+  transport::write_file_atomically(path, "2.1 caf\xE9 25 0\n");
+  const auto r = run_command(fapcast("fap info --json '" + path + "'"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["name"], "caf\xEF\xBF\xBD");
+  EXPECT_EQ(j["frames"], 0);
+  EXPECT_EQ(j["warnings"].size(), 1u);
+}
+
 TEST(FapCli, BadInputExitsOneWithFileLineRule) {
   const std::string bad = kData + "/fap/bad/bad.003.value-count.fap";
   const auto r = run_command(fapcast("fap info '" + bad + "'"));

@@ -28,6 +28,7 @@ struct FapTextInfo {
   FapTextDialect dialect = FapTextDialect::kStrict;
   std::uint64_t header_frame_count = 0;  // what the header claimed
   std::uint64_t frame_records = 0;       // mask+value pairs in the file (held frames excluded)
+  bool utf8_bom = false;  // the file starts with a UTF-8 byte-order mark (skipped)
   bool crlf = false;
   bool tabs = false;
   bool comments = false;
@@ -54,7 +55,8 @@ FapTextRead read_fap_text(std::string_view bytes, std::string_view source);
 // Writes the strict profile by default: "2.1 NAME FPS N", 68-token masks, frames 0..N-1,
 // integers, single spaces, LF. kMask69 writes the 69-token dialect (FAP 1 and 2: select1 only).
 // The name is written as fap_text_name(seq.name). Throws std::invalid_argument when the rate
-// has no exact decimal form the reader maps back to it (fap_text_fps).
+// has no exact decimal form the reader maps back to it (fap_text_fps), or for more than
+// kFapTextMaxFrames frames: the writer writes only what the reader reads back.
 std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect = FapTextDialect::kStrict);
 
 // The header's name token for `name`: invalid UTF-8 becomes U+FFFD, every space, tab or

@@ -56,7 +56,7 @@ TEST_P(HourLongResample, HoldShowsTheFrameOnScreenWithoutDrift) {
   const auto count = static_cast<std::int64_t>(out.frames.size());
   EXPECT_EQ(count, resampled_frame_count(n, from, to));
   // The output covers the input's duration and no more: (count - 1) / to < n / from <= count / to.
-  using W = __int128;
+  __extension__ typedef __int128 W;
   EXPECT_LT(W(count - 1) * to.denominator * from.numerator, W(n) * from.denominator * to.numerator);
   EXPECT_LE(W(n) * from.denominator * to.numerator, W(count) * to.denominator * from.numerator);
   for (std::int64_t j = 0; j < count; ++j) {

@@ -1,0 +1,46 @@
+// libFuzzer target for the RTP packet parser, the RTCP sender-report parser and the receiver
+// state machine. Input layout: a sequence of records [len_hi len_lo dt_ms bytes...]: each
+// record is one datagram of `len` bytes (clamped to what is left) arriving dt_ms after the
+// previous one. Every datagram goes through parse_rtp and parse_sender_report; all go through
+// one RtpStreamReceiver, whose buffer must stay within its capacity, and the delivered units
+// through a ReceivedTrack (FBA decoding, timestamp placement) with a small frame limit.
+#include "fapcast/transport/fba_track.hpp"
+#include "fapcast/transport/rtcp_sender_report.hpp"
+#include "fapcast/transport/rtp_packet.hpp"
+#include "fapcast/transport/rtp_stream_receiver.hpp"
+
+#include <cstdlib>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace fapcast::transport;
+  ReceiverOptions options;
+  options.reorder_capacity = 8;
+  RtpStreamReceiver receiver(options);
+  ReceivedTrack track(48000, 1000);
+  std::vector<ReceivedUnit> units;
+  RtpStreamReceiver::Clock::time_point now{};
+  std::size_t at = 0;
+  while (at + 3 <= size) {
+    const std::size_t len = std::min<std::size_t>((std::size_t{data[at]} << 8) | data[at + 1], size - at - 3);
+    now += std::chrono::milliseconds(data[at + 2]);
+    const std::span<const std::uint8_t> datagram(data + at + 3, len);
+    at += 3 + len;
+    RtpPacketView view;
+    if (!parse_rtp(datagram, view)) {
+      if (view.payload.data() < datagram.data() ||
+          view.payload.data() + view.payload.size() > datagram.data() + datagram.size())
+        std::abort();
+    }
+    SenderReport sr;
+    (void)parse_sender_report(datagram, sr);
+    (void)receiver.on_datagram(datagram, now, units);
+    receiver.poll(now, units);
+    if (receiver.held_packets() > options.reorder_capacity) std::abort();
+    for (const auto& u : units) (void)track.add(u);
+    units.clear();
+  }
+  receiver.flush(units);
+  for (const auto& u : units) (void)track.add(u);
+  if (track.sequence().frames.size() > 1000) std::abort();
+  return 0;
+}

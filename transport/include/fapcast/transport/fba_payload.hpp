@@ -1,0 +1,26 @@
+#pragma once
+// The FBA RTP payload (spec/rtp.md): a one-byte payload header |I|0 0 0 0 0 0 0| followed by
+// exactly one FBA access unit. I = 1 marks an intra unit, so a receiver finds a resumption point
+// without parsing the bitstream; the seven reserved bits are sent as 0 and ignored on receipt.
+#include <cstdint>
+#include <span>
+#include <system_error>
+#include <vector>
+
+namespace fapcast::transport {
+
+inline constexpr std::uint8_t kFbaIntraFlag = 0x80;
+
+struct FbaPayload {
+  bool intra = false;
+  std::span<const std::uint8_t> access_unit;  // view into the packet
+};
+
+// Appends the payload header and the access unit to `out`.
+void pack_fba_payload(bool intra, std::span<const std::uint8_t> access_unit,
+                      std::vector<std::uint8_t>& out);
+
+// Splits a payload. Errors: RtpErrc::kMissingPayloadHeader for an empty payload.
+std::error_code parse_fba_payload(std::span<const std::uint8_t> payload, FbaPayload& out);
+
+}  // namespace fapcast::transport

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The main job (README, first command). Installs what is missing, builds `fapcast`, and runs the
-# best end-to-end job the project has today. Synthesis (`fapcast say`) is not built yet
-# (issues 3/7-5/7), so today the job reads the real Xface .fap samples, reports on them and
-# converts them through every format fapcast writes: strict .fap, FBA bitstream and back, BVH, JSON.
+# best end-to-end job the project has today. `fapcast say` (synthesis from text) does not exist
+# yet: the voice build and the unit-selection front door are still open (issues 4/7-5/7). Today
+# the job (1) reads a real Xface .fap sample and converts it through every format fapcast writes
+# (strict .fap, FBA bitstream and back, BVH, JSON) and (2) records a small SYNTHETIC reference
+# corpus (espeak-ng speech, ICT-FaceKit markers: C3D + WAV + TextGrid + manifest).
 # Outputs land in out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,4 +19,5 @@ sample=tests/data/xface/joy.fap
 "$fapcast" fap info out/joy.fba
 "$fapcast" export "$sample" -o out/joy.bvh
 "$fapcast" export "$sample" -o out/joy.json
-ls -l out/
+"$fapcast" corpus record-reference -o out/reference-corpus --count 12 --seed 1
+ls -l out/ out/reference-corpus | head -30

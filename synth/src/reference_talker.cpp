@@ -84,7 +84,7 @@ ReferenceTake record_take(const ScriptItem& item, std::string id, const FaceMode
   const UtteranceVariation variation = draw_utterance_variation(random);
   take.effort = variation.effort;
   const bool nonsense = item.section == ScriptSection::kNonsense;
-  take.speech = speak(nonsense ? item.espeak_phonemes : item.text, SpeakOptions{.phoneme_input = nonsense});
+  take.speech = speak(nonsense ? item.espeak_phonemes : item.text, SpeakOptions{.phoneme_input = nonsense, .rate_factor = variation.rate_factor});
   if (take.speech.phones.empty())
     throw std::runtime_error("reference talker: espeak-ng said nothing for \"" + item.text + "\"");
   take.audio = take.speech.audio;

@@ -167,6 +167,9 @@ Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
   return {onset, std::max(release, onset)};
 }
 
+// espeak-ng's default speaking rate, words per minute.
+constexpr double kDefaultWordsPerMinute = 175.0;
+
 Speech speak(std::string_view text, const SpeakOptions& options) {
   const std::vector<std::size_t> char_offsets = validate_text(text);
   Speech speech;
@@ -180,6 +183,8 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
     espeak_SetSynthCallback(collect);
     g_collector = &collector;
     const std::string buffer(text);  // NUL-terminated copy
+    const int wpm = static_cast<int>(std::lround(std::clamp(kDefaultWordsPerMinute * options.rate_factor, 80.0, 450.0)));
+    espeak_SetParameter(espeakRATE, wpm, 0);  // set on every call: espeak-ng keeps it between calls
     unsigned flags = espeakCHARS_UTF8 | (options.phoneme_input ? espeakPHONEMES : 0u);
     const espeak_ERROR status = espeak_Synth(buffer.c_str(), buffer.size() + 1, 0, POS_CHARACTER, 0,
                                              flags, nullptr, nullptr);

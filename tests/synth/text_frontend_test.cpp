@@ -217,3 +217,23 @@ TEST(TextFrontend, PhonemeInputSpeaksTheWrittenPhones) {
 
 }  // namespace
 }  // namespace fapcast::synth
+
+namespace fapcast::synth {
+namespace {
+
+TEST(TextFrontendRate, RateFactorChangesTheSpeakingRateAndNotThePhones) {
+  SpeakOptions slow, fast;
+  slow.rate_factor = 0.8;
+  fast.rate_factor = 1.3;
+  const Speech a = speak("the quick brown fox jumps", slow);
+  const Speech b = speak("the quick brown fox jumps", fast);
+  EXPECT_LT(static_cast<double>(b.audio.samples.size()), 0.8 * static_cast<double>(a.audio.samples.size()));
+  ASSERT_EQ(a.phones.size(), b.phones.size());
+  for (std::size_t i = 0; i < a.phones.size(); ++i) EXPECT_EQ(a.phones[i].phone, b.phones[i].phone) << i;
+  // The rate does not stick: a default call afterwards speaks at the default rate again.
+  const Speech c = speak("the quick brown fox jumps");
+  EXPECT_GT(static_cast<double>(c.audio.samples.size()), 1.1 * static_cast<double>(b.audio.samples.size()));
+}
+
+}  // namespace
+}  // namespace fapcast::synth

@@ -62,6 +62,9 @@ struct SpeakOptions {
   // Treat text inside [[ ]] as espeak-ng phoneme mnemonics (espeakPHONEMES), e.g. nonsense
   // syllables of the recording script. Off by default: user text is text.
   bool phoneme_input = false;
+  // Speaking rate relative to espeak-ng's default of 175 words per minute (1.1 = 10 % faster);
+  // the reference talker varies it per utterance. Clamped to espeak-ng's 80..450 wpm.
+  double rate_factor = 1.0;
 };
 
 // Synthesises `text` (UTF-8) with espeak-ng en-us and segments it into phones and words.

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -29,11 +30,12 @@ const FaceModel& actor() {
   return a;
 }
 
-// RMS (cm) of the difference between two takes over the samples present in both.
+// RMS (cm) of the difference between two takes over the frames both have and the samples
+// present in both (another seed also draws another speaking rate, so lengths may differ).
 double rms_difference(const MarkerFrames& a, const MarkerFrames& b, std::size_t* samples = nullptr) {
   double sum = 0;
   std::size_t n = 0;
-  for (Eigen::Index k = 0; k < a.frame_count(); ++k)
+  for (Eigen::Index k = 0; k < std::min(a.frame_count(), b.frame_count()); ++k)
     for (Eigen::Index m = 0; m < a.marker_count(); ++m)
       if (a.present(m, k) && b.present(m, k)) {
         sum += (a.at(m, k) - b.at(m, k)).squaredNorm();

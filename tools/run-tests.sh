@@ -2,13 +2,13 @@
 # The test command (README, .ci/run): installs what is missing, builds everything with
 # AddressSanitizer + UndefinedBehaviorSanitizer and -Werror, runs every GoogleTest suite under
 # CTest, then builds the libFuzzer targets with clang and runs each for a bounded time.
-#   FAPCAST_FUZZ_SECONDS=N  seconds per fuzz target (default 10; 0 skips the fuzz stage)
+#   FAPCAST_FUZZ_SECONDS=N  seconds per fuzz target (default 5; 0 skips the fuzz stage)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
 
 jobs=$(nproc)
-fuzz_seconds=${FAPCAST_FUZZ_SECONDS:-10}
+fuzz_seconds=${FAPCAST_FUZZ_SECONDS:-5}
 
 cmake -S . -B build/ci -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \

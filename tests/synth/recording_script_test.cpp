@@ -1,5 +1,6 @@
 // The recording script: common words first by frequency, greedy syllable words, nonsense items
 // that complete diviseme coverage; deterministic.
+#include "support/bad_inputs.hpp"
 #include "fapcast/synth/recording_script.hpp"
 
 #include <gtest/gtest.h>
@@ -12,12 +13,7 @@
 namespace fapcast::synth {
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using fapcast::test::slurp;
 
 struct Mini {
   std::vector<WordCount> counts = parse_word_counts(

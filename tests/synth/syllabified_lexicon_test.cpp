@@ -1,5 +1,6 @@
 // The Festival-format lexicon and word-count parsers: good entries, every named bad input with
 // its golden error, and the whole festlex-cmu lexicon of the machine.
+#include "support/bad_inputs.hpp"
 #include "fapcast/synth/syllabified_lexicon.hpp"
 
 #include <gtest/gtest.h>
@@ -14,12 +15,7 @@
 namespace fapcast::synth {
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using fapcast::test::slurp;
 
 const std::filesystem::path kLexiconData = std::filesystem::path(FAPCAST_TEST_DATA) / "lexicon";
 

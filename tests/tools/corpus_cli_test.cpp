@@ -1,5 +1,6 @@
 // `fapcast corpus record-reference`: the same seed records the same corpus, byte for byte, in
 // another process; another seed records another one; and the files say SYNTHETIC.
+#include "support/bad_inputs.hpp"
 #include "support/run_command.hpp"
 
 #include <gtest/gtest.h>
@@ -11,12 +12,7 @@
 namespace fapcast::test {
 namespace {
 
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using fapcast::test::slurp;
 
 TEST(CorpusCli, RecordReferenceIsReproducibleFromItsSeed) {
   const std::string a = make_temp_dir("corpus-a"), b = make_temp_dir("corpus-b"), c = make_temp_dir("corpus-c");

@@ -223,6 +223,9 @@ FapJsonRead read_fap_json(std::string_view bytes, std::string_view source) {
   } catch (const Json::parse_error& e) {
     throw InputError({std::string(source), std::nullopt, e.byte > 0 ? e.byte - 1 : 0},
                      "json-syntax", e.what());
+  } catch (const Json::exception& e) {
+    // The parser's other refusals (a number beyond double's range: out_of_range 406).
+    throw InputError({std::string(source), std::nullopt, std::nullopt}, "json-syntax", e.what());
   }
   const Reader r(source);
   r.object(doc, "");

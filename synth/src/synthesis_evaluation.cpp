@@ -1,0 +1,126 @@
+#include "fapcast/synth/synthesis_evaluation.hpp"
+
+#include "fapcast/synth/held_out_sentences.hpp"
+#include "fapcast/synth/portable_random.hpp"
+#include "fapcast/synth/recording_script.hpp"
+#include "fapcast/synth/reference_talker.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+namespace fapcast::synth {
+namespace {
+
+constexpr int kFramesPerSecond = 60;
+
+// Lip curves of vertex tracks (metres) in millimetres.
+LipCurves curves_mm(const Eigen::MatrixXf& tracks, const EvaluationPoints& points) {
+  return lip_curves(Eigen::MatrixXf(1000.0f * tracks), points.lip_measure);
+}
+
+}  // namespace
+
+std::vector<TargetPhone> target_phones_of(std::span<const TimedPhone> phones, int sample_rate_hz) {
+  if (sample_rate_hz <= 0) throw std::invalid_argument("target phones: sample rate must be positive");
+  // Nearest frame boundary, in integers: round(sample * fps / rate).
+  auto frame = [&](std::int64_t sample) {
+    return (2 * sample * kFramesPerSecond + sample_rate_hz) / (2 * std::int64_t{sample_rate_hz});
+  };
+  std::vector<TargetPhone> targets;
+  for (const auto& p : phones) {
+    const std::int64_t first = targets.empty() ? frame(p.start_sample) : targets.back().end_frame;
+    const std::int64_t end = frame(p.end_sample);
+    if (end <= first) continue;
+    const VisemeClass v = search_viseme(p.phone);
+    targets.push_back({v, first, end, v == VisemeClass::kBilabial || v == VisemeClass::kLabiodental});
+  }
+  return targets;
+}
+
+std::vector<HeldOutUtterance> record_held_out(const FaceModel& actor, std::uint64_t seed,
+                                              std::size_t count) {
+  PortableRandom master(seed);
+  std::vector<HeldOutUtterance> out;
+  for (std::size_t i = 0; i < std::min(count, kHeldOutSentences.size()); ++i) {
+    char id[32];
+    std::snprintf(id, sizeof id, "heldout%02zu", i + 1);
+    PortableRandom random = master.split();
+    const ScriptItem item{ScriptSection::kCommonWord, std::string(kHeldOutSentences[i]), {}, "", 0.0};
+    ReferenceTake take = record_take(item, id, actor, random);
+    HeldOutUtterance u;
+    u.id = id;
+    u.text = item.text;
+    u.targets = target_phones_of(take.speech.phones, take.speech.audio.sample_rate_hz);
+    u.speech = std::move(take.speech);
+    u.recorded = std::move(take.clean);
+    out.push_back(std::move(u));
+  }
+  return out;
+}
+
+NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+                            RenderOptions options) {
+  return {"diviseme", [&graph, &pca_frames, options](const HeldOutUtterance& u) {
+            const auto selection = select_divisemes(graph, u.targets);
+            return SystemOutput{render_divisemes(graph, pca_frames, selection, u.targets, options),
+                                selection.divisemes.size() + selection.unrecorded};
+          }};
+}
+
+NamedSystem dominance_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+                             DominanceBaselineOptions options) {
+  // Targets once, not per utterance.
+  auto targets = std::make_shared<VisemeTargets>(viseme_targets(graph, pca_frames));
+  return {"dominance", [targets, options](const HeldOutUtterance& u) {
+            return SystemOutput{dominance_interpolation(*targets, u.targets, options), 0};
+          }};
+}
+
+EvaluationReport evaluate_synthesis(const EvaluationFace& face, std::span<const NamedSystem> systems,
+                                    std::span<const HeldOutUtterance> utterances) {
+  if (face.pca_mean.rows() != 1 || face.pca_components.cols() != face.pca_mean.cols() ||
+      face.retarget_map == nullptr || !face.source_vectors)
+    throw std::invalid_argument("synthesis evaluation: the face lacks its PCA basis, map or source vectors");
+  const auto& vertices = face.points.vertices;
+  std::vector<SynthesisScorer> scorers(systems.size(), SynthesisScorer(face.points));
+  std::vector<std::size_t> units(systems.size(), 0);
+  EvaluationReport report;
+  for (const auto& u : utterances) {
+    const Eigen::MatrixXf recorded = vertex_tracks(*face.retarget_map, face.source_vectors(u.recorded), vertices);
+    UtteranceCurves curves{u.id, u.text, curves_mm(recorded, face.points), {}};
+    for (std::size_t s = 0; s < systems.size(); ++s) {
+      SystemOutput out;
+      try {
+        out = systems[s].synthesise(u);
+      } catch (...) {
+        std::throw_with_nested(std::runtime_error("system '" + systems[s].name + "' on " + u.id));
+      }
+      if (out.coefficients.cols() != face.pca_components.rows())
+        throw std::invalid_argument("synthesis evaluation: system '" + systems[s].name + "' made " +
+                                    std::to_string(out.coefficients.cols()) + " coefficients per frame, the face has " +
+                                    std::to_string(face.pca_components.rows()));
+      Eigen::MatrixXf tracks = vertex_tracks(face.pca_mean, face.pca_components, out.coefficients, vertices);
+      // Systems start at the first target frame; the recording at frame 0: hold the first frame.
+      const std::int64_t lead = u.targets.empty() ? 0 : u.targets.front().first_frame;
+      if (lead > 0 && tracks.rows() > 0) {
+        Eigen::MatrixXf padded(tracks.rows() + lead, tracks.cols());
+        padded.topRows(lead).rowwise() = tracks.row(0);
+        padded.bottomRows(tracks.rows()) = tracks;
+        tracks = std::move(padded);
+      }
+      scorers[s].add(recorded, tracks);
+      curves.synthesised.push_back(curves_mm(tracks, face.points));
+      units[s] += out.units;
+    }
+    report.phones += u.targets.size();
+    report.frames += static_cast<std::size_t>(recorded.rows());
+    report.utterances.push_back(std::move(curves));
+  }
+  for (std::size_t s = 0; s < systems.size(); ++s)
+    report.systems.push_back({systems[s].name, scorers[s].score(),
+                              report.phones > 0 ? static_cast<double>(units[s]) / static_cast<double>(report.phones) : 0.0});
+  return report;
+}
+
+}  // namespace fapcast::synth

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <set>
+#include <sstream>
 
 #include "fapcast/synth/input_error.hpp"
 #include "fapcast/synth/voice_graph.hpp"
@@ -131,9 +132,11 @@ Voice Voice::open(const std::filesystem::path& path) {
                                                        " frames, FCOE has " + std::to_string(coefficients.rows()));
   const auto scalars = view.matrix_f64(vs::kRbfScalars);
   const double r_squared = scalars(0, 0), lambda = scalars(0, 1);
-  if (!(r_squared > 0) || !std::isfinite(r_squared) || !(lambda >= 0) || !std::isfinite(lambda))
-    refuse(view, vs::kRbfScalars, "rbf-scalars", "r^2 = " + std::to_string(r_squared) + " must be positive and lambda = " +
-                                                     std::to_string(lambda) + " non-negative, both finite");
+  if (!(r_squared > 0) || !std::isfinite(r_squared) || !(lambda >= 0) || !std::isfinite(lambda)) {
+    std::ostringstream detail;
+    detail << "r^2 = " << r_squared << " must be positive and lambda = " << lambda << " non-negative, both finite";
+    refuse(view, vs::kRbfScalars, "rbf-scalars", detail.str());
+  }
   RbfMap map(Eigen::MatrixXd(centres), r_squared, view.matrix_f32(vs::kRbfWeights).cast<double>(),
              view.matrix_f32(vs::kRbfOffset).row(0).transpose().cast<double>(), lambda);
   Eigen::MatrixXf frames = coefficients;

@@ -60,7 +60,7 @@ std::vector<std::byte> encode_voice_graph(const VoiceGraphData& data) {
 VoiceGraphData decode_voice_graph(std::span<const std::byte> bytes, const std::string& source,
                                   std::uint64_t section_offset) {
   const auto refuse = [&](std::size_t at, const char* rule, const std::string& detail) {
-    throw InputError({source, std::nullopt, section_offset + at}, rule, "phone graph (GRPH): " + detail);
+    throw InputError({source, std::nullopt, section_offset + at}, rule, "section 'GRPH' (phone graph): " + detail);
   };
   if (bytes.size() < kVoiceGraphHeaderBytes)
     refuse(0, "graph-truncated", std::to_string(bytes.size()) + " bytes, the header needs 16");

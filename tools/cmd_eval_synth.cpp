@@ -1,0 +1,137 @@
+// `fapcast eval synth`: the held-out evaluation of synthesis (spec/evaluation.md): SYNTHETIC
+// sentences recorded by the voice's reference actor, synthesised from their own phone timing by
+// the variable-length search and two baselines, scored on the target face.
+#include "command.hpp"
+#include "default_voice.hpp"
+#include "svg_plot.hpp"
+#include "synthesis_report.hpp"
+
+#include "fapcast/synth/face_model.hpp"
+#include "fapcast/synth/held_out_sentences.hpp"
+#include "fapcast/synth/marker_map.hpp"
+#include "fapcast/synth/preprocessing.hpp"
+#include "fapcast/synth/reference_talker.hpp"
+#include "fapcast/synth/synthesis_evaluation.hpp"
+#include "fapcast/synth/unit_search.hpp"
+#include "fapcast/synth/voice.hpp"
+#include "fapcast/synth/voice_corpus.hpp"
+#include "fapcast/transport/file_io.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace {
+using namespace fapcast;
+
+// The evaluation's view of a voice: PCA basis, map, points, and the voice build's source vectors
+// (head-stabilised against the voice's rigid reference, feature points only, metres).
+synth::EvaluationFace evaluation_face(const synth::Voice& voice) {
+  std::vector<std::string> labels;
+  std::vector<std::int32_t> vertices;
+  for (const auto& p : voice.feature_points()) labels.push_back(p.label), vertices.push_back(p.vertex);
+  std::array<std::int32_t, 2> temples{-1, -1};
+  for (const auto& r : voice.rigid_markers()) {
+    if (r.label == "H.temple_l") temples[0] = r.vertex;
+    if (r.label == "H.temple_r") temples[1] = r.vertex;
+  }
+  if (temples[0] < 0 || temples[1] < 0)
+    throw std::runtime_error(voice.file().source() + ": the voice has no temple markers (H.temple_l/r) for lip protrusion");
+  const auto sites = synth::marker_sites();
+  const auto rigid_rows = synth::rigid_marker_rows();
+  Eigen::Matrix3Xd reference(3, static_cast<Eigen::Index>(rigid_rows.size()));
+  for (std::size_t i = 0; i < rigid_rows.size(); ++i) {
+    bool found = false;
+    for (const auto& r : voice.rigid_markers())
+      if (r.label == sites[rigid_rows[i]].label)
+        reference.col(static_cast<Eigen::Index>(i)) = 100.0 * r.source_reference_m, found = true;
+    if (!found)
+      throw std::runtime_error(voice.file().source() + ": the voice has no rigid marker " +
+                               std::string(sites[rigid_rows[i]].label));
+  }
+  return {voice.pca_mean(), voice.pca_components(), &voice.retarget_map(),
+          [reference](const synth::MarkerFrames& take) {
+            return synth::source_vectors_m(synth::preprocess_take(take, reference).frames, "held-out take");
+          },
+          synth::evaluation_points(labels, vertices, temples)};
+}
+
+// The method under test: the Viterbi search over the voice's phone graph and render_units.
+synth::NamedSystem variable_length_system(const synth::Voice& voice, synth::SearchOptions search) {
+  return {"variable-length", [&voice, search](const synth::HeldOutUtterance& u) {
+            std::vector<synth::VisemeClass> visemes;
+            for (const auto& t : u.targets) visemes.push_back(t.viseme);
+            const auto result = synth::unit_search(voice.graph(), visemes, search);
+            return synth::SystemOutput{synth::render_units(voice.graph(), voice.frame_coefficients(), result, u.targets),
+                                       result.units.size()};
+          }};
+}
+
+const tools::Registration reg{"71-eval-synth", [](CLI::App& app) {
+  struct Args {
+    std::string voice;
+    std::size_t count = synth::kHeldOutSentences.size();
+    std::uint64_t seed = 2;
+    std::string plots;
+    std::string json;
+    double beta = 0.0;
+    std::size_t max_active = 0;
+    bool quiet = false;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = tools::command_group(app, "eval", "Evaluate retargeting and synthesis by the paper's measures")
+                  ->add_subcommand("synth",
+                                   "Held-out SYNTHETIC sentences recorded by the voice's reference actor, "
+                                   "synthesised from their own timing by the variable-length search, diviseme "
+                                   "concatenation and dominance interpolation; lip and feature-point errors");
+  cmd->add_option("--voice", args->voice, "Voice file (.fapv); default: the cached default voice, built on first use");
+  cmd->add_option("--count", args->count, "Held-out sentences to record and synthesise")
+      ->check(CLI::Range(std::size_t{1}, synth::kHeldOutSentences.size()))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the held-out takes' variation (the voice's corpus uses its own)")
+      ->capture_default_str();
+  cmd->add_option("--beta", args->beta, "Weight of the junction smoothness in the search's cost (0: fewest units)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--max-active", args->max_active, "Cap on active states per phone in the search (0: none)")
+      ->capture_default_str();
+  cmd->add_option("--plots", args->plots, "Directory for one SVG of lip curves per sentence (created)");
+  cmd->add_option("--json", args->json, "Write the results as JSON (atomically)");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
+  cmd->callback([args] {
+    namespace fs = std::filesystem;
+    const fs::path voice_path = args->voice.empty() ? tools::ensure_default_voice(args->quiet) : fs::path(args->voice);
+    const auto voice = synth::Voice::open(voice_path);
+    if (!voice.provenance().synthetic)
+      throw std::runtime_error(voice_path.string() + ": eval synth records held-out sentences with the reference "
+                               "talker, so it needs a voice built from a reference corpus (provenance synthetic)");
+    const synth::FaceModel actor = synth::reference_actor(synth::ict_face_model(), voice.provenance().seed);
+    if (!args->quiet) std::cerr << "recording " << args->count << " held-out sentences (seed " << args->seed << ")\n";
+    const auto held = synth::record_held_out(actor, args->seed, args->count);
+    const std::vector<synth::NamedSystem> systems{
+        variable_length_system(voice, {args->beta, args->max_active > 0 ? std::optional(args->max_active) : std::nullopt}),
+        synth::diviseme_system(voice.graph(), voice.frame_coefficients()),
+        synth::dominance_system(voice.graph(), voice.frame_coefficients())};
+    const auto report = synth::evaluate_synthesis(evaluation_face(voice), systems, held);
+
+    std::ostringstream command;
+    command << "fapcast eval synth" << (args->voice.empty() ? "" : " --voice " + args->voice) << " --count "
+            << args->count << " --seed " << args->seed;
+    if (args->beta > 0) command << " --beta " << args->beta;
+    if (args->max_active > 0) command << " --max-active " << args->max_active;
+    const tools::EvaluationContext context{voice_path.string(), args->seed, command.str()};
+    std::cout << tools::format_evaluation_table(report, context);
+    if (!args->json.empty())
+      transport::write_file_atomically(args->json, tools::evaluation_json(report, context).dump(2) + "\n");
+    if (!args->plots.empty()) {
+      fs::create_directories(args->plots);
+      for (std::size_t u = 0; u < report.utterances.size(); ++u)
+        transport::write_file_atomically(fs::path(args->plots) / (report.utterances[u].id + ".svg"),
+                                         tools::svg_line_plot(tools::lip_curve_plot(report, u)));
+    }
+  });
+}};
+
+}  // namespace

@@ -113,6 +113,7 @@ const tools::Registration reg{"71-eval-synth", [](CLI::App& app) {
     const std::vector<synth::NamedSystem> systems{
         variable_length_system(voice, {args->beta, args->max_active > 0 ? std::optional(args->max_active) : std::nullopt}),
         synth::diviseme_system(voice.graph(), voice.frame_coefficients()),
+        synth::diviseme_system(voice.graph(), voice.frame_coefficients(), {}, synth::DivisemeChoiceRule::kFirst),
         synth::dominance_system(voice.graph(), voice.frame_coefficients())};
     const auto report = synth::evaluate_synthesis(evaluation_face(voice), systems, held);
 

@@ -50,7 +50,8 @@ std::pair<FrameSpan, FrameSpan> halves(const FrameSpan& s) {
 
 }  // namespace
 
-DivisemeSelection select_divisemes(const PhoneGraph& graph, std::span<const TargetPhone> targets) {
+DivisemeSelection select_divisemes(const PhoneGraph& graph, std::span<const TargetPhone> targets,
+                                   DivisemeChoiceRule rule) {
   check_targets(targets);
   DivisemeSelection selection;
   selection.divisemes.reserve(targets.size() - 1);
@@ -61,8 +62,10 @@ DivisemeSelection select_divisemes(const PhoneGraph& graph, std::span<const Targ
     DivisemeChoice best;
     double best_cost = std::numeric_limits<double>::infinity();
     for (const StateId j : seconds) {
-      const double cost = duration_mismatch(graph.state(j - 1).frames, targets[t]) +
-                          duration_mismatch(graph.state(j).frames, targets[t + 1]);
+      const double cost = rule == DivisemeChoiceRule::kFirst
+                              ? 0.0
+                              : duration_mismatch(graph.state(j - 1).frames, targets[t]) +
+                                    duration_mismatch(graph.state(j).frames, targets[t + 1]);
       if (cost < best_cost || (cost == best_cost && j - 1 < best.first_state))
         best = {j - 1, j, true}, best_cost = cost;
     }

@@ -60,9 +60,10 @@ std::vector<HeldOutUtterance> record_held_out(const FaceModel& actor, std::uint6
 }
 
 NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
-                            RenderOptions options) {
-  return {"diviseme", [&graph, &pca_frames, options](const HeldOutUtterance& u) {
-            const auto selection = select_divisemes(graph, u.targets);
+                            RenderOptions options, DivisemeChoiceRule rule) {
+  return {rule == DivisemeChoiceRule::kFirst ? "diviseme-first" : "diviseme",
+          [&graph, &pca_frames, options, rule](const HeldOutUtterance& u) {
+            const auto selection = select_divisemes(graph, u.targets, rule);
             return SystemOutput{render_divisemes(graph, pca_frames, selection, u.targets, options),
                                 selection.divisemes.size() + selection.unrecorded};
           }};

@@ -67,6 +67,11 @@ TEST(DivisemeBaseline, EveryUnitIsOneRecordedDivisemeOfTheTargetVisemes) {
   EXPECT_EQ(s.divisemes[1].first_state, 5u) << "1-2 with durations 2, 8: recording 1 exactly";
   // 2-3 exists in recordings 1 (8, 4) and 2 (4, 4): targets 8, 4 pick recording 1.
   EXPECT_EQ(s.divisemes[2].first_state, 6u);
+
+  const auto first = select_divisemes(g, t, DivisemeChoiceRule::kFirst);
+  EXPECT_EQ(first.divisemes[0].first_state, 0u) << "the first recorded 0-1, whatever its timing";
+  EXPECT_EQ(first.divisemes[1].first_state, 1u);
+  EXPECT_EQ(first.divisemes[2].first_state, 6u) << "2-3's first recording is recording 1's";
 }
 
 TEST(DivisemeBaseline, UnrecordedPairsFallBackAndMissingClassesThrow) {

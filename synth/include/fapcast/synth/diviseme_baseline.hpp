@@ -32,12 +32,18 @@ struct DivisemeSelection {
   std::size_t unrecorded = 0;             // divisemes with recorded == false
 };
 
-// Chooses, for every pair of consecutive targets, the recorded instance of that viseme pair
-// whose phone durations best match the targets': the least sum over its two phones of
-// (log(recorded frames / target frames))^2; ties go to the lowest state id (deterministic).
+// How an instance of a diviseme is chosen among its recordings.
+enum class DivisemeChoiceRule {
+  kBestDuration,  // the least sum over its two phones of (log(recorded / target frames))^2
+  kFirst,         // the first recorded (lowest state id): no regard to timing (an ablation)
+};
+
+// Chooses, for every pair of consecutive targets, a recorded instance of that viseme pair by
+// `rule`; ties go to the lowest state id (deterministic).
 // Throws std::invalid_argument when there are fewer than two targets, a target spans no frames,
 // or a target viseme class has no state at all (naming the class and the target position).
-DivisemeSelection select_divisemes(const PhoneGraph& graph, std::span<const TargetPhone> targets);
+DivisemeSelection select_divisemes(const PhoneGraph& graph, std::span<const TargetPhone> targets,
+                                   DivisemeChoiceRule rule = DivisemeChoiceRule::kBestDuration);
 
 // Renders a selection over `targets` from the voice's PCA frames (frames x k): each target phone
 // is cut at its middle frame into two halves (a one-frame phone stays whole, in its first half);

@@ -54,7 +54,8 @@ struct NamedSystem {
 
 // The two baselines over a voice's phone graph and PCA frames (frames x k); both keep references.
 NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
-                            RenderOptions options = {});
+                            RenderOptions options = {},
+                            DivisemeChoiceRule rule = DivisemeChoiceRule::kBestDuration);
 NamedSystem dominance_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
                              DominanceBaselineOptions options = {});
 

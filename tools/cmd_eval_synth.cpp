@@ -8,13 +8,10 @@
 
 #include "fapcast/synth/face_model.hpp"
 #include "fapcast/synth/held_out_sentences.hpp"
-#include "fapcast/synth/marker_map.hpp"
-#include "fapcast/synth/preprocessing.hpp"
 #include "fapcast/synth/reference_talker.hpp"
 #include "fapcast/synth/synthesis_evaluation.hpp"
 #include "fapcast/synth/unit_search.hpp"
 #include "fapcast/synth/voice.hpp"
-#include "fapcast/synth/voice_corpus.hpp"
 #include "fapcast/transport/file_io.hpp"
 
 #include <filesystem>
@@ -25,38 +22,6 @@
 
 namespace {
 using namespace fapcast;
-
-// The evaluation's view of a voice: PCA basis, map, points, and the voice build's source vectors
-// (head-stabilised against the voice's rigid reference, feature points only, metres).
-synth::EvaluationFace evaluation_face(const synth::Voice& voice) {
-  std::vector<std::string> labels;
-  std::vector<std::int32_t> vertices;
-  for (const auto& p : voice.feature_points()) labels.push_back(p.label), vertices.push_back(p.vertex);
-  std::array<std::int32_t, 2> temples{-1, -1};
-  for (const auto& r : voice.rigid_markers()) {
-    if (r.label == "H.temple_l") temples[0] = r.vertex;
-    if (r.label == "H.temple_r") temples[1] = r.vertex;
-  }
-  if (temples[0] < 0 || temples[1] < 0)
-    throw std::runtime_error(voice.file().source() + ": the voice has no temple markers (H.temple_l/r) for lip protrusion");
-  const auto sites = synth::marker_sites();
-  const auto rigid_rows = synth::rigid_marker_rows();
-  Eigen::Matrix3Xd reference(3, static_cast<Eigen::Index>(rigid_rows.size()));
-  for (std::size_t i = 0; i < rigid_rows.size(); ++i) {
-    bool found = false;
-    for (const auto& r : voice.rigid_markers())
-      if (r.label == sites[rigid_rows[i]].label)
-        reference.col(static_cast<Eigen::Index>(i)) = 100.0 * r.source_reference_m, found = true;
-    if (!found)
-      throw std::runtime_error(voice.file().source() + ": the voice has no rigid marker " +
-                               std::string(sites[rigid_rows[i]].label));
-  }
-  return {voice.pca_mean(), voice.pca_components(), &voice.retarget_map(),
-          [reference](const synth::MarkerFrames& take) {
-            return synth::source_vectors_m(synth::preprocess_take(take, reference).frames, "held-out take");
-          },
-          synth::evaluation_points(labels, vertices, temples)};
-}
 
 // The method under test: the Viterbi search over the voice's phone graph and render_units.
 synth::NamedSystem variable_length_system(const synth::Voice& voice, synth::SearchOptions search) {
@@ -115,7 +80,7 @@ const tools::Registration reg{"71-eval-synth", [](CLI::App& app) {
         synth::diviseme_system(voice.graph(), voice.frame_coefficients()),
         synth::diviseme_system(voice.graph(), voice.frame_coefficients(), {}, synth::DivisemeChoiceRule::kFirst),
         synth::dominance_system(voice.graph(), voice.frame_coefficients())};
-    const auto report = synth::evaluate_synthesis(evaluation_face(voice), systems, held);
+    const auto report = synth::evaluate_synthesis(synth::evaluation_face(voice), systems, held);
 
     std::ostringstream command;
     command << "fapcast eval synth" << (args->voice.empty() ? "" : " --voice " + args->voice) << " --count "

@@ -70,6 +70,14 @@ struct EvaluationFace {
   EvaluationPoints points;
 };
 
+class Voice;
+
+// The evaluation's view of a voice: its PCA basis and RBF map, its feature points and temple
+// markers, and source vectors built as the voice build built them (head-stabilised against the
+// voice's rigid reference, feature points only, metres: voice_corpus.hpp). Keeps references
+// into `voice`. Throws std::runtime_error naming the voice file when it lacks a rigid marker.
+EvaluationFace evaluation_face(const Voice& voice);
+
 struct SystemReport {
   std::string name;
   SynthesisScore score;

@@ -80,6 +80,13 @@ class FbaBitReader {
   // Where the first error was noticed: raw bits from the start, at most the data's length.
   std::uint64_t error_bits() const { return error_bits_; }
   bool past_end() const { return pos_.raw_bits > 8 * bytes_.size(); }
+  bool at_end() const { return pos_.raw_bits == 8 * bytes_.size(); }
+  // The next bit without reading it (0 past the end). Stuffing is removed as soon as the 22nd
+  // zero is read, so the next raw bit is the next payload bit.
+  int peek_bit() const {
+    const std::uint64_t at = pos_.raw_bits;
+    return at < 8 * bytes_.size() ? (bytes_[at / 8] >> (7 - at % 8)) & 1 : 0;
+  }
 
  private:
   // Inline: the decoder's hot path is one call per bit.

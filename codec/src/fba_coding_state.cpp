@@ -31,13 +31,6 @@ std::optional<int> fba_range_field(std::int64_t levels, int fap_quant) {
   return std::nullopt;
 }
 
-std::int32_t fba_predict(int predictor, std::int32_t r1, std::int32_t r2, std::int32_t r3) {
-  if (predictor == 0) return r1;
-  const std::int64_t slope = (std::int64_t{r1} - r2) * (predictor - 7);
-  const std::int64_t p = std::int64_t{r3} + ((slope + 4) >> 3);  // C++20: >> is arithmetic
-  return static_cast<std::int32_t>(std::clamp<std::int64_t>(p, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
-}
-
 FbaRangeFields fba_default_range_fields(int fap) {
   const FapInfo& info = fap_info(fap);
   const auto i = static_cast<std::uint8_t>(info.range_i / kRangeFieldUnit);

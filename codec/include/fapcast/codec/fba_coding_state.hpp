@@ -7,7 +7,9 @@
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/frame_rate.hpp"
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <cstdint>
 #include <optional>
 
@@ -50,7 +52,13 @@ std::optional<FbaRateFields> fba_rate_fields(FrameRate rate);
 // when (k - 7) / 8 = 1 + 2 cos w, and for any quadratic at k = 31. Computed in 64 bits, rounded
 // half up (floor((d * (k - 7) + 4) / 8)), saturated to int32.
 inline constexpr int kMaxPredictor = 31;
-std::int32_t fba_predict(int predictor, std::int32_t r1, std::int32_t r2, std::int32_t r3);
+inline std::int32_t fba_predict(int predictor, std::int32_t r1, std::int32_t r2, std::int32_t r3) {
+  if (predictor == 0) return r1;
+  const std::int64_t slope = (std::int64_t{r1} - r2) * (predictor - 7);
+  const std::int64_t p = std::int64_t{r3} + ((slope + 4) >> 3);  // C++20: >> is arithmetic
+  return static_cast<std::int32_t>(
+      std::clamp<std::int64_t>(p, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
+}
 
 // What P levels are predicted from: each FAP's predictor (set by the intra header) and its last
 // three reconstructed values (all three equal to the intra value right after an intra plane).

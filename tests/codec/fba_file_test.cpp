@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace fapcast::codec {
@@ -327,6 +328,48 @@ TEST(FbaFile, GarbageIsReportedNeverThrown) {
     const auto result = decode_fba(bytes);
     EXPECT_FALSE(result.report.ok());
     EXPECT_EQ(result.sequence.frames.size(), result.report.frames_decoded + result.report.frames_lost + result.report.frames_skipped);
+  }
+}
+
+}  // namespace
+}  // namespace fapcast::codec
+
+namespace fapcast::codec {
+namespace {
+
+// fapcast's P predictors (spec/fba.md §6) are exact where the spec says so.
+TEST(FbaPrediction, ExactForAConstantPlusASinusoidAndForQuadratics) {
+  // cos w = 1/2: (k - 7) / 8 = 1 + 2 cos w = 2, k = 23; x[n] = x[n-3] + 2 (x[n-1] - x[n-2]).
+  std::vector<std::int32_t> x{100, 143, 143};
+  for (int n = 3; n < 40; ++n) x.push_back(x[n - 3] + 2 * (x[n - 1] - x[n - 2]));
+  for (std::size_t n = 3; n < x.size(); ++n) EXPECT_EQ(fba_predict(23, x[n - 1], x[n - 2], x[n - 3]), x[n]) << n;
+  for (std::int32_t n = 3; n < 40; ++n)
+    EXPECT_EQ(fba_predict(31, (n - 1) * (n - 1), (n - 2) * (n - 2), (n - 3) * (n - 3)), n * n) << n;
+  EXPECT_EQ(fba_predict(0, 5, 900, -900), 5);  // predictor 0: the previous value
+  EXPECT_EQ(fba_predict(31, 2147483647, -2147483647, 2147483647), 2147483647);  // saturates
+}
+
+// On a smooth rhythmic track the encoder chooses predictors, the file shrinks, and every value
+// still comes back within step/2.
+TEST(FbaPrediction, ChosenPredictorsShrinkARhythmicTrackWithinHalfAStep) {
+  std::vector<FapFrame> frames(500);
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    for (int n = 3; n <= 18; ++n) {
+      const double w = 0.9 + 0.02 * n;  // 3.6..4.3 Hz at 25 fps
+      frames[k].set(n, static_cast<std::int32_t>(std::lround(60 + 120 * std::sin(w * static_cast<double>(k) + n))));
+    }
+  }
+  const FapSequence seq = sequence_of(frames);
+  for (const int q : {1, 4}) {
+    const auto chosen = encode_fba(seq, {.fap_quant = q});
+    const auto plain = encode_fba(seq, {.fap_quant = q, .choose_predictors = false});
+    EXPECT_LT(static_cast<double>(chosen.size()), 0.85 * static_cast<double>(plain.size())) << "q " << q;
+    const auto result = decode_fba(chosen);
+    ASSERT_TRUE(result.report.ok());
+    ASSERT_EQ(result.sequence.frames.size(), frames.size());
+    for (std::size_t k = 0; k < frames.size(); ++k)
+      for (int n = 3; n <= 18; ++n)
+        ASSERT_LE(2 * std::abs(result.sequence.frames[k].value(n) - frames[k].value(n)), fba_step(n, q)) << k << " " << n;
   }
 }
 

@@ -76,7 +76,7 @@ void SayWritesTheTrackInSyncWithTheWav() {
 }
 
 void EveryFormatAndRate() {
-  for (const std::string& name : {"a.fba", "a.json", "a.bvh", "b.fap"}) {
+  for (const std::string name : {"a.fba", "a.json", "a.bvh", "b.fap"}) {
     const std::string fps = name == "b.fap" ? " --fps 30" : "";
     const auto r = run_command(fapcast("say \"Hello world.\" --voice " + voice() + fps + " --beta 0 --max-active 0 -o " +
                                        out(name) + " --wav " + out("hello.wav")));

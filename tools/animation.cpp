@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace fapcast::tools {
 namespace {
@@ -23,7 +24,7 @@ std::string lower_extension(const std::filesystem::path& path) {
 }  // namespace
 
 codec::FapSequence fap_track(const synth::SynthesizedTrack& track, const codec::FeaturePointBasis& basis,
-                             const AnimationOptions& options) {
+                             const AnimationOptions& options, std::int64_t end_sample) {
   codec::FapSequence voice_rate{options.name, {static_cast<std::uint32_t>(synth::kVoiceFramesPerSecond), 1},
                                 codec::pca_to_faps(track.pca_frames, basis)};
   const auto& targets = track.timeline.phones;
@@ -39,8 +40,16 @@ codec::FapSequence fap_track(const synth::SynthesizedTrack& track, const codec::
       f.viseme = {static_cast<std::uint8_t>(synth::mpeg4_viseme(track.timeline.phone_of[t])), 0, 63, false};
     }
   }
-  if (voice_rate.rate == options.rate) return voice_rate;
-  return transport::resample_track(voice_rate, options.rate, transport::ResampleMode::kLinear);
+  codec::FapSequence out = voice_rate.rate == options.rate
+                               ? std::move(voice_rate)
+                               : transport::resample_track(voice_rate, options.rate, transport::ResampleMode::kLinear);
+  // The 60 fps grid ends on the first instant at or after the audio's end; at another rate that
+  // can leave one frame shown after the sound has ended.
+  const std::int64_t sample_rate = track.timeline.sample_rate_hz;
+  const auto shown = static_cast<std::size_t>(
+      end_sample > 0 ? codec::sample_to_frame(end_sample - 1, options.rate, sample_rate) + 1 : 0);
+  if (out.frames.size() > shown) out.frames.resize(shown);
+  return out;
 }
 
 bool is_animation_output(const std::filesystem::path& path) {

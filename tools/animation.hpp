@@ -20,10 +20,11 @@ struct AnimationOptions {
 
 // FAP frames of `track` at options.rate: frame j shows the 60 fps frames interpolated at
 // j / rate seconds (transport::resample_track, linear), i.e. sample
-// codec::frame_to_sample(j, rate, sample_rate) of the WAV. Masks: drivable_faps(basis) plus the
-// tongue (43-47) and, optionally, FAP 1.
+// codec::frame_to_sample(j, rate, sample_rate) of the WAV; exactly the frames shown before
+// `end_sample` (the audio's length) are kept. Masks: drivable_faps(basis) plus the tongue (43-47)
+// and, optionally, FAP 1.
 codec::FapSequence fap_track(const synth::SynthesizedTrack& track, const codec::FeaturePointBasis& basis,
-                             const AnimationOptions& options);
+                             const AnimationOptions& options, std::int64_t end_sample);
 
 // Whether `path` names an output `say`/`animate` can write (.fap, .fba, .json, .bvh).
 bool is_animation_output(const std::filesystem::path& path);

@@ -47,7 +47,7 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const synth::TimedP
   animation.rate = {static_cast<std::uint32_t>(args.fps), 1};
   animation.viseme = args.viseme;
   animation.name = name;
-  const codec::FapSequence seq = fap_track(track, basis, animation);
+  const codec::FapSequence seq = fap_track(track, basis, animation, audio_samples);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_animation(args.output, seq, sample_rate_hz, basis.neutral);
   std::cout << args.output << ": " << seq.frames.size() << " frames at " << args.fps << " fps ("

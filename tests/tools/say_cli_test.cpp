@@ -3,6 +3,7 @@
 // of bad input (exit 1, named) and bad usage (exit 2).
 #include "support/run_command.hpp"
 
+#include "fapcast/codec/frame_rate.hpp"
 #include "fapcast/synth/lab_file.hpp"
 #include "fapcast/synth/mono_audio.hpp"
 #include "fapcast/synth/textgrid.hpp"
@@ -46,10 +47,13 @@ std::string voice() { return SayCli::voice(); }
 std::string out(const std::string& name) { return SayCli::out(name); }
 std::string take(const std::string& ext) { return SayCli::take(ext); }
 
-// ceil(samples * fps / rate): the frames that cover the audio.
-std::int64_t frames_for(const synth::MonoAudio& a, std::int64_t fps) {
+// The frames shown while the audio plays: every j whose first sample (codec::frame_to_sample)
+// lies before the audio's end.
+std::int64_t frames_for(const synth::MonoAudio& a, std::uint32_t fps) {
   const auto n = static_cast<std::int64_t>(a.samples.size());
-  return (n * fps + a.sample_rate_hz - 1) / a.sample_rate_hz;
+  std::int64_t j = 0;
+  while (codec::frame_to_sample(j, {fps, 1}, a.sample_rate_hz) < n) ++j;
+  return j;
 }
 
 void SayWritesTheTrackInSyncWithTheWav() {

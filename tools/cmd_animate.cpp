@@ -20,9 +20,14 @@ using namespace fapcast;
 // An alignment may end up to 20 ms after its audio (rounding, a trailing pause) and is cut there.
 constexpr std::int64_t kToleranceMs = 20;
 
-synth::Alignment read_alignment(const std::string& path) {
+std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+synth::Alignment read_alignment(const std::string& path) {
+  const std::string ext = lower_extension(path);
   const std::string bytes = transport::read_file(path);
   if (ext == ".textgrid") return synth::read_textgrid(bytes, path);
   const synth::LabFile lab = synth::read_lab(bytes, path);
@@ -46,8 +51,7 @@ const tools::Registration reg{"21-animate", [](CLI::App& app) {
   tools::add_synthesis_options(cmd, args->synthesis);
   cmd->callback([args] {
     tools::check_animation_output("animate", args->synthesis);
-    std::string ext = std::filesystem::path(args->align).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lower_extension(args->align);
     if (ext != ".textgrid" && ext != ".lab")
       throw tools::UsageError("animate: alignment '" + args->align + "' must end in .TextGrid or .lab");
     const synth::MonoAudio audio = synth::read_wav(args->wav);

@@ -10,7 +10,7 @@
 #include "fapcast/synth/held_out_sentences.hpp"
 #include "fapcast/synth/reference_talker.hpp"
 #include "fapcast/synth/synthesis_evaluation.hpp"
-#include "fapcast/synth/unit_search.hpp"
+#include "fapcast/synth/synthesis.hpp"
 #include "fapcast/synth/voice.hpp"
 #include "fapcast/transport/file_io.hpp"
 
@@ -23,14 +23,14 @@
 namespace {
 using namespace fapcast;
 
-// The method under test: the Viterbi search over the voice's phone graph and render_units.
-synth::NamedSystem variable_length_system(const synth::Voice& voice, synth::SearchOptions search) {
-  return {"variable-length", [&voice, search](const synth::HeldOutUtterance& u) {
-            std::vector<synth::VisemeClass> visemes;
-            for (const auto& t : u.targets) visemes.push_back(t.viseme);
-            const auto result = synth::unit_search(voice.graph(), visemes, search);
-            return synth::SystemOutput{synth::render_units(voice.graph(), voice.frame_coefficients(), result, u.targets),
-                                       result.units.size()};
+// The method under test: synthesize() - the Viterbi search over the voice's phone graph and
+// render_units - from the utterance's own timed phones, as `fapcast say` runs it.
+synth::NamedSystem variable_length_system(const synth::Voice& voice, synth::SynthesisOptions options) {
+  return {"variable-length", [&voice, options](const synth::HeldOutUtterance& u) {
+            const auto track = synth::synthesize(voice.graph(), voice.frame_coefficients(), u.speech.phones,
+                                                 u.speech.audio.sample_rate_hz,
+                                                 static_cast<std::int64_t>(u.speech.audio.samples.size()), options, u.id);
+            return synth::SystemOutput{track.pca_frames, track.search.units.size()};
           }};
 }
 
@@ -76,7 +76,7 @@ const tools::Registration reg{"71-eval-synth", [](CLI::App& app) {
     if (!args->quiet) std::cerr << "recording " << args->count << " held-out sentences (seed " << args->seed << ")\n";
     const auto held = synth::record_held_out(actor, args->seed, args->count);
     const std::vector<synth::NamedSystem> systems{
-        variable_length_system(voice, {args->beta, args->max_active > 0 ? std::optional(args->max_active) : std::nullopt}),
+        variable_length_system(voice, {{args->beta, args->max_active > 0 ? std::optional(args->max_active) : std::nullopt}, {}}),
         synth::diviseme_system(voice.graph(), voice.frame_coefficients()),
         synth::diviseme_system(voice.graph(), voice.frame_coefficients(), {}, synth::DivisemeChoiceRule::kFirst),
         synth::dominance_system(voice.graph(), voice.frame_coefficients())};

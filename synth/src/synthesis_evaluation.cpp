@@ -4,6 +4,8 @@
 #include "fapcast/synth/portable_random.hpp"
 #include "fapcast/synth/recording_script.hpp"
 #include "fapcast/synth/reference_talker.hpp"
+#include "fapcast/synth/synthesis.hpp"
+#include "fapcast/synth/voice_frame_grid.hpp"
 
 #include <cstdio>
 #include <memory>
@@ -12,31 +14,19 @@
 namespace fapcast::synth {
 namespace {
 
-constexpr int kFramesPerSecond = 60;
-
 // Lip curves of vertex tracks (metres) in millimetres.
 LipCurves curves_mm(const Eigen::MatrixXf& tracks, const EvaluationPoints& points) {
   return lip_curves(Eigen::MatrixXf(1000.0f * tracks), points.lip_measure);
 }
 
-}  // namespace
-
-std::vector<TargetPhone> target_phones_of(std::span<const TimedPhone> phones, int sample_rate_hz) {
-  if (sample_rate_hz <= 0) throw std::invalid_argument("target phones: sample rate must be positive");
-  // Nearest frame boundary, in integers: round(sample * fps / rate).
-  auto frame = [&](std::int64_t sample) {
-    return (2 * sample * kFramesPerSecond + sample_rate_hz) / (2 * std::int64_t{sample_rate_hz});
-  };
-  std::vector<TargetPhone> targets;
-  for (const auto& p : phones) {
-    const std::int64_t first = targets.empty() ? frame(p.start_sample) : targets.back().end_frame;
-    const std::int64_t end = frame(p.end_sample);
-    if (end <= first) continue;
-    const VisemeClass v = search_viseme(p.phone);
-    targets.push_back({v, first, end, v == VisemeClass::kBilabial || v == VisemeClass::kLabiodental});
-  }
-  return targets;
+// The targets with every class the voice lacks replaced, as synthesize() does.
+std::vector<TargetPhone> covered(const PhoneGraph& graph, std::span<const TargetPhone> targets) {
+  std::vector<TargetPhone> out(targets.begin(), targets.end());
+  for (auto& t : out) t.viseme = covered_viseme(graph, t.viseme);
+  return out;
 }
+
+}  // namespace
 
 std::vector<HeldOutUtterance> record_held_out(const FaceModel& actor, std::uint64_t seed,
                                               std::size_t count) {
@@ -51,7 +41,9 @@ std::vector<HeldOutUtterance> record_held_out(const FaceModel& actor, std::uint6
     HeldOutUtterance u;
     u.id = id;
     u.text = item.text;
-    u.targets = target_phones_of(take.speech.phones, take.speech.audio.sample_rate_hz);
+    u.targets = place_on_voice_grid(take.speech.phones, take.speech.audio.sample_rate_hz,
+                                    static_cast<std::int64_t>(take.speech.audio.samples.size()), id)
+                    .phones;
     u.speech = std::move(take.speech);
     u.recorded = std::move(take.clean);
     out.push_back(std::move(u));
@@ -63,8 +55,9 @@ NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_
                             RenderOptions options, DivisemeChoiceRule rule) {
   return {rule == DivisemeChoiceRule::kFirst ? "diviseme-first" : "diviseme",
           [&graph, &pca_frames, options, rule](const HeldOutUtterance& u) {
-            const auto selection = select_divisemes(graph, u.targets, rule);
-            return SystemOutput{render_divisemes(graph, pca_frames, selection, u.targets, options),
+            const auto targets = covered(graph, u.targets);
+            const auto selection = select_divisemes(graph, targets, rule);
+            return SystemOutput{render_divisemes(graph, pca_frames, selection, targets, options),
                                 selection.divisemes.size() + selection.unrecorded};
           }};
 }
@@ -73,8 +66,8 @@ NamedSystem dominance_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca
                              DominanceBaselineOptions options) {
   // Targets once, not per utterance.
   auto targets = std::make_shared<VisemeTargets>(viseme_targets(graph, pca_frames));
-  return {"dominance", [targets, options](const HeldOutUtterance& u) {
-            return SystemOutput{dominance_interpolation(*targets, u.targets, options), 0};
+  return {"dominance", [&graph, targets, options](const HeldOutUtterance& u) {
+            return SystemOutput{dominance_interpolation(*targets, covered(graph, u.targets), options), 0};
           }};
 }
 

@@ -15,23 +15,6 @@
 namespace fapcast::synth {
 namespace {
 
-TEST(TargetPhonesOf, RoundsToTheFrameGridAndDropsInvisiblePhones) {
-  const int rate = 22050;  // 367.5 samples per frame
-  auto timed = [](Phone p, std::int64_t s, std::int64_t e) { return TimedPhone{p, s, e, s, s, kNoWord, ""}; };
-  const std::vector<TimedPhone> phones{timed(Phone::SIL, 0, 3675), timed(Phone::HH, 3675, 3700),
-                                       timed(Phone::P, 3700, 7350), timed(Phone::AA, 7350, 11025)};
-  const auto t = target_phones_of(phones, rate);
-  ASSERT_EQ(t.size(), 3u) << "the 25-sample HH rounds to no frame";
-  EXPECT_EQ(t[0].end_frame, 10);
-  EXPECT_EQ(t[1].first_frame, 10);
-  EXPECT_EQ(t[1].end_frame, 20);
-  EXPECT_EQ(t[1].viseme, VisemeClass::kBilabial);
-  EXPECT_TRUE(t[1].hold) << "a closure is held";
-  EXPECT_FALSE(t[2].hold);
-  EXPECT_EQ(t[2].end_frame, 30);
-  EXPECT_THROW(target_phones_of(phones, 0), std::invalid_argument);
-}
-
 // Source vectors: every marker, metres; the face's "vertex" of a marker is its row.
 Eigen::MatrixXd markers_m(const MarkerFrames& take) { return 0.01 * take.positions_cm; }
 
@@ -44,6 +27,7 @@ TEST(EvaluateSynthesis, AnOracleBeatsAFrozenFace) {
     ASSERT_FALSE(u.targets.empty());
     EXPECT_NEAR(static_cast<double>(u.targets.back().end_frame), static_cast<double>(u.recorded.frame_count()), 2.0)
         << "targets span the recording";
+    EXPECT_EQ(u.targets.front().first_frame, 0) << "the grid starts at sample 0";
   }
 
   // An (almost) identity retargeting map fitted on 21 frames of the first utterance.

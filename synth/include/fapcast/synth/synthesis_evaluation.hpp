@@ -26,14 +26,9 @@ struct HeldOutUtterance {
   std::string id;                    // "heldout01", ...
   std::string text;
   Speech speech;                     // audio and timed phones
-  std::vector<TargetPhone> targets;  // the phones on the 60 fps grid (target_phones_of)
+  std::vector<TargetPhone> targets;  // the phones on the 60 fps grid (place_on_voice_grid)
   MarkerFrames recorded;             // ground truth: the actor's clean markers (cm, 60 fps)
 };
-
-// Timed phones on the 60 fps grid: phone boundaries at round(sample * 60 / rate); a phone that
-// rounds to no frame is dropped (it is invisible at 60 fps); /p b m f v/ are held (their contact
-// must survive smoothing). Throws std::invalid_argument for a non-positive rate.
-std::vector<TargetPhone> target_phones_of(std::span<const TimedPhone> phones, int sample_rate_hz);
 
 // Records the first `count` of kHeldOutSentences (at most all of them) on `actor`, drawing each
 // take's variation from `seed` (one split stream per take, as the corpus recorder does).
@@ -53,6 +48,8 @@ struct NamedSystem {
 };
 
 // The two baselines over a voice's phone graph and PCA frames (frames x k); both keep references.
+// A target class the voice never recorded is replaced as synthesize() replaces it
+// (covered_viseme), so every system says the same visemes.
 NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
                             RenderOptions options = {},
                             DivisemeChoiceRule rule = DivisemeChoiceRule::kBestDuration);

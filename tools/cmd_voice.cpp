@@ -105,3 +105,17 @@ const fapcast::tools::Registration info_reg{"61-voice-info", [](CLI::App& app) {
 }};
 
 }  // namespace
+
+namespace {
+
+const fapcast::tools::Registration default_reg{"62-voice-default", [](CLI::App& app) {
+  auto quiet = std::make_shared<bool>(false);
+  auto* cmd = fapcast::tools::command_group(app, "voice", kVoiceGroupHelp)
+                  ->add_subcommand("default",
+                                   "Build the default voice (SYNTHETIC reference corpus, seed 1) into the cache "
+                                   "unless it is there, and print its path");
+  cmd->add_flag("-q,--quiet", *quiet, "No progress on standard error");
+  cmd->callback([quiet] { std::cout << fapcast::tools::ensure_default_voice(*quiet).string() << "\n"; });
+}};
+
+}  // namespace

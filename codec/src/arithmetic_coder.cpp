@@ -3,6 +3,7 @@
 #include "fapcast/codec/fba_errc.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cassert>
 
 namespace fapcast::codec {
@@ -19,14 +20,24 @@ void FrequencyModel::reset(int size) {
 }
 
 int FrequencyModel::find(std::uint32_t target) const {
-  // The table descends: the first entry after the total that is <= target ends the symbol.
+  // The table descends: the answer is 1 + the number of entries after the total above target.
+  // Small tables (every P model the encoder sizes to its data) are counted without branches,
+  // which compilers vectorise; large ones (intra models at fap_quant 0) are searched.
+  const std::size_t n = cumulative_.size();
+  if (n <= 257) {
+    const auto t = static_cast<std::uint16_t>(target);  // target < total <= kMaxTotal
+    const std::uint16_t* c = cumulative_.data();
+    std::uint16_t above = 0;
+    for (std::size_t i = 1; i < n; ++i) above = static_cast<std::uint16_t>(above + (c[i] > t ? 1 : 0));
+    return 1 + above;
+  }
   const auto it = std::partition_point(cumulative_.begin() + 1, cumulative_.end() - 1,
                                        [target](std::uint16_t c) { return c > target; });
   return static_cast<int>(it - cumulative_.begin());
 }
 
 void FrequencyModel::update(int s) {
-  if (cumulative_[0] >= kMaxTotal) {
+  if (cumulative_[0] + kIncrement > kMaxTotal) {
     // Halve each count (keeping it >= 1) and rebuild the running sums from the top.
     std::uint16_t sum = 0;
     for (std::size_t i = cumulative_.size() - 1; i-- > 0;) {
@@ -35,7 +46,7 @@ void FrequencyModel::update(int s) {
       cumulative_[i] = sum;
     }
   }
-  for (int i = 0; i <= s; ++i) ++cumulative_[static_cast<std::size_t>(i)];
+  for (int i = 0; i <= s; ++i) cumulative_[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(cumulative_[static_cast<std::size_t>(i)] + kIncrement);
 }
 
 void ArithmeticEncoder::bit_plus_follow(int bit) {
@@ -76,35 +87,38 @@ void ArithmeticEncoder::flush() {
   high_ = 65535;
 }
 
-ArithmeticDecoder::ArithmeticDecoder(FbaBitReader& in) : in_(in) {
-  for (int i = 0; i < kLookaheadBits; ++i) value_ = (value_ << 1) | static_cast<std::uint32_t>(in_.lookahead_bit());
-}
+ArithmeticDecoder::ArithmeticDecoder(FbaBitReader& in) : in_(in), offset_(in_.lookahead_bits(kLookaheadBits)) {}
 
 int ArithmeticDecoder::decode(FrequencyModel& model) {
   const std::uint32_t length = high_ - low_ + 1;
   const std::uint32_t total = model.cumulative(0);
-  const std::uint32_t cum = ((value_ - low_ + 1) * total - 1) / length;
+  const std::uint32_t cum = ((offset_ + 1) * total - 1) / length;
   const int i = model.find(cum);
-  high_ = low_ - 1 + length * model.cumulative(i - 1) / total;
-  low_ += length * model.cumulative(i) / total;
+  const std::uint32_t below = length * model.cumulative(i) / total;
+  std::uint32_t high = low_ - 1 + length * model.cumulative(i - 1) / total;
+  std::uint32_t low = low_ + below;
+  std::uint32_t offset = offset_ - below;
+  // Renormalise as the encoder does, in bulk: the top bits low and high share leave together
+  // (the "emit 0" and "emit 1" cases), then the middle case one shift at a time. The code value
+  // moves with low, so only offset = value - low takes the shifted-in bits, all at once (at most
+  // 16: the interval is never empty).
+  int shifts = 0;
   for (;;) {
-    if (high_ < kHalf) {
-      // nothing to subtract
-    } else if (low_ >= kHalf) {
-      value_ -= kHalf;
-      low_ -= kHalf;
-      high_ -= kHalf;
-    } else if (low_ >= kQuarter && high_ < kThreeQuarters) {
-      value_ -= kQuarter;
-      low_ -= kQuarter;
-      high_ -= kQuarter;
-    } else {
-      break;
+    const int same = std::countl_zero(static_cast<std::uint16_t>(low ^ high));
+    if (same > 0) {
+      low = (low << same) & 0xFFFFu;
+      high = ((high << same) | ((1u << same) - 1)) & 0xFFFFu;
+      shifts += same;
     }
-    low_ = 2 * low_;
-    high_ = 2 * high_ + 1;
-    value_ = 2 * value_ + static_cast<std::uint32_t>(in_.lookahead_bit());
+    if (low < kQuarter || high >= kThreeQuarters) break;
+    low = 2 * (low - kQuarter);
+    high = 2 * (high - kQuarter) + 1;
+    ++shifts;
   }
+  if (shifts > 0) offset = (offset << shifts) | in_.lookahead_bits(shifts);
+  low_ = low;
+  high_ = high;
+  offset_ = offset;
   model.update(i - 1);
   return i - 1;
 }

@@ -1,6 +1,9 @@
 #include "fapcast/codec/fba_coding_state.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cstdint>
+#include <limits>
 #include <cstdlib>
 
 namespace fapcast::codec {
@@ -109,13 +112,18 @@ struct Fnv {
 }  // namespace
 
 void FbaCodingState::begin_intra(int new_fap_quant, const FapMask& new_mask,
-                                 const std::array<FbaRangeFields, kFapCount>& new_ranges) {
+                                 const std::array<FbaRangeFields, kFapCount>& new_ranges,
+                                 const std::array<std::uint8_t, kFapCount>& new_predictors) {
   have_intra = true;
+  prediction.predictor = new_predictors;
   fap_quant = new_fap_quant;
   mask = new_mask;
   ranges = new_ranges;
   for (int fap = 1; fap <= kFapCount; ++fap) {
-    if (fap < kFirstLowLevelFap || !mask.test(fap)) ranges[static_cast<std::size_t>(fap - 1)] = {};  // carry no meaning
+    if (fap < kFirstLowLevelFap || !mask.test(fap)) {  // carry no meaning
+      ranges[static_cast<std::size_t>(fap - 1)] = {};
+      prediction.predictor[static_cast<std::size_t>(fap - 1)] = 0;
+    }
   }
   reset_models(intra, mask, ranges, fap_quant, true);
   reset_models(predicted, mask, ranges, fap_quant, false);
@@ -132,7 +140,9 @@ std::uint64_t FbaCodingState::checksum() const {
     f.add(mask.test(fap));
     f.add(static_cast<std::uint64_t>(ranges[i].i_max) << 24 | std::uint64_t{ranges[i].i_min} << 16 |
           std::uint64_t{ranges[i].p_max} << 8 | ranges[i].p_min);
-    f.add(static_cast<std::uint64_t>(static_cast<std::int64_t>(reconstructed[i])));
+    const FbaPrediction& p = prediction;
+    f.add(p.predictor[i]);
+    for (const std::int32_t r : {p.r1[i], p.r2[i], p.r3[i]}) f.add(static_cast<std::uint64_t>(std::int64_t{r}));
   }
   f.add(std::uint64_t{viseme.select1} << 24 | std::uint64_t{viseme.select2} << 16 | std::uint64_t{viseme.blend} << 8 | viseme.def);
   f.add(std::uint64_t{expression.select1} << 40 | std::uint64_t{expression.intensity1} << 32 |

@@ -27,6 +27,7 @@ class FbaCategory final : public std::error_category {
       case fba_errc::missing_end_code: return "missing-end-code: the file does not close with 0x000001B1";
       case fba_errc::uncodable_value: return "uncodable-value: a value beyond the codable range";
       case fba_errc::uncodable_frame_rate: return "uncodable-frame-rate: the frame rate has no frame_rate/seconds form";
+      case fba_errc::bad_frame_number: return "bad-frame-number: an intra plane's frame_number is not the frame it lands on";
     }
     return "unknown fba error " + std::to_string(code);
   }

@@ -3,7 +3,10 @@
 #include "fapcast/codec/fba_errc.hpp"
 #include "fba_plane.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cassert>
+#include <limits>
 
 namespace fapcast::codec {
 namespace {
@@ -20,30 +23,75 @@ void check(const FapFrame& frame, int fap_quant, std::uint64_t index) {
   if (auto e = detail::check_codable(frame, fap_quant, index, detail)) refuse(e, detail);
 }
 
+// fapcast: the predictor of each FAP for the P planes of frames [k + 1, end), chosen by coding
+// them closed loop with every predictor and counting about 2 bits per binary digit of a level.
+// All 0 (no predictor fields sent) unless the choice saves more bits than the fields cost.
+std::array<std::uint8_t, kFapCount> choose_predictors(const std::vector<FapFrame>& frames, std::size_t k,
+                                                      std::size_t end, const FapMask& mask, int q) {
+  std::array<std::uint8_t, kFapCount> best{};
+  std::int64_t saved = 0, fields = 1;
+  for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
+    if (!mask.test(n)) continue;
+    fields += 5;
+    const std::size_t i = static_cast<std::size_t>(n - 1);
+    const int step = fba_step(n, q);
+    std::int64_t plain = 0, best_bits = 0;
+    for (int predictor = 0; predictor <= kMaxPredictor; ++predictor) {
+      const std::int32_t first = fba_quantise(frames[k].values[i], step) * step;
+      std::int32_t r1 = first, r2 = first, r3 = first;
+      std::int64_t bits = 0;
+      for (std::size_t j = k + 1; j < end && (predictor == 0 || bits < best_bits); ++j) {
+        const std::int32_t p = fba_predict(predictor, r1, r2, r3);
+        const std::int32_t level = fba_quantise(std::int64_t{frames[j].values[i]} - p, step);
+        bits += 1 + 2 * static_cast<std::int64_t>(std::bit_width(static_cast<std::uint32_t>(level < 0 ? -level : level)));
+        r3 = r2;
+        r2 = r1;
+        r1 = static_cast<std::int32_t>(std::clamp<std::int64_t>(std::int64_t{p} + std::int64_t{level} * step, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
+      }
+      if (predictor == 0) {
+        plain = best_bits = bits;
+      } else if (bits < best_bits) {
+        best_bits = bits;
+        best[i] = static_cast<std::uint8_t>(predictor);
+      }
+    }
+    saved += plain - best_bits;
+  }
+  if (saved <= fields) best = {};
+  return best;
+}
+
 // Plans the intra period that starts at frame k: the intra header (ranges sized to the
-// frames it heads) and the end of the period (exclusive). The period ends at intra_period
-// frames, at a mask change, or before a P difference no 5-bit field reaches.
+// frames it heads, predictors chosen for them) and the end of the period (exclusive). The period
+// ends at intra_period frames, at a mask change, or before a P difference no 5-bit field reaches.
 std::size_t plan_intra_period(const std::vector<FapFrame>& frames, std::size_t k,
                               const FbaEncoderOptions& o, IntraHeader& header) {
   const FapFrame& first = frames[k];
   const int q = o.fap_quant;
+  const auto period = static_cast<std::size_t>(o.intra_period);
+  std::size_t nominal_end = k + 1;
+  while (nominal_end < frames.size() && nominal_end - k < period && frames[nominal_end].mask == first.mask) {
+    check(frames[nominal_end], q, nominal_end);
+    ++nominal_end;
+  }
   const detail::FbaLevels levels = detail::intra_levels(first, q);
   header.fap_quant = q;
   header.ranges = detail::intra_range_fields(levels, first.mask, q);
-  std::array<std::int32_t, kFapCount> reconstructed{};
-  detail::reconstruct(reconstructed, levels, first.mask, q, true);
+  if (o.choose_predictors) header.predictors = choose_predictors(frames, k, nominal_end, first.mask, q);
+  header.frame_number = static_cast<std::uint16_t>(k);
+  FbaPrediction prediction;
+  prediction.predictor = header.predictors;
+  detail::reconstruct(prediction, levels, first.mask, q, true);
   LevelExtremes extremes;
   std::size_t end = k + 1;
-  const auto period = static_cast<std::size_t>(o.intra_period);
-  while (end < frames.size() && end - k < period && frames[end].mask == first.mask) {
-    check(frames[end], q, end);
-    const detail::FbaLevels d = detail::predicted_levels(reconstructed, q, frames[end]);
+  while (end < nominal_end) {
+    const detail::FbaLevels d = detail::predicted_levels(prediction, first.mask, q, frames[end]);
     LevelExtremes trial = extremes;
     trial.add(d);
     auto ranges = header.ranges;
     if (!detail::size_predicted_fields(trial, first.mask, q, ranges)) break;
     extremes = trial;
-    detail::reconstruct(reconstructed, d, first.mask, q, false);
+    detail::reconstruct(prediction, d, first.mask, q, false);
     ++end;
   }
   const bool sized = detail::size_predicted_fields(extremes, first.mask, q, header.ranges);
@@ -80,12 +128,15 @@ std::vector<std::uint8_t> encode_fba(const FapSequence& seq, const FbaEncoderOpt
     IntraHeader header;
     header.rate = *rate;
     const std::size_t end = plan_intra_period(seq.frames, k, o, header);
+    // One run: a start code, the intra plane, its P planes packed after it, alignment.
+    out.start_code(kFbaPlaneStartCode);
     detail::write_plane(state, seq.frames[k], &header, out);
     for (std::size_t j = k + 1; j < end; ++j) {
-      assert(detail::levels_fit(detail::predicted_levels(state.reconstructed, state.fap_quant, seq.frames[j]),
+      assert(detail::levels_fit(detail::predicted_levels(state.prediction, state.mask, state.fap_quant, seq.frames[j]),
                                 seq.frames[j].mask, state, false));
       detail::write_plane(state, seq.frames[j], nullptr, out);
     }
+    out.align();
     k = end;
   }
   out.start_code(kFbaEndCode);
@@ -105,7 +156,6 @@ FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes) {
     if (report.errors.size() < FbaDecodeReport::kMaxReportedErrors) report.errors.push_back({offset, code});
   };
   std::vector<FapFrame>& frames = result.sequence.frames;
-  const auto hold = [&] { frames.push_back(frames.empty() ? FapFrame{} : frames.back()); };
 
   std::size_t at = find_start_code(bytes, 0);
   if (at != 0 || bytes.size() < 4 || bytes[3] != (kFbaObjectStartCode & 0xFF)) {
@@ -116,9 +166,19 @@ FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes) {
   }
 
   FbaCodingState state;
-  detail::PlaneInfo info;
   bool rate_known = false, in_loss = false, ended = false;
   std::uint64_t planes = 0;
+  std::uint64_t pending_lost = 0;  // planes met in corrupt runs since the last good run
+  // Lost and skipped frames are held copies: together at most what the bytes could describe
+  // (a plane is at least 4 bits), so a small file cannot ask for a huge output.
+  const auto affordable = [&](std::uint64_t more) {
+    return report.frames_lost + report.frames_skipped + more <= detail::kMaxSkipFrames + 2 * bytes.size();
+  };
+  const auto lose = [&](std::size_t slot, std::uint64_t count) {
+    const FapFrame held = slot == 0 ? FapFrame{} : frames[slot - 1];
+    frames.insert(frames.begin() + static_cast<std::ptrdiff_t>(slot), count, held);
+    report.frames_lost += count;
+  };
   while (at < bytes.size() && !ended) {
     const std::size_t next = find_start_code(bytes, at + 3);
     const std::span<const std::uint8_t> unit = bytes.subspan(at, next - at);
@@ -126,39 +186,81 @@ FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes) {
     if (unit.size() >= 4 && code == (kFbaEndCode & 0xFF)) {
       ended = true;
       if (unit.size() > 4 || next < bytes.size()) note(at + 4, fba_errc::trailing_bytes);
-    } else if (unit.size() < 4 || code != (kFbaPlaneStartCode & 0xFF)) {
+      at = next;
+      continue;
+    }
+    if (unit.size() < 4 || code != (kFbaPlaneStartCode & 0xFF)) {
       note(at, unit.size() < 4 ? make_error_code(fba_errc::truncated) : make_error_code(fba_errc::bad_start_code));
-      ++report.frames_lost;
-      hold();
+      ++pending_lost;
       in_loss = true;
       state.have_intra = false;
-    } else {
+      at = next;
+      continue;
+    }
+    // A run: planes back to back after one start code. A P plane begins with is_intra = 0; a 1
+    // where a plane could begin is the first alignment bit.
+    FbaBitReader in(unit.subspan(4));
+    const std::size_t first_slot = frames.size();
+    std::uint64_t run_planes = 0, run_skipped = 0;
+    detail::PlaneInfo first;
+    std::error_code e;
+    for (;;) {
+      ++run_planes;
       ++planes;
       FapFrame frame;
-      std::error_code e = detail::read_plane(state, unit, frame, info);
-      if (!e && report.frames_skipped + static_cast<std::uint64_t>(info.skip_frames) >
+      detail::PlaneInfo info;
+      e = detail::read_plane(state, in, frame, info);
+      if (!e && report.frames_skipped + run_skipped + static_cast<std::uint64_t>(info.skip_frames) >
                     detail::kMaxSkipFrames + planes) {
         e = fba_errc::skip_too_long;  // more held frames than the file could justify
-        state.have_intra = false;
+        in.fail(e);
       }
-      if (e) {
-        // P planes refused after a loss are part of that loss, not new errors.
-        if (!(in_loss && e == fba_errc::predicted_without_intra)) note(at + info.error_bit / 8, e);
-        in_loss = true;
-        ++report.frames_lost;
-        hold();
-      } else {
-        in_loss = false;
-        if (!rate_known) result.sequence.rate = state.rate;
-        rate_known = true;
-        for (int i = 0; i < info.skip_frames; ++i) hold();
-        report.frames_skipped += static_cast<std::uint64_t>(info.skip_frames);
-        frames.push_back(frame);
-        ++report.frames_decoded;
+      if (e) break;
+      if (run_planes == 1) first = info;
+      for (int i = 0; i < info.skip_frames; ++i) frames.push_back(frames.empty() ? FapFrame{} : frames.back());  // held
+      run_skipped += static_cast<std::uint64_t>(info.skip_frames);
+      frames.push_back(frame);
+      if (in.at_end()) break;
+      if (in.peek_bit() == 1) {
+        in.expect_end();
+        e = in.error();
+        break;
       }
     }
+    if (e) {
+      state.have_intra = false;
+      frames.resize(first_slot);  // a corrupt run is lost whole: its frames cannot be trusted
+      // P planes refused after a loss are part of that loss, not new errors.
+      if (!(in_loss && e == fba_errc::predicted_without_intra)) note(at + 4 + in.error_bits() / 8, e);
+      in_loss = true;
+      pending_lost += run_planes;
+      at = next;
+      continue;
+    }
+    // A good run. Its intra plane's frame_number says where it lands, so how many were lost.
+    if (first.intra) {
+      const std::uint64_t slot = first_slot + static_cast<std::uint64_t>(first.skip_frames);
+      const std::uint64_t gap = static_cast<std::uint16_t>(first.frame_number - static_cast<std::uint16_t>(slot));
+      std::uint64_t lost = in_loss ? pending_lost : 0;
+      if (gap != 0 && !in_loss) note(at + 4, fba_errc::bad_frame_number);  // a run went missing whole
+      if ((gap != 0 || in_loss) && affordable(gap)) {
+        lost = gap;
+      } else if (gap != 0 && in_loss) {
+        note(at + 4, fba_errc::bad_frame_number);
+      }
+      if (lost > 0 && affordable(lost)) lose(first_slot, lost);
+    } else if (in_loss && affordable(pending_lost)) {
+      lose(first_slot, pending_lost);
+    }
+    in_loss = false;
+    pending_lost = 0;
+    report.frames_decoded += run_planes;
+    report.frames_skipped += run_skipped;
+    if (!rate_known) result.sequence.rate = state.rate;
+    rate_known = true;
     at = next;
   }
+  if (in_loss && affordable(pending_lost)) lose(frames.size(), pending_lost);
   if (!ended) note(bytes.size(), fba_errc::missing_end_code);
   return result;
 }

@@ -102,7 +102,7 @@ void write_segments(FbaCodingState& s, const FapFrame& frame, bool intra, FbaBit
     s.expression = frame.expression;
   }
   const FbaLevels levels =
-      intra ? intra_levels(frame, s.fap_quant) : predicted_levels(s.reconstructed, s.fap_quant, frame);
+      intra ? intra_levels(frame, s.fap_quant) : predicted_levels(s.prediction, s.mask, s.fap_quant, frame);
   bool any = false;
   ArithmeticEncoder ac(out);
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
@@ -111,7 +111,7 @@ void write_segments(FbaCodingState& s, const FapFrame& frame, bool intra, FbaBit
     any = true;
   }
   if (any) ac.flush();
-  reconstruct(s.reconstructed, levels, s.mask, s.fap_quant, intra);
+  reconstruct(s.prediction, levels, s.mask, s.fap_quant, intra);
 }
 
 void read_segments(FbaCodingState& s, bool intra, FbaBitReader& in, FapFrame& out) {
@@ -147,9 +147,9 @@ void read_segments(FbaCodingState& s, bool intra, FbaBitReader& in, FapFrame& ou
     if (s.mask.test(n)) levels[at(n)] = ad.decode(m.fap[at(n)]) - symbol_offset(s.ranges[at(n)], intra, s.fap_quant);
   }
   ad.finish();
-  reconstruct(s.reconstructed, levels, s.mask, s.fap_quant, intra);
+  reconstruct(s.prediction, levels, s.mask, s.fap_quant, intra);
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
-    if (s.mask.test(n)) out.values[at(n)] = s.reconstructed[at(n)];
+    if (s.mask.test(n)) out.values[at(n)] = s.prediction.r1[at(n)];
   }
 }
 
@@ -165,26 +165,29 @@ FbaLevels intra_levels(const FapFrame& frame, int fap_quant) {
   return levels;
 }
 
-FbaLevels predicted_levels(const std::array<std::int32_t, kFapCount>& reconstructed, int fap_quant,
-                           const FapFrame& frame) {
+FbaLevels predicted_levels(const FbaPrediction& p, const FapMask& mask, int fap_quant, const FapFrame& frame) {
   FbaLevels levels{};
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
-    if (!frame.mask.test(n)) continue;
-    const std::int64_t error = std::int64_t{frame.values[at(n)]} - reconstructed[at(n)];
-    levels[at(n)] = fba_quantise(error, fba_step(n, fap_quant));
+    if (!mask.test(n) || !frame.mask.test(n)) continue;
+    const std::size_t i = at(n);
+    const std::int64_t error = std::int64_t{frame.values[i]} - fba_predict(p.predictor[i], p.r1[i], p.r2[i], p.r3[i]);
+    levels[i] = fba_quantise(error, fba_step(n, fap_quant));
   }
   return levels;
 }
 
-void reconstruct(std::array<std::int32_t, kFapCount>& reconstructed, const FbaLevels& levels,
-                 const FapMask& mask, int fap_quant, bool intra) {
+void reconstruct(FbaPrediction& p, const FbaLevels& levels, const FapMask& mask, int fap_quant, bool intra) {
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
     if (!mask.test(n)) continue;
+    const std::size_t i = at(n);
     // 64-bit, then saturated: a hostile stream may pile up P steps; an encoder's never do.
-    const std::int64_t delta = std::int64_t{levels[at(n)]} * fba_step(n, fap_quant);
-    const std::int64_t value = intra ? delta : reconstructed[at(n)] + delta;
-    reconstructed[at(n)] = static_cast<std::int32_t>(
+    const std::int64_t delta = std::int64_t{levels[i]} * fba_step(n, fap_quant);
+    const std::int64_t value = intra ? delta : fba_predict(p.predictor[i], p.r1[i], p.r2[i], p.r3[i]) + delta;
+    const auto r = static_cast<std::int32_t>(
         std::clamp<std::int64_t>(value, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
+    p.r3[i] = intra ? r : p.r2[i];
+    p.r2[i] = intra ? r : p.r1[i];
+    p.r1[i] = r;
   }
 }
 
@@ -267,10 +270,7 @@ bool size_predicted_fields(const LevelExtremes& extremes, const FapMask& mask, i
 
 // --- planes -------------------------------------------------------------------------------------
 
-std::uint64_t write_plane(FbaCodingState& state, const FapFrame& frame, const IntraHeader* intra,
-                          FbaBitWriter& out) {
-  const std::uint64_t start = fba_bit_count(out.position());
-  out.start_code(kFbaPlaneStartCode);
+void write_plane(FbaCodingState& state, const FapFrame& frame, const IntraHeader* intra, FbaBitWriter& out) {
   out.put_bit(intra != nullptr);
   out.put(kObjectMaskFap, 2);
   if (intra) {
@@ -292,31 +292,32 @@ std::uint64_t write_plane(FbaCodingState& state, const FapFrame& frame, const In
       if (marker) out.put_bit(1);
       out.put(field(ranges[at(n)], flag), 5);
     });
+    // fapcast fields (spec/fba.md §4): frame_number, is_predictor, predictor per masked FAP.
+    out.put(intra->frame_number, 16);
+    std::array<std::uint8_t, kFapCount> predictors = intra->predictors;
+    bool any = false;
+    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
+      if (!frame.mask.test(n)) predictors[at(n)] = 0;
+      any = any || predictors[at(n)] != 0;
+    }
+    out.put_bit(any);
+    for (int n = kFirstLowLevelFap; n <= kFapCount && any; ++n) {
+      if (frame.mask.test(n)) out.put(predictors[at(n)], 5);
+    }
     state.rate = intra->rate.rate();
-    state.begin_intra(intra->fap_quant, frame.mask, intra->ranges);
+    state.begin_intra(intra->fap_quant, frame.mask, intra->ranges, predictors);
   }
   write_segments(state, frame, intra != nullptr, out);
-  const std::uint64_t bits = fba_bit_count(out.position()) - start;
-  out.align();
   ++state.planes;
-  return bits;
 }
 
-std::error_code read_plane(FbaCodingState& state, std::span<const std::uint8_t> unit, FapFrame& out,
-                           PlaneInfo& info) {
+std::error_code read_plane(FbaCodingState& state, FbaBitReader& in, FapFrame& out, PlaneInfo& info) {
   info = PlaneInfo{};
-  FbaBitReader in(unit);
-  std::uint64_t in_offset = 0;  // bits before the reader's start
   const auto fail = [&](std::error_code e) {
     state.have_intra = false;
-    info.error_bit = in_offset + (in.error() ? in.error_bits() : std::min<std::uint64_t>(in.position().raw_bits, 8 * unit.size()));
-    return e;
+    in.fail(e);  // keeps an earlier error if there was one
+    return in.error();
   };
-  // The start code is read as bytes: its 23 zeros are exactly what stuffing keeps out of a plane.
-  if (unit.size() < 4 || unit[0] != 0 || unit[1] != 0 || unit[2] != 1 || unit[3] != (kFbaPlaneStartCode & 0xFF))
-    return fail(unit.size() < 4 ? fba_errc::truncated : fba_errc::bad_start_code);
-  in = FbaBitReader(unit.subspan(4));  // stuffing restarts after the start code
-  in_offset = 32;
   info.intra = in.get_bit() == 1;
   if (in.get(2) != kObjectMaskFap && !in.error()) in.fail(fba_errc::unsupported_object);
   if (in.error()) return fail(in.error());
@@ -359,15 +360,53 @@ std::error_code read_plane(FbaCodingState& state, std::span<const std::uint8_t> 
       if (marker) in.marker();
       field(ranges[at(n)], flag) = static_cast<std::uint8_t>(in.get(5));
     });
+    info.frame_number = static_cast<std::uint16_t>(in.get(16));
+    std::array<std::uint8_t, kFapCount> predictors{};
+    if (in.get_bit() == 1) {
+      for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
+        if (mask.test(n)) predictors[at(n)] = static_cast<std::uint8_t>(in.get(5));
+      }
+    }
     if (in.error()) return fail(in.error());
-    state.begin_intra(fap_quant, mask, ranges);
+    state.begin_intra(fap_quant, mask, ranges, predictors);
   }
   read_segments(state, info.intra, in, out);
-  info.bits = fba_bit_count(in.position()) + 32;
-  in.expect_end();
+  if (in.past_end()) in.fail(fba_errc::truncated);
   if (in.error()) return fail(in.error());
   ++state.planes;
   return {};
+}
+
+std::uint64_t write_unit(FbaCodingState& state, const FapFrame& frame, const IntraHeader* intra,
+                         FbaBitWriter& out) {
+  const std::uint64_t start = fba_bit_count(out.position());
+  out.start_code(kFbaPlaneStartCode);
+  write_plane(state, frame, intra, out);
+  const std::uint64_t bits = fba_bit_count(out.position()) - start;
+  out.align();
+  return bits;
+}
+
+std::error_code read_unit(FbaCodingState& state, std::span<const std::uint8_t> unit, FapFrame& out,
+                          PlaneInfo& info, std::uint64_t& bits, std::uint64_t& error_bit) {
+  info = PlaneInfo{};
+  bits = 0;
+  error_bit = 0;
+  // The start code is read as bytes: its 23 zeros are exactly what stuffing keeps out of a plane.
+  if (unit.size() < 4 || unit[0] != 0 || unit[1] != 0 || unit[2] != 1 || unit[3] != (kFbaPlaneStartCode & 0xFF)) {
+    state.have_intra = false;
+    return unit.size() < 4 ? fba_errc::truncated : fba_errc::bad_start_code;
+  }
+  FbaBitReader in(unit.subspan(4));  // stuffing restarts after the start code
+  std::error_code e = read_plane(state, in, out, info);
+  bits = fba_bit_count(in.position()) + 32;
+  if (!e) {
+    in.expect_end();
+    e = in.error();
+    if (e) state.have_intra = false;
+  }
+  if (e) error_bit = 32 + in.error_bits();
+  return e;
 }
 
 }  // namespace fapcast::codec::detail

@@ -19,12 +19,12 @@ using FbaLevels = std::array<std::int32_t, kFapCount>;
 
 // The levels of `frame` coded as an intra plane at `fap_quant`.
 FbaLevels intra_levels(const FapFrame& frame, int fap_quant);
-// The levels of `frame` coded as a P plane: its differences to the reconstructed values.
-FbaLevels predicted_levels(const std::array<std::int32_t, kFapCount>& reconstructed, int fap_quant,
+// The levels of `frame` coded as a P plane: its differences to the predictions.
+FbaLevels predicted_levels(const FbaPrediction& prediction, const FapMask& mask, int fap_quant,
                            const FapFrame& frame);
-// Moves reconstructed values on by one plane's levels (closed loop: both sides do the same).
-void reconstruct(std::array<std::int32_t, kFapCount>& reconstructed, const FbaLevels& levels,
-                 const FapMask& mask, int fap_quant, bool intra);
+// Moves the reconstructed values on by one plane's levels (closed loop: both sides do the same).
+void reconstruct(FbaPrediction& prediction, const FbaLevels& levels, const FapMask& mask, int fap_quant,
+                 bool intra);
 // Whether `levels` fit [-levels(min_field), levels(max_field)] for every masked FAP.
 bool levels_fit(const FbaLevels& levels, const FapMask& mask, const FbaCodingState& state, bool intra);
 
@@ -48,27 +48,34 @@ bool size_predicted_fields(const LevelExtremes& extremes, const FapMask& mask, i
 struct IntraHeader {
   int fap_quant = 0;
   std::array<FbaRangeFields, kFapCount> ranges{};
+  std::array<std::uint8_t, kFapCount> predictors{};  // all 0: is_predictor 0, none sent
+  std::uint16_t frame_number = 0;                     // the frame's index, modulo 65536
   FbaRateFields rate;
 };
 
-// Writes one plane, start code to byte alignment, and moves `state` on exactly as
+// Writes one plane's bits (no start code, no alignment) and moves `state` on exactly as
 // read_plane will. `intra` is null for a P plane. Preconditions: check_codable passed, and the
-// levels fit the ranges in force (the caller chose intra otherwise). Returns the plane's bits
-// before byte alignment, start code included (what read_plane reports as PlaneInfo::bits).
-std::uint64_t write_plane(FbaCodingState& state, const FapFrame& frame, const IntraHeader* intra,
-                          FbaBitWriter& out);
+// levels fit the ranges in force (the caller chose intra otherwise).
+void write_plane(FbaCodingState& state, const FapFrame& frame, const IntraHeader* intra, FbaBitWriter& out);
 
 // What read_plane learnt besides the frame.
 struct PlaneInfo {
   bool intra = false;
   int skip_frames = 0;
-  std::uint64_t bits = 0;       // raw bits consumed before byte alignment (fba_bit_count)
-  std::uint64_t error_bit = 0;  // where the error was noticed, bits from the unit start
+  std::uint16_t frame_number = 0;  // intra planes only
 };
 
-// Reads one plane from `unit` (start code to byte alignment, nothing after). On error the state
-// is left needing an intra plane.
-std::error_code read_plane(FbaCodingState& state, std::span<const std::uint8_t> unit, FapFrame& out,
-                           PlaneInfo& info);
+// Reads one plane's bits at the reader's position. On error the state is left needing an
+// intra plane; the reader holds the error and where it was noticed.
+std::error_code read_plane(FbaCodingState& state, FbaBitReader& in, FapFrame& out, PlaneInfo& info);
+
+// A unit of the frame-at-a-time coder: plane start code, one plane, alignment. Returns the bits
+// before alignment, start code included (fba_bit_count, as read_unit reports).
+std::uint64_t write_unit(FbaCodingState& state, const FapFrame& frame, const IntraHeader* intra,
+                         FbaBitWriter& out);
+// Reads a unit (start code, one plane, alignment, nothing after). `bits`: as write_unit's;
+// `error_bit`: where an error was noticed, bits from the unit start.
+std::error_code read_unit(FbaCodingState& state, std::span<const std::uint8_t> unit, FapFrame& out,
+                          PlaneInfo& info, std::uint64_t& bits, std::uint64_t& error_bit);
 
 }  // namespace fapcast::codec::detail

@@ -41,22 +41,24 @@ std::error_code FbaFrameEncoder::encode(const FapFrame& frame, FbaAccessUnit& ou
   bool intra = force_intra || !c.have_intra || !(frame.mask == c.mask) ||
                s.since_intra >= static_cast<std::uint64_t>(o.intra_period);
   if (!intra) {
-    const auto levels = detail::predicted_levels(c.reconstructed, c.fap_quant, frame);
+    const auto levels = detail::predicted_levels(c.prediction, c.mask, c.fap_quant, frame);
     intra = !detail::levels_fit(levels, frame.mask, c, false);  // left the P range
   }
   FbaBitWriter writer;
   if (intra) {
     // No look-ahead here: I ranges sized to this frame, P ranges the FAP table's defaults.
-    IntraHeader header{o.fap_quant, detail::intra_range_fields(detail::intra_levels(frame, o.fap_quant), frame.mask, o.fap_quant), *rate};
+    // Predictor 0 everywhere: without look-ahead there is nothing to choose a predictor from.
+    IntraHeader header{o.fap_quant, detail::intra_range_fields(detail::intra_levels(frame, o.fap_quant), frame.mask, o.fap_quant),
+                       {}, static_cast<std::uint16_t>(s.frame_index), *rate};
     for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
       const FbaRangeFields d = fba_default_range_fields(n);
       header.ranges[static_cast<std::size_t>(n - 1)].p_min = d.p_min;
       header.ranges[static_cast<std::size_t>(n - 1)].p_max = d.p_max;
     }
-    s.last_bits = detail::write_plane(c, frame, &header, writer);
+    s.last_bits = detail::write_unit(c, frame, &header, writer);
     s.since_intra = 1;
   } else {
-    s.last_bits = detail::write_plane(c, frame, nullptr, writer);
+    s.last_bits = detail::write_unit(c, frame, nullptr, writer);
     ++s.since_intra;
   }
   ++s.frame_index;
@@ -72,6 +74,7 @@ std::uint64_t FbaFrameEncoder::last_bits() const { return state_->last_bits; }
 struct FbaFrameDecoder::State {
   FbaCodingState coding;
   detail::PlaneInfo info;
+  std::uint64_t bits = 0, error_bit = 0;
 };
 
 FbaFrameDecoder::FbaFrameDecoder() : state_(std::make_unique<State>()) {}
@@ -81,15 +84,17 @@ FbaFrameDecoder& FbaFrameDecoder::operator=(FbaFrameDecoder&&) noexcept = defaul
 
 std::error_code FbaFrameDecoder::decode(std::span<const std::uint8_t> access_unit, FapFrame& out) {
   if (access_unit.empty()) return std::make_error_code(std::errc::invalid_argument);
-  return detail::read_plane(state_->coding, access_unit, out, state_->info);
+  State& s = *state_;
+  return detail::read_unit(s.coding, access_unit, out, s.info, s.bits, s.error_bit);
 }
 
 void FbaFrameDecoder::reset() { state_->coding.have_intra = false; }
 bool FbaFrameDecoder::needs_intra() const { return !state_->coding.have_intra; }
 FrameRate FbaFrameDecoder::rate() const { return state_->coding.rate; }
 const FbaCodingState& FbaFrameDecoder::coding_state() const { return state_->coding; }
-std::uint64_t FbaFrameDecoder::last_bits() const { return state_->info.bits; }
+std::uint64_t FbaFrameDecoder::last_bits() const { return state_->bits; }
 int FbaFrameDecoder::last_skip_frames() const { return state_->info.skip_frames; }
-std::uint64_t FbaFrameDecoder::error_bit() const { return state_->info.error_bit; }
+std::uint64_t FbaFrameDecoder::error_bit() const { return state_->error_bit; }
+int FbaFrameDecoder::last_frame_number() const { return state_->info.intra ? state_->info.frame_number : -1; }
 
 }  // namespace fapcast::codec

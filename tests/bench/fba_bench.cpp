@@ -1,9 +1,11 @@
 // FBA stream: bitrate of the lip, jaw and tongue FAPs (groups 2, 6, 8) at fap_quant 1, 2, 4, 8
 // against gzip -9 and xz -9 of the .fap text holding the same quantised values, on the Xface
 // samples and on SYNTHETIC lip/jaw tracks (sums of low-frequency sinusoids and a low-passed random
-// walk, not motion capture); and encode/decode speed against reading the same frames as .fap text.
+// walk, not motion capture); and encode/decode speed against reading the same frames as .fap text
+// and against the frame-at-a-time decoder (one access unit per frame, as RTP carries them).
 // Run: build/dev/tests/fba_bench   (counters: kbit/s at 25 fps, and ratios)
 #include "fapcast/codec/fap_text.hpp"
+#include "fapcast/codec/fba_coding_state.hpp"
 #include "fapcast/codec/fba_file.hpp"
 #include "fapcast/codec/fba_stream.hpp"
 
@@ -119,51 +121,42 @@ const std::vector<Source>& all_sources() {
   return s;
 }
 
-// What the same planes would take bit-packed as in the notes' codec (a start code and alignment
-// only before intra planes): each plane's bit count from the frame decoder, minus the P planes'
-// start codes and alignment. A measured estimate of the layout fapcast did not choose.
-std::size_t packed_bytes(const std::vector<std::uint8_t>& fba) {
-  std::vector<std::size_t> starts;
-  for (std::size_t i = 0; i + 3 < fba.size(); ++i)
-    if (fba[i] == 0 && fba[i + 1] == 0 && fba[i + 2] == 1 && fba[i + 3] == 0xBB) starts.push_back(i);
-  FbaFrameDecoder decoder;
-  std::uint64_t bits = 64;  // object start code and end code
-  for (std::size_t k = 0; k < starts.size(); ++k) {
-    const std::size_t end = k + 1 < starts.size() ? starts[k + 1] : fba.size() - 4;
-    FapFrame frame;
-    if (decoder.decode(std::span(fba).subspan(starts[k], end - starts[k]), frame)) throw std::runtime_error("bench: bad plane");
-    const bool intra = (fba[starts[k] + 4] & 0x80) != 0;
-    bits += intra ? 8 * (end - starts[k]) : decoder.last_bits() - 32;
-  }
-  return static_cast<std::size_t>((bits + 7) / 8);
-}
-
 double kbps(std::size_t bytes, std::size_t frames) { return 8.0 * static_cast<double>(bytes) / (static_cast<double>(frames) / kFps) / 1000.0; }
 
-// One row of the table: bitrates of FBA (intra period 25 and 250), gzip -9 and xz -9.
+// One row of the table: bitrates of FBA with the default options (intra period 25, predictors
+// chosen), without predictors (previous-value prediction, as the notes' codec), with an intra
+// period of 250; and of gzip -9 and xz -9 of the same quantised values as .fap text.
 void BM_Bitrate(benchmark::State& state) {
   const Source& src = all_sources()[static_cast<std::size_t>(state.range(0))];
   const int q = static_cast<int>(state.range(1));
   state.SetLabel(src.name + " q" + std::to_string(q));
   std::vector<std::uint8_t> fba;
+  const FbaEncoderOptions defaults{.fap_quant = q};
   for (auto _ : state) {
-    fba = encode_fba(src.seq, {q, 25});
+    fba = encode_fba(src.seq, defaults);
     benchmark::DoNotOptimize(fba.data());
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * src.seq.frames.size()));  // encode frames/s
-  const std::size_t fba_long = encode_fba(src.seq, {q, 250}).size();
-  FapSequence quantised = decode_fba(fba).sequence;  // the same quantised values, as text
+  const std::size_t fba_plain = encode_fba(src.seq, {.fap_quant = q, .choose_predictors = false}).size();
+  const std::size_t fba_long = encode_fba(src.seq, {.fap_quant = q, .intra_period = 250}).size();
+  // The text holds the same quantised values: each value on the fap_quant step grid (what
+  // previous-value prediction decodes to; chosen predictors decode off the grid, which only
+  // makes text larger, so this is the fair baseline).
+  FapSequence quantised = src.seq;
   quantised.name = "synthetic";
+  for (FapFrame& f : quantised.frames)
+    for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
+      if (f.mask.test(fap)) f.set(fap, fba_quantise(f.value(fap), fba_step(fap, q)) * fba_step(fap, q));
   const std::string text = write_fap_text(quantised);
   const std::size_t gz = compressed_size(text, "gzip -9"), xz = compressed_size(text, "xz -9");
   const std::size_t n = src.seq.frames.size();
   state.counters["fba_kbps"] = kbps(fba.size(), n);
+  state.counters["no_pred_kbps"] = kbps(fba_plain, n);
   state.counters["fba_i250_kbps"] = kbps(fba_long, n);
-  state.counters["packed_kbps"] = kbps(packed_bytes(fba), n);
   state.counters["gzip_kbps"] = kbps(gz, n);
   state.counters["xz_kbps"] = kbps(xz, n);
   state.counters["xz_over_fba"] = static_cast<double>(xz) / static_cast<double>(fba.size());
-  state.counters["xz_over_fba_i250"] = static_cast<double>(xz) / static_cast<double>(fba_long);
+  state.counters["xz_over_i250"] = static_cast<double>(xz) / static_cast<double>(fba_long);
 }
 
 void bitrate_args(benchmark::internal::Benchmark* b) {
@@ -175,7 +168,7 @@ BENCHMARK(BM_Bitrate)->Apply(bitrate_args)->Unit(benchmark::kMillisecond);
 // Decoding speed on the 300 s synthetic track, frames/s; and the alternative: parsing .fap text.
 void BM_DecodeFba(benchmark::State& state) {
   const FapSequence& seq = all_sources()[9].seq;
-  const auto fba = encode_fba(seq, {static_cast<int>(state.range(0)), 25});
+  const auto fba = encode_fba(seq, {.fap_quant = static_cast<int>(state.range(0))});
   for (auto _ : state) {
     auto r = decode_fba(fba);
     benchmark::DoNotOptimize(r.sequence.frames.data());
@@ -184,10 +177,29 @@ void BM_DecodeFba(benchmark::State& state) {
 }
 BENCHMARK(BM_DecodeFba)->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond);
 
+// The same frames as access units (start code and alignment per frame), decoded one by one.
+void BM_DecodeAccessUnits(benchmark::State& state) {
+  const FapSequence& seq = all_sources()[9].seq;
+  FbaFrameEncoder encoder({.fap_quant = static_cast<int>(state.range(0))}, seq.rate);
+  std::vector<FbaAccessUnit> units(seq.frames.size());
+  for (std::size_t k = 0; k < units.size(); ++k)
+    if (encoder.encode(seq.frames[k], units[k])) throw std::runtime_error("bench: encode");
+  for (auto _ : state) {
+    FbaFrameDecoder decoder;
+    FapFrame frame;
+    for (const auto& u : units) {
+      if (decoder.decode(u.bytes, frame)) throw std::runtime_error("bench: decode");
+      benchmark::DoNotOptimize(frame.values.data());
+    }
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * seq.frames.size()));
+}
+BENCHMARK(BM_DecodeAccessUnits)->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond);
+
 void BM_EncodeFba(benchmark::State& state) {
   const FapSequence& seq = all_sources()[9].seq;
   for (auto _ : state) {
-    auto b = encode_fba(seq, {static_cast<int>(state.range(0)), 25});
+    auto b = encode_fba(seq, {.fap_quant = static_cast<int>(state.range(0))});
     benchmark::DoNotOptimize(b.data());
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * seq.frames.size()));

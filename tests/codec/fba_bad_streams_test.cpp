@@ -3,6 +3,7 @@
 // from encodes of a SYNTHETIC track (and prints the golden lines for review).
 #include "fapcast/codec/fba_bits.hpp"
 #include "fapcast/codec/fba_file.hpp"
+#include "fapcast/codec/fba_stream.hpp"
 #include "codec/fba_test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -33,7 +34,8 @@ Bytes read_bytes(const fs::path& p) {
   return Bytes(std::istreambuf_iterator<char>(in), {});
 }
 
-std::vector<std::size_t> plane_offsets(const Bytes& b) {
+// Where the runs begin (each with a plane start code; spec/fba.md §1).
+std::vector<std::size_t> run_offsets(const Bytes& b) {
   std::vector<std::size_t> out;
   for (std::size_t i = 0; i + 3 < b.size(); ++i)
     if (b[i] == 0 && b[i + 1] == 0 && b[i + 2] == 1 && b[i + 3] == 0xBB) out.push_back(i);
@@ -53,19 +55,32 @@ std::map<std::string, Bytes> make_bad_streams() {
   for (int n = 3; n <= 18; ++n) lips.set(n);  // group 2 only: the intra header's bit positions are fixed
   const FapSequence seq{"synthetic", {25, 1}, test::smooth_track(rng, lips, 60, 400)};
   const Bytes good = encode_fba(seq, {1, 25});
-  const auto planes = plane_offsets(good);
-  // Bit positions after plane 0's start code (spec/fba.md, "Plane header" and "Intra header").
-  const std::size_t body = planes[0] + 4;
+  const auto runs = run_offsets(good);  // frames 0, 25, 50
+  // Bit positions after run 0's start code (spec/fba.md, "Plane header" and "Intra header").
+  const std::size_t body = runs[0] + 4;
+  // The same frames as access units of the frame-at-a-time coder, whose sizes and bit counts
+  // are known; `edit` may change unit k before it is appended.
+  const auto from_units = [&](auto&& edit) {
+    FbaFrameEncoder encoder({1, 25}, {25, 1});
+    Bytes units = {0, 0, 1, 0xBA};
+    for (std::size_t k = 0; k < seq.frames.size(); ++k) {
+      FbaAccessUnit unit;
+      if (encoder.encode(seq.frames[k], unit)) break;
+      if (edit(k, encoder.last_bits(), unit.bytes)) units.insert(units.end(), unit.bytes.begin(), unit.bytes.end());
+    }
+    units.insert(units.end(), {0, 0, 1, 0xB1});
+    return units;
+  };
   std::map<std::string, Bytes> out;
   Bytes b = good;
-  b.resize(planes[3] + (planes[4] - planes[3]) / 2);
+  b.resize(runs[1] + (runs[2] - runs[1]) / 2);
   out["001.truncated"] = b;
   b = good;
   b.resize(b.size() - 4);
   out["002.missing-end-code"] = b;
   out["003.missing-object-start-code"] = Bytes(good.begin() + 4, good.end());
   b = good;
-  b[planes[5] + 3] = 0xB5;
+  b[runs[1] + 3] = 0xB5;
   out["004.bad-start-code"] = b;
   b = good;
   set_bit(b, body, 1, true);
@@ -86,9 +101,9 @@ std::map<std::string, Bytes> make_bad_streams() {
     for (std::size_t k = 0; k < frames.size(); ++k)
       for (int n = 3; n <= 18; ++n) frames[k].set(n, k >= 1 ? -1000 : 0);
     b = encode_fba({"synthetic", {25, 1}, frames}, {0, 100});
-    const auto zp = plane_offsets(b);
+    const auto zp = run_offsets(b);
     int run = 0;
-    for (std::size_t at = (zp[2] + 4) * 8; at < zp[3] * 8; ++at) {
+    for (std::size_t at = (zp[0] + 4) * 8; at < (b.size() - 4) * 8; ++at) {
       const bool bit = (b[at / 8] >> (7 - at % 8)) & 1;
       if (run == 22) {
         set_bit(b, 0, at, false);
@@ -98,24 +113,19 @@ std::map<std::string, Bytes> make_bad_streams() {
     }
     out["009.stuffing-bit-missing"] = b;
   }
-  b = good;
-  b.erase(b.begin() + static_cast<std::ptrdiff_t>(planes[0]), b.begin() + static_cast<std::ptrdiff_t>(planes[1]));
-  out["010.predicted-without-intra"] = b;
+  out["010.predicted-without-intra"] = from_units([](std::size_t k, std::uint64_t, Bytes&) { return k != 0; });
   b = good;
   for (char c : std::string("garbage")) b.push_back(static_cast<std::uint8_t>(c));
   out["011.trailing-bytes"] = b;
   {
-    // From the frame-at-a-time coder, whose unit sizes and bit counts are known.
-    FbaFrameEncoder encoder({1, 25}, {25, 1});
-    b = {0, 0, 1, 0xBA};
-    for (std::size_t k = 0; k < seq.frames.size(); ++k) {
-      FbaAccessUnit unit;
-      if (encoder.encode(seq.frames[k], unit)) break;
-      if (k == 6 && encoder.last_bits() % 8 != 0) unit.bytes.back() &= 0xFE;  // an alignment bit 0
-      b.insert(b.end(), unit.bytes.begin(), unit.bytes.end());
-    }
-    b.insert(b.end(), {0, 0, 1, 0xB1});
-    out["012.bad-alignment-bits"] = b;
+    bool done = false;  // the first unit from 6 on with 2+ alignment bits: make its last one 0
+    out["012.bad-alignment-bits"] = from_units([&](std::size_t k, std::uint64_t bits, Bytes& unit) {
+      if (!done && k >= 6 && bits % 8 != 0 && bits % 8 <= 6) {
+        unit.back() &= 0xFE;
+        done = true;
+      }
+      return true;
+    });
   }
   const auto handmade = [&](auto&& fields) {
     FbaBitWriter w;
@@ -147,8 +157,11 @@ std::map<std::string, Bytes> make_bad_streams() {
     w.put(0, 4);
   });
   b = good;
-  b.insert(b.begin() + static_cast<std::ptrdiff_t>(planes[9]), 0xFF);  // a stray byte after a plane
+  b.insert(b.begin() + static_cast<std::ptrdiff_t>(runs[1]), 0xFF);  // a stray byte after a run
   out["015.trailing-bytes"] = b;
+  b = good;
+  b.erase(b.begin() + static_cast<std::ptrdiff_t>(runs[1]), b.begin() + static_cast<std::ptrdiff_t>(runs[2]));
+  out["016.bad-frame-number"] = b;  // a whole run gone: frames 25..49 counted lost
   return out;
 }
 

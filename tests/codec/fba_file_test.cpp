@@ -1,11 +1,13 @@
 // Guarantees of the whole-file FBA coder (spec/fba.md), each a test.
 #include "fapcast/codec/fba_errc.hpp"
 #include "fapcast/codec/fba_file.hpp"
+#include "fapcast/codec/fba_stream.hpp"
 #include "codec/fba_test_support.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace fapcast::codec {
@@ -156,30 +158,106 @@ TEST(FbaFile, RandomRoundTrips) {
   }
 }
 
-// After corruption the decoder resumes at the next intra plane and counts the frames lost.
+// The byte offsets of the runs of a file (each opens with a plane start code).
+std::vector<std::size_t> run_offsets(const std::vector<std::uint8_t>& b) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i + 3 < b.size(); ++i)
+    if (b[i] == 0 && b[i + 1] == 0 && b[i + 2] == 1 && b[i + 3] == 0xBB) out.push_back(i);
+  return out;
+}
+
+// The first frame of each run: each run decoded alone (object start code, run, end code).
+std::vector<std::size_t> run_first_frames(const std::vector<std::uint8_t>& b) {
+  const auto runs = run_offsets(b);
+  std::vector<std::size_t> out;
+  std::size_t frame = 0;
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    std::vector<std::uint8_t> one{0, 0, 1, 0xBA};
+    one.insert(one.end(), b.begin() + static_cast<std::ptrdiff_t>(runs[r]),
+               b.begin() + static_cast<std::ptrdiff_t>(r + 1 < runs.size() ? runs[r + 1] : b.size() - 4));
+    one.insert(one.end(), {0, 0, 1, 0xB1});
+    out.push_back(frame);
+    frame += decode_fba(one).report.frames_decoded;
+  }
+  return out;
+}
+
+// After corruption the decoder resumes at the next run (its intra plane) and counts the frames
+// lost from the intra plane's frame_number: a corrupt run is lost whole.
 TEST(FbaFile, ResynchronisesAfterCorruptionAndCountsLostFrames) {
   std::mt19937_64 rng(fba_seed());
   const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 100, 300));
-  auto bytes = encode_fba(seq, {0, 25});
-  // Find the plane start codes; corrupt plane 30 (a P plane: intra planes are 0, 25, 50, 75).
-  std::vector<std::size_t> planes;
-  for (std::size_t i = 0; i + 3 < bytes.size(); ++i)
-    if (bytes[i] == 0 && bytes[i + 1] == 0 && bytes[i + 2] == 1 && bytes[i + 3] == 0xBB) planes.push_back(i);
-  ASSERT_EQ(planes.size(), 100u);
-  bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(planes[30] + 6), bytes.begin() + static_cast<std::ptrdiff_t>(planes[31] - 1));
-  const auto result = decode_fba(bytes);
-  ASSERT_EQ(result.report.errors_total, 1u);
-  EXPECT_GE(result.report.errors[0].byte_offset, planes[30]);
-  EXPECT_EQ(result.report.frames_lost, 20u);  // planes 30..49
-  EXPECT_EQ(result.report.frames_decoded, 80u);
-  ASSERT_EQ(result.sequence.frames.size(), 100u);
-  for (std::size_t k = 0; k < 100; ++k) {
-    if (k >= 30 && k < 50) {
-      EXPECT_EQ(result.sequence.frames[k], seq.frames[29]) << "lost frames hold the last good one";
-    } else {
-      EXPECT_EQ(result.sequence.frames[k], seq.frames[k]) << k;
+  const auto good = encode_fba(seq, {0, 25});
+  const auto runs = run_offsets(good);
+  ASSERT_EQ(runs.size(), 4u);  // intra planes 0, 25, 50, 75, one run each
+  ASSERT_EQ(run_first_frames(good), (std::vector<std::size_t>{0, 25, 50, 75}));
+  const auto expect_lost = [&](const FbaDecodeResult& r, std::size_t from, std::size_t to) {
+    EXPECT_EQ(r.report.frames_lost, to - from);
+    EXPECT_EQ(r.report.frames_decoded, 100 - (to - from));
+    ASSERT_EQ(r.sequence.frames.size(), 100u);
+    for (std::size_t k = 0; k < 100; ++k) {
+      if (k >= from && k < to) {
+        EXPECT_EQ(r.sequence.frames[k], seq.frames[from - 1]) << "lost frames hold the last good one";
+      } else {
+        EXPECT_EQ(r.sequence.frames[k], seq.frames[k]) << k;
+      }
     }
+  };
+  {
+    SCOPED_TRACE("bytes cut from the middle of run 1 (frames 25..49)");
+    auto bytes = good;
+    const std::size_t mid = (runs[1] + runs[2]) / 2;
+    bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(mid), bytes.begin() + static_cast<std::ptrdiff_t>(mid + 17));
+    const auto result = decode_fba(bytes);
+    ASSERT_EQ(result.report.errors_total, 1u) << result.report.errors.front().message();
+    EXPECT_GE(result.report.errors[0].byte_offset, runs[1]);
+    EXPECT_LT(result.report.errors[0].byte_offset, runs[2] - 17);
+    expect_lost(result, 25, 50);
   }
+  {
+    SCOPED_TRACE("bits flipped in run 2 (frames 50..74)");
+    auto bytes = good;
+    for (std::size_t i = runs[2] + 40; i < runs[3] - 8; i += 9) bytes[i] ^= 0x5A;
+    const auto result = decode_fba(bytes);
+    ASSERT_GE(result.report.errors_total, 1u);
+    expect_lost(result, 50, 75);
+  }
+  {
+    SCOPED_TRACE("run 1 removed whole: the next intra plane's frame_number tells");
+    auto bytes = good;
+    bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(runs[1]), bytes.begin() + static_cast<std::ptrdiff_t>(runs[2]));
+    const auto result = decode_fba(bytes);
+    ASSERT_EQ(result.report.errors_total, 1u);
+    EXPECT_EQ(result.report.errors[0].code, fba_errc::bad_frame_number);
+    expect_lost(result, 25, 50);
+  }
+}
+
+// The frame-at-a-time coder's units, back to back, are a file too (one plane per run).
+TEST(FbaFile, AccessUnitsBackToBackDecodeAsAFile) {
+  std::mt19937_64 rng(fba_seed());
+  const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 60, 300));
+  FbaFrameEncoder encoder({0, 25}, seq.rate);
+  std::vector<std::uint8_t> bytes{0, 0, 1, 0xBA};
+  std::vector<std::size_t> units;
+  for (const FapFrame& f : seq.frames) {
+    FbaAccessUnit unit;
+    ASSERT_FALSE(encoder.encode(f, unit));
+    units.push_back(bytes.size());
+    bytes.insert(bytes.end(), unit.bytes.begin(), unit.bytes.end());
+  }
+  bytes.insert(bytes.end(), {0, 0, 1, 0xB1});
+  const auto result = decode_fba(bytes);
+  ASSERT_TRUE(result.report.ok()) << result.report.errors.front().message();
+  EXPECT_EQ(result.sequence, seq);
+  // Units 30..34 lost: the P units up to the next intra unit (50) are refused, one error in all.
+  bytes.erase(bytes.begin() + static_cast<std::ptrdiff_t>(units[30]), bytes.begin() + static_cast<std::ptrdiff_t>(units[35]));
+  const auto lossy = decode_fba(bytes);
+  EXPECT_EQ(lossy.report.errors_total, 1u);
+  EXPECT_EQ(lossy.report.frames_lost, 20u);
+  EXPECT_EQ(lossy.report.frames_decoded, 40u);
+  ASSERT_EQ(lossy.sequence.frames.size(), 60u);
+  EXPECT_EQ(lossy.sequence.frames[50], seq.frames[50]);
 }
 
 // Stuffing: a stream rich in zero bits round-trips, and no 23 zeros occur inside it.
@@ -205,24 +283,11 @@ TEST(FbaFile, StuffingPreventsStartCodeEmulation) {
       longest = std::max(longest, run);
     }
   }
-  EXPECT_EQ(start_codes, 32u);  // object + 30 planes + end
+  EXPECT_EQ(start_codes, 3u);   // object + one run of 30 planes + end
   EXPECT_EQ(longest, 22);       // reached, and stuffed
   const auto result = decode_fba(bytes);
   ASSERT_TRUE(result.report.ok()) << result.report.errors.front().message();
   EXPECT_EQ(result.sequence, seq);
-}
-
-// Which planes of a file are intra (is_intra is the first bit after each plane start code).
-std::vector<std::size_t> intra_planes(const std::vector<std::uint8_t>& b) {
-  std::vector<std::size_t> out;
-  std::size_t plane = 0;
-  for (std::size_t i = 0; i + 4 < b.size(); ++i) {
-    if (b[i] == 0 && b[i + 1] == 0 && b[i + 2] == 1 && b[i + 3] == 0xBB) {
-      if (b[i + 4] & 0x80) out.push_back(plane);
-      ++plane;
-    }
-  }
-  return out;
 }
 
 class FbaIntraPeriod : public ::testing::TestWithParam<int> {};
@@ -235,11 +300,11 @@ TEST_P(FbaIntraPeriod, HonouredAndMaskChangesForceIntra) {
   const auto plain = encode_fba(sequence_of(frames), {1, period});
   std::vector<std::size_t> expected;
   for (std::size_t k = 0; k < 100; k += static_cast<std::size_t>(period)) expected.push_back(k);
-  EXPECT_EQ(intra_planes(plain), expected);
+  EXPECT_EQ(run_first_frames(plain), expected);
   // Drop FAP 3 from frame 37 on: frame 37 must be intra, and the period restarts there.
   for (std::size_t k = 37; k < 100; ++k) frames[k].mask.set(3, false), frames[k].values[2] = 0;
   const auto changed = encode_fba(sequence_of(frames), {1, period});
-  const auto planes = intra_planes(changed);
+  const auto planes = run_first_frames(changed);
   EXPECT_NE(std::find(planes.begin(), planes.end(), 37u), planes.end());
   for (std::size_t i = 1; i < planes.size(); ++i) EXPECT_LE(planes[i] - planes[i - 1], static_cast<std::size_t>(period));
   EXPECT_EQ(decode_fba(changed).sequence.frames[50].mask, frames[50].mask);
@@ -263,6 +328,48 @@ TEST(FbaFile, GarbageIsReportedNeverThrown) {
     const auto result = decode_fba(bytes);
     EXPECT_FALSE(result.report.ok());
     EXPECT_EQ(result.sequence.frames.size(), result.report.frames_decoded + result.report.frames_lost + result.report.frames_skipped);
+  }
+}
+
+}  // namespace
+}  // namespace fapcast::codec
+
+namespace fapcast::codec {
+namespace {
+
+// fapcast's P predictors (spec/fba.md §6) are exact where the spec says so.
+TEST(FbaPrediction, ExactForAConstantPlusASinusoidAndForQuadratics) {
+  // cos w = 1/2: (k - 7) / 8 = 1 + 2 cos w = 2, k = 23; x[n] = x[n-3] + 2 (x[n-1] - x[n-2]).
+  std::vector<std::int32_t> x{100, 143, 143};
+  for (int n = 3; n < 40; ++n) x.push_back(x[n - 3] + 2 * (x[n - 1] - x[n - 2]));
+  for (std::size_t n = 3; n < x.size(); ++n) EXPECT_EQ(fba_predict(23, x[n - 1], x[n - 2], x[n - 3]), x[n]) << n;
+  for (std::int32_t n = 3; n < 40; ++n)
+    EXPECT_EQ(fba_predict(31, (n - 1) * (n - 1), (n - 2) * (n - 2), (n - 3) * (n - 3)), n * n) << n;
+  EXPECT_EQ(fba_predict(0, 5, 900, -900), 5);  // predictor 0: the previous value
+  EXPECT_EQ(fba_predict(31, 2147483647, -2147483647, 2147483647), 2147483647);  // saturates
+}
+
+// On a smooth rhythmic track the encoder chooses predictors, the file shrinks, and every value
+// still comes back within step/2.
+TEST(FbaPrediction, ChosenPredictorsShrinkARhythmicTrackWithinHalfAStep) {
+  std::vector<FapFrame> frames(500);
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    for (int n = 3; n <= 18; ++n) {
+      const double w = 0.9 + 0.02 * n;  // 3.6..4.3 Hz at 25 fps
+      frames[k].set(n, static_cast<std::int32_t>(std::lround(60 + 120 * std::sin(w * static_cast<double>(k) + n))));
+    }
+  }
+  const FapSequence seq = sequence_of(frames);
+  for (const int q : {1, 4}) {
+    const auto chosen = encode_fba(seq, {.fap_quant = q});
+    const auto plain = encode_fba(seq, {.fap_quant = q, .choose_predictors = false});
+    EXPECT_LT(static_cast<double>(chosen.size()), 0.85 * static_cast<double>(plain.size())) << "q " << q;
+    const auto result = decode_fba(chosen);
+    ASSERT_TRUE(result.report.ok());
+    ASSERT_EQ(result.sequence.frames.size(), frames.size());
+    for (std::size_t k = 0; k < frames.size(); ++k)
+      for (int n = 3; n <= 18; ++n)
+        ASSERT_LE(2 * std::abs(result.sequence.frames[k].value(n) - frames[k].value(n)), fba_step(n, q)) << k << " " << n;
   }
 }
 

@@ -83,7 +83,7 @@ TEST(FbaCliErrors, BadStreamIsReportedWithByteOffsetAndRule) {
   const fs::path bad = fs::path(FAPCAST_TEST_DATA) / "fba" / "bad" / "bad.004.bad-start-code.fba";
   const auto r = run_command(fapcast("decode " + bad.string() + " -o " + dir + "/x.fap"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("byte 145: bad-start-code"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("byte 397: bad-start-code"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("frames lost"), std::string::npos) << r.err;
 }
 

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -223,9 +225,13 @@ std::vector<udp::socket> bind_port_quad(asio::io_context& io) {
 }
 
 // Collects every datagram on `socket` until idle.
+// Only datagrams whose SSRC is one of `ssrcs` are kept: another process on this machine (a
+// parallel test run) may still be sending to a port this test has just bound. Sockets 0 and 2
+// carry RTP (SSRC at byte 8), 1 and 3 RTCP (SSRC of the first report at byte 4).
 std::vector<std::vector<std::uint8_t>> collect(asio::io_context& io, std::vector<udp::socket>& sockets,
                                                std::vector<std::vector<std::vector<std::uint8_t>>>& per_socket,
-                                               std::chrono::milliseconds idle) {
+                                               std::chrono::milliseconds idle,
+                                               std::array<std::uint32_t, 2> ssrcs) {
   std::array<std::uint8_t, 2048> buf;
   auto last = std::chrono::steady_clock::now();
   udp::endpoint from;
@@ -237,6 +243,11 @@ std::vector<std::vector<std::uint8_t>> collect(asio::io_context& io, std::vector
         sockets[k].async_receive_from(asio::buffer(buf), from, [&, k](const boost::system::error_code& ec, std::size_t n) {
           pending[k] = false;
           if (ec) return;
+          const std::size_t at = k % 2 == 0 ? 8 : 4;
+          if (n < at + 4) return;
+          const std::uint32_t ssrc = std::uint32_t{buf[at]} << 24 | std::uint32_t{buf[at + 1]} << 16 |
+                                     std::uint32_t{buf[at + 2]} << 8 | buf[at + 3];
+          if (ssrc != ssrcs[0] && ssrc != ssrcs[1]) return;
           last = std::chrono::steady_clock::now();
           per_socket[k].emplace_back(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(n));
         });
@@ -265,14 +276,20 @@ TEST(Loopback, AudioAndSenderReportsShareOneClock) {
   const auto units = test::synthetic_units(12, 6, 800);  // 60 fps over 0.2 s
   std::vector<std::vector<std::vector<std::uint8_t>>> got(4);
   StreamReport report;
+  // SSRCs of this process only (see collect).
+  const std::uint32_t tag = (static_cast<std::uint32_t>(::getpid()) & 0xffffu) << 8;
+  const std::uint32_t animation_ssrc = 0x5e000001u | tag;
+  const std::uint32_t audio_ssrc = 0x5e000002u | tag;
   std::thread sender([&] {
     asio::io_context io;
     StreamOptions so = fixed_options();
+    so.animation_ids.ssrc = animation_ssrc;
+    so.audio_ids.ssrc = audio_ssrc;
     so.rtcp_interval = 50ms;
     RtpStreamer streamer(io, base, so);
     report = streamer.run(units, &audio);
   });
-  collect(rx_io, sockets, got, 400ms);
+  collect(rx_io, sockets, got, 400ms, {animation_ssrc, audio_ssrc});
   sender.join();
   // Audio: in order on loopback; reassemble and compare.
   std::vector<std::int16_t> samples;
@@ -281,7 +298,7 @@ TEST(Loopback, AudioAndSenderReportsShareOneClock) {
     RtpPacketView v;
     ASSERT_FALSE(parse_rtp(d, v));
     EXPECT_EQ(v.header.payload_type, 97);
-    EXPECT_EQ(v.header.ssrc, 0x5eed0002u);
+    EXPECT_EQ(v.header.ssrc, audio_ssrc);
     EXPECT_EQ(v.header.timestamp, expected_ts);
     const auto chunk = unpack_l16(v.payload);
     expected_ts += static_cast<std::uint32_t>(chunk.size() / 2);
@@ -298,8 +315,8 @@ TEST(Loopback, AudioAndSenderReportsShareOneClock) {
     SenderReport a, b;
     ASSERT_FALSE(parse_sender_report(got[1][k], a));
     ASSERT_FALSE(parse_sender_report(got[3][k], b));
-    EXPECT_EQ(a.ssrc, 0x5eed0001u);
-    EXPECT_EQ(b.ssrc, 0x5eed0002u);
+    EXPECT_EQ(a.ssrc, animation_ssrc);
+    EXPECT_EQ(b.ssrc, audio_ssrc);
     EXPECT_EQ(a.ntp, b.ntp);
     // Compound packets: SR then SDES with the same CNAME on both streams.
     ASSERT_GT(got[1][k].size(), 36u);

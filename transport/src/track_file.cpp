@@ -57,7 +57,8 @@ void write_track_file(const std::filesystem::path& path, const codec::FapSequenc
     }
     case TrackFormat::kFba: {
       // fap_quant 0 is lossless but has a narrower codable range; values it refuses were received
-      // as multiples of QP[fap] * the sender's fap_quant (>= 1), which fap_quant 1 codes exactly.
+      // as multiples of QP[fap] * the sender's fap_quant (>= 1), which fap_quant 1 codes exactly
+      // with previous-value prediction (chosen predictors would predict off that grid).
       codec::FbaEncoderOptions options;
       options.fap_quant = 0;
       std::vector<std::uint8_t> bytes;
@@ -65,6 +66,7 @@ void write_track_file(const std::filesystem::path& path, const codec::FapSequenc
         bytes = codec::encode_fba(seq, options);
       } catch (const codec::FbaEncodeError&) {
         options.fap_quant = 1;
+        options.choose_predictors = false;
         bytes = codec::encode_fba(seq, options);
       }
       write_file_atomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});

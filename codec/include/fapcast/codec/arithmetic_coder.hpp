@@ -1,8 +1,10 @@
 #pragma once
 // The adaptive arithmetic coder of the FBA stream, after H.263 Annex E: 16-bit registers
 // (top 65535, quarter points 16384, 32768, 49152), cumulative-frequency tables descending with
-// the total first, every model starting uniform, +1 per coded symbol, all counts halved when the
-// total reaches 16383. Encoder and decoder mirror each other over one model type.
+// the total first, every model starting uniform, all counts halved before the total would pass
+// 16383. fapcast: a coded symbol's count grows by kIncrement = 8, not 1 (spec/fba.md §7), so a
+// model learns a peaked distribution within the few symbols of one intra period. Encoder and
+// decoder mirror each other over one model type.
 #include "fapcast/codec/fba_bits.hpp"
 
 #include <cstdint>
@@ -15,13 +17,15 @@ class FrequencyModel {
  public:
   static constexpr int kMaxSymbols = 4096;      // > 2*1860+1, the widest FAP range
   static constexpr std::uint16_t kMaxTotal = 16383;
+  static constexpr int kIncrement = 8;  // fapcast; the notes' codec adds 1
 
   FrequencyModel() = default;
   explicit FrequencyModel(int size) { reset(size); }
   // Uniform again over `size` symbols (1..kMaxSymbols).
   void reset(int size);
   int size() const { return static_cast<int>(cumulative_.size()) - 1; }
-  // Counts symbol s (0..size-1) once, halving every count when the total reaches kMaxTotal.
+  // Counts symbol s (0..size-1): + kIncrement, first halving every count (rounding up) when the
+  // total would otherwise pass kMaxTotal.
   void update(int s);
   // cumulative(i): the total count of symbols i..size-1; cumulative(0) is the total.
   std::uint32_t cumulative(int i) const { return cumulative_[static_cast<std::size_t>(i)]; }
@@ -60,7 +64,8 @@ class ArithmeticDecoder {
 
  private:
   FbaBitReader& in_;
-  std::uint32_t low_ = 0, high_ = 65535, value_ = 0;
+  std::uint32_t low_ = 0, high_ = 65535;
+  std::uint32_t offset_ = 0;  // value - low: the code value's place in the interval, < high - low + 1
 };
 
 }  // namespace fapcast::codec

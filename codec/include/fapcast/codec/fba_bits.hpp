@@ -4,6 +4,7 @@
 // Writer and reader mirror each other and share one bit count (raw bits, stuffing included).
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <system_error>
@@ -46,16 +47,17 @@ class FbaBitWriter {
 
 class FbaBitReader {
  public:
-  explicit FbaBitReader(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
+  explicit FbaBitReader(std::span<const std::uint8_t> bytes) : bytes_(bytes), size_bits_(8 * bytes.size()) {}
 
   // Reads `count` bits (0..32), most significant first. Past the end it reads zeros and sets
   // truncated; a missing stuffed bit sets stuffing_bit_missing. Errors are sticky: once set,
   // every later read returns 0.
-  std::uint32_t get(int count);
-  int get_bit() {
-    const int bit = payload_bit(false);
-    return error_ ? 0 : bit;
+  std::uint32_t get(int count) {
+    if (count > kFastBits) return get_slow(count, false);
+    const std::uint32_t v = read_bits(count, false);
+    return error_ ? 0 : v;
   }
+  int get_bit() { return static_cast<int>(get(1)); }
   // Reads a marker bit; a 0 sets marker_bit_missing.
   void marker();
   // Gives back the last `count` payload bits (count 0..16): ends an arithmetic segment at the
@@ -63,52 +65,68 @@ class FbaBitReader {
   void unread(int count);
   // Checks that the plane ends here: 1 bits to the byte boundary, then nothing.
   void expect_end();
-  // The same bits as get(), but past the end of the data reads zeros without an error: the
-  // arithmetic decoder's 16-bit look-ahead may run past the last plane of a unit.
-  int lookahead_bit() {
-    const int bit = payload_bit(true);
-    return error_ ? 0 : bit;
+  // The same bits as get() (count 0..16), but past the end of the data reads zeros without an
+  // error: the arithmetic decoder's look-ahead may run past the last plane of a unit.
+  std::uint32_t lookahead_bits(int count) {
+    const std::uint32_t v = read_bits(count, true);
+    return error_ ? 0 : v;
   }
+  int lookahead_bit() { return static_cast<int>(lookahead_bits(1)); }
 
   const FbaBitPosition& position() const { return pos_; }
   std::error_code error() const { return error_; }
   void fail(std::error_code e) {
     if (error_) return;
     error_ = e;
-    error_bits_ = std::min<std::uint64_t>(pos_.raw_bits, 8 * bytes_.size());
+    error_bits_ = std::min<std::uint64_t>(pos_.raw_bits, size_bits_);
   }
   // Where the first error was noticed: raw bits from the start, at most the data's length.
   std::uint64_t error_bits() const { return error_bits_; }
-  bool past_end() const { return pos_.raw_bits > 8 * bytes_.size(); }
+  bool past_end() const { return pos_.raw_bits > size_bits_; }
+  bool at_end() const { return pos_.raw_bits == size_bits_; }
+  // The next bit without reading it (0 past the end). Stuffing is removed as soon as the 22nd
+  // zero is read, so the next raw bit is the next payload bit.
+  int peek_bit() const { return static_cast<int>(raw_window(pos_.raw_bits, 1)); }
 
  private:
-  // Inline: the decoder's hot path is one call per bit.
-  int raw_bit(bool allow_past_end) {
-    const std::uint64_t at = pos_.raw_bits++;
-    if (at >= 8 * bytes_.size()) {
-      if (!allow_past_end) fail_truncated();
-      return 0;
+  // Up to kFastBits bits at once when no stuffed bit can fall among them: fewer than 22 zeros
+  // from the run so far to the window's first 1 (a window of <= 16 bits holds no 22-zero run
+  // of its own). Otherwise, and near the end of the data, bit by bit.
+  static constexpr int kFastBits = 16;
+  std::uint32_t read_bits(int count, bool allow_past_end) {
+    if (count == 0) return 0;
+    const std::uint64_t at = pos_.raw_bits;
+    if (at + static_cast<std::uint64_t>(count) <= size_bits_) {
+      const std::uint32_t w = raw_window(at, count);
+      const int width = std::bit_width(w);
+      if (pos_.zero_run + (count - width) < kStuffAfterZeros) {
+        pos_.raw_bits = at + static_cast<std::uint64_t>(count);
+        payload_bits_ += static_cast<std::uint64_t>(count);
+        pos_.zero_run = w == 0 ? pos_.zero_run + count : std::countr_zero(w);
+        return w;
+      }
     }
-    return (bytes_[at / 8] >> (7 - at % 8)) & 1;
+    return get_slow(count, allow_past_end);
   }
-  int payload_bit(bool allow_past_end) {
-    history_[payload_bits_++ % history_.size()] = pos_;
-    const int bit = raw_bit(allow_past_end);
-    if (bit) {
-      pos_.zero_run = 0;
-    } else if (++pos_.zero_run == kStuffAfterZeros) {
-      check_stuffed_bit(allow_past_end);
-    }
-    return bit;
+  // `count` (1..kFastBits) raw bits at raw bit `at`, most significant first, zeros past the end.
+  std::uint32_t raw_window(std::uint64_t at, int count) const {
+    const std::uint64_t byte = at / 8;
+    std::uint32_t w = 0;  // the 4 bytes from `byte`, big-endian, zeros past the end
+    for (std::uint64_t i = 0; i < 4; ++i) w = (w << 8) | (byte + i < bytes_.size() ? bytes_[byte + i] : 0u);
+    return (w << (at % 8)) >> (32 - count);
   }
-  void fail_truncated();
+  std::uint32_t get_slow(int count, bool allow_past_end);
+  int raw_bit(bool allow_past_end);
+  int payload_bit(bool allow_past_end);
   void check_stuffed_bit(bool allow_past_end);
+
   std::span<const std::uint8_t> bytes_;
+  std::uint64_t size_bits_;
   FbaBitPosition pos_;
   std::error_code error_;
   std::uint64_t error_bits_ = 0;
-  std::array<FbaBitPosition, 16> history_{};  // where each of the last 16 payload bits began
-  std::uint32_t payload_bits_ = 0;
+  std::uint64_t payload_bits_ = 0;
+  std::uint64_t last_stuffed_ = 0;  // payload bits read when the last stuffed bit came (0: none)
 };
 
 }  // namespace fapcast::codec

@@ -7,7 +7,9 @@
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/frame_rate.hpp"
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <cstdint>
 #include <optional>
 
@@ -44,6 +46,28 @@ struct FbaRateFields {
 // The fields that say `rate` exactly, or nullopt when none do (e.g. 1000/3).
 std::optional<FbaRateFields> fba_rate_fields(FrameRate rate);
 
+// fapcast: P prediction (spec/fba.md §6). Predictor 0 is the previous reconstructed value r1
+// (the notes' codec). Predictor k = 1..31 is r3 + (k - 7) * (r1 - r2) / 8 over the last three
+// reconstructed values r1, r2, r3: exact for a constant plus one sinusoid of w radians per frame
+// when (k - 7) / 8 = 1 + 2 cos w, and for any quadratic at k = 31. Computed in 64 bits, rounded
+// half up (floor((d * (k - 7) + 4) / 8)), saturated to int32.
+inline constexpr int kMaxPredictor = 31;
+inline std::int32_t fba_predict(int predictor, std::int32_t r1, std::int32_t r2, std::int32_t r3) {
+  if (predictor == 0) return r1;
+  const std::int64_t slope = (std::int64_t{r1} - r2) * (predictor - 7);
+  const std::int64_t p = std::int64_t{r3} + ((slope + 4) >> 3);  // C++20: >> is arithmetic
+  return static_cast<std::int32_t>(
+      std::clamp<std::int64_t>(p, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
+}
+
+// What P levels are predicted from: each FAP's predictor (set by the intra header) and its last
+// three reconstructed values (all three equal to the intra value right after an intra plane).
+struct FbaPrediction {
+  std::array<std::uint8_t, kFapCount> predictor{};  // 0..kMaxPredictor
+  std::array<std::int32_t, kFapCount> r1{}, r2{}, r3{};
+  bool operator==(const FbaPrediction&) const = default;
+};
+
 // One set of models: one per low-level FAP, and the viseme and expression fields.
 struct FbaModels {
   std::array<FrequencyModel, kFapCount> fap;  // fap[n-1] for FAP n (3..68)
@@ -58,7 +82,7 @@ struct FbaCodingState {
   int fap_quant = 0;
   FapMask mask;
   std::array<FbaRangeFields, kFapCount> ranges{};
-  std::array<std::int32_t, kFapCount> reconstructed{};  // what the decoder shows, FAPU
+  FbaPrediction prediction;  // prediction.r1: what the decoder shows, FAPU
   VisemeField viseme;
   ExpressionField expression;
   FbaModels intra, predicted;
@@ -66,7 +90,8 @@ struct FbaCodingState {
 
   // Starts an intra period: the header fields in force, all models uniform over their ranges.
   void begin_intra(int new_fap_quant, const FapMask& new_mask,
-                   const std::array<FbaRangeFields, kFapCount>& new_ranges);
+                   const std::array<FbaRangeFields, kFapCount>& new_ranges,
+                   const std::array<std::uint8_t, kFapCount>& new_predictors);
   // FNV-1a over everything above: a cheap end-of-stream check that two sides agree.
   std::uint64_t checksum() const;
   bool operator==(const FbaCodingState&) const = default;

@@ -24,6 +24,7 @@ enum class fba_errc {
   missing_end_code,           // a file that does not close with 0x000001B1
   uncodable_value,            // encoder: a value beyond the codable range (never clipped)
   uncodable_frame_rate,       // encoder: a rate frame_rate(8)/seconds(4)[*1000/1001] cannot hold
+  bad_frame_number,           // an intra plane's frame_number is not the frame it lands on
 };
 
 const std::error_category& fba_category();

@@ -1,7 +1,7 @@
 #pragma once
-// Whole .fba files: the object start code, one object plane per frame (each byte-aligned, each
-// with its plane start code, exactly the access units of fba_stream.hpp), and the end code.
-// spec/fba.md defines the layout and says why a file spends a start code on every frame.
+// Whole .fba files: the object start code, runs (a plane start code, an intra plane and the P
+// planes up to the next intra plane, bit-packed, then byte alignment), and the end code.
+// spec/fba.md §1 defines the layout; access units of fba_stream.hpp back to back are a file too.
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/fba_stream.hpp"
 
@@ -22,7 +22,8 @@ class FbaEncodeError : public std::system_error {
 
 // Encodes a whole sequence. Intra planes come every options.intra_period frames, and earlier
 // when the mask changes or a P difference leaves the widest range; each intra plane's ranges
-// are sized to the frames it heads. Throws FbaEncodeError for a value it cannot code.
+// and predictors are chosen for the frames it heads. Throws FbaEncodeError for a value it
+// cannot code.
 std::vector<std::uint8_t> encode_fba(const FapSequence& seq, const FbaEncoderOptions& options);
 
 // One refusal met while decoding: where (byte offset in the file) and why.
@@ -48,8 +49,9 @@ struct FbaDecodeResult {
   FbaDecodeReport report;
 };
 
-// Decodes a whole file, never trusting it: after a corrupt plane it resumes at the next intra
-// plane and counts the frames in between as lost. Never throws for a bad stream.
+// Decodes a whole file, never trusting it: a corrupt run is lost whole; decoding resumes at the
+// next start code, and the next intra plane's frame_number says how many frames were lost.
+// Never throws for a bad stream.
 FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes);
 
 }  // namespace fapcast::codec

@@ -1,9 +1,9 @@
 #pragma once
 // Frame-at-a-time FBA coding for live transport: each frame becomes one byte-aligned, self-
-// delimiting access unit (an object plane), so that RTP can carry one per packet and a receiver
-// that lost packets resumes at the next intra access unit. spec/fba.md defines the bits. The
-// whole-file coder shares the same coder state and segment coding; a file need not spend a start
-// code and byte alignment on every frame (spec/fba.md says what a file does).
+// delimiting access unit (a plane start code, one object plane, alignment), so that RTP can carry
+// one per packet and a receiver that lost packets resumes at the next intra access unit.
+// spec/fba.md defines the bits. The whole-file coder shares the coder state and the plane coding
+// but packs P planes without start codes (spec/fba.md §1).
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/fba_coding_state.hpp"
 #include "fapcast/codec/fba_errc.hpp"
@@ -20,6 +20,9 @@ namespace fapcast::codec {
 struct FbaEncoderOptions {
   int fap_quant = 1;      // 0 (lossless) .. 31; quantiser step = QP[fap] * fap_quant
   int intra_period = 25;  // an intra frame at least every this many frames (>= 1)
+  // Whole files only: choose each FAP's P predictor per intra period (spec/fba.md §6); false
+  // predicts every P value from the previous one, as the notes' codec does.
+  bool choose_predictors = true;
 };
 
 struct FbaAccessUnit {
@@ -70,6 +73,8 @@ class FbaFrameDecoder {
   int last_skip_frames() const;
   // After an error: the bit offset in the unit where it was noticed.
   std::uint64_t error_bit() const;
+  // The frame_number an intra unit carries (its frame index modulo 65536); -1 for a P unit.
+  int last_frame_number() const;
 
  private:
   struct State;

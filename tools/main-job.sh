@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
-# The main job (README, first command). Installs what is missing, builds `fapcast`, and runs the
-# best end-to-end job the project has today. `fapcast say` (synthesis from text) does not exist
-# yet: the voice build and the unit-selection front door are still open (issues 4/7-5/7). Today
-# the job (1) reads a real Xface .fap sample and converts it through every format fapcast writes
+# The main job (README, first command). Installs what is missing, builds `fapcast`, and runs
+# `fapcast say` with the default voice (built from the SYNTHETIC reference corpus on first use and
+# cached), then (1) converts a real Xface .fap sample through every format fapcast writes
 # (strict .fap, FBA bitstream and back, BVH, JSON) and (2) records a small SYNTHETIC reference
 # corpus (espeak-ng speech, ICT-FaceKit markers: C3D + WAV + TextGrid + manifest), (3) builds its
 # voice onto the generic ICT face and scores the retargeting by the paper's lip measures.
@@ -12,6 +11,8 @@ cd "$(dirname "$0")/.."
 bash tools/build.sh
 fapcast=build/release/tools/fapcast
 mkdir -p out
+"$fapcast" say "The quick brown fox jumps over the lazy dog." -o out/say.fap --wav out/say.wav --viseme
+"$fapcast" fap info out/say.fap
 sample=tests/data/xface/joy.fap
 "$fapcast" fap info "$sample"
 "$fapcast" fap convert "$sample" out/joy.strict.fap

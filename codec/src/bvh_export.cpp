@@ -1,5 +1,7 @@
 #include "fapcast/codec/bvh_export.hpp"
 
+#include "fapcast/codec/fap_axis.hpp"
+
 #include <array>
 #include <numbers>
 #include <optional>
@@ -32,17 +34,6 @@ constexpr std::array<BvhRigPoint, 17> kRigPoints{{
 
 constexpr int kOpenJaw = 3, kThrustJaw = 14, kShiftJaw = 15;
 constexpr int kHeadPitch = 48, kHeadYaw = 49, kHeadRoll = 50;
-
-// The unit vector of a FAP's "direction" column in face axes (x = face's left, y up, z forward);
-// nullopt for directions that are not a translation (rotations, "growing", "concave-up").
-std::optional<Eigen::Vector3d> direction_axis(std::string_view direction) {
-  if (direction == "up") return Eigen::Vector3d::UnitY();
-  if (direction == "down") return -Eigen::Vector3d::UnitY();
-  if (direction == "left") return Eigen::Vector3d::UnitX();
-  if (direction == "right") return -Eigen::Vector3d::UnitX();
-  if (direction == "forward") return Eigen::Vector3d::UnitZ();
-  return std::nullopt;
-}
 
 // One FAP's contribution to a rig point: displacement = value * step.
 struct Drive {

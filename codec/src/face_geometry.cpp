@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace fapcast::codec {
 
@@ -56,6 +58,29 @@ FaceGeometry generic_adult_face() {
   for (const Row& r : kRows) face.feature_points[r.fp] = Eigen::Vector3d{r.x, r.y, r.z};
   face.head_pivot = Eigen::Vector3d{0.0, 0.0, 0.0};
   face.jaw_pivot = Eigen::Vector3d{0.0, 1.5, 2.0};  // condyles: 1.5 cm up, 2 cm forward
+  return face;
+}
+
+FaceGeometry fit_generic_face(const FeaturePointPositions& neutral) {
+  const FaceGeometry generic = generic_adult_face();
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> pairs;  // (generic, measured)
+  for (const auto& [fp, at] : generic.feature_points)
+    if (const auto it = neutral.find(fp); it != neutral.end()) pairs.emplace_back(at, it->second);
+  if (pairs.size() < 2) throw std::invalid_argument("face fit: fewer than two feature points in common with the generic face");
+  Eigen::Vector3d cg = Eigen::Vector3d::Zero(), cm = Eigen::Vector3d::Zero();
+  for (const auto& [g, m] : pairs) cg += g, cm += m;
+  cg /= static_cast<double>(pairs.size());
+  cm /= static_cast<double>(pairs.size());
+  double gg = 0.0, gm = 0.0;
+  for (const auto& [g, m] : pairs) gg += (g - cg).squaredNorm(), gm += (g - cg).dot(m - cm);
+  if (!(gg > 0.0) || !(gm > 0.0)) throw std::invalid_argument("face fit: the shared feature points coincide or are mirrored");
+  const double s = gm / gg;  // least-squares scale (no rotation: both use face axes)
+  auto place = [&](const Eigen::Vector3d& g) -> Eigen::Vector3d { return cm + s * (g - cg); };
+  FaceGeometry face;
+  for (const auto& [fp, at] : generic.feature_points) face.feature_points[fp] = place(at);
+  for (const auto& [fp, at] : neutral) face.feature_points[fp] = at;
+  face.head_pivot = place(generic.head_pivot);
+  face.jaw_pivot = place(generic.jaw_pivot);
   return face;
 }
 

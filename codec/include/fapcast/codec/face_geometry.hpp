@@ -25,4 +25,12 @@ struct FaceGeometry {
 // /1024 per unit), jaw length 11.86 cm. The synthesis stage passes the real target face instead.
 FaceGeometry generic_adult_face();
 
+// A face from measured neutral feature points (any length unit, face axes): the generic adult
+// face scaled and moved onto them (least-squares uniform scale + translation over the points
+// both have) supplies what they lack: the head and jaw pivots and any point the generic face
+// has but `neutral` does not (e.g. the tongue tip 6.1 of a face captured without a tongue).
+// Measured points are kept as given. Throws std::invalid_argument when fewer than two points
+// are shared or they coincide.
+FaceGeometry fit_generic_face(const FeaturePointPositions& neutral);
+
 }  // namespace fapcast::codec

@@ -1,0 +1,124 @@
+#include "fapcast/synth/tongue.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fapcast/synth/voice_frame_grid.hpp"
+
+namespace fapcast::synth {
+namespace {
+
+// spec/tongue.tsv, row for row (the test checks it); rationale in spec/synthesis.md.
+// phone, {shift_tip, raise_tip, thrust_tip, raise_body, roll}, {alpha_tip, alpha_body,
+// theta_before, theta_after, c}.
+struct Row {
+  Phone phone;
+  std::array<float, kTongueFapCount> value;
+  std::array<float, 5> dominance;
+};
+constexpr std::array<Row, kPhoneCount> kRows{{
+    {Phone::AA, {0, -40, -30, -150, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // open back: tongue low and back
+    {Phone::AE, {0, 40, 10, -60, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // open front: low, tip behind lower teeth
+    {Phone::AH, {0, 0, 0, 0, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // central: near rest
+    {Phone::AO, {0, -40, -40, -100, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // open-mid back: low, retracted
+    {Phone::AW, {0, -40, -20, -120, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // nucleus a: low
+    {Phone::AY, {0, -20, 0, -100, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // nucleus a: low
+    {Phone::EH, {0, 60, 10, 180, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // mid front: body half raised
+    {Phone::ER, {0, 250, -100, 250, 18000}, {0.8f, 1.0f, 16.0f, 16.0f, 1.0f}},  // r-coloured: tip up and back, cupped
+    {Phone::EY, {0, 80, 10, 280, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // close-mid front
+    {Phone::IH, {0, 80, 10, 300, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // near-close front
+    {Phone::IY, {0, 100, 20, 420, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // close front: body high under the palate
+    {Phone::OW, {0, -20, -40, 120, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // mid back
+    {Phone::OY, {0, -20, -40, -60, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // nucleus open-mid back
+    {Phone::UH, {0, -20, -50, 260, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // near-close back
+    {Phone::UW, {0, -20, -60, 380, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // close back: dorsum high, tip low
+    {Phone::B, {0, 0, 0, 60, 0}, {0.2f, 0.2f, 20.0f, 20.0f, 1.0f}},  // lips only: tongue free (from context)
+    {Phone::CH, {0, 380, -60, 250, 10000}, {1.0f, 0.8f, 18.0f, 18.0f, 1.0f}},  // postalveolar: blade up behind the ridge, grooved
+    {Phone::D, {0, 550, 20, 80, 0}, {1.0f, 0.6f, 18.0f, 18.0f, 1.0f}},  // alveolar: tip on the ridge
+    {Phone::DH, {0, 230, 120, 40, 0}, {1.0f, 0.6f, 18.0f, 18.0f, 1.0f}},  // dental: tip forward between the teeth
+    {Phone::F, {0, 0, 0, 60, 0}, {0.2f, 0.2f, 20.0f, 20.0f, 1.0f}},  // lips only
+    {Phone::G, {0, -30, -40, 500, 0}, {0.4f, 1.0f, 18.0f, 18.0f, 1.0f}},  // velar: dorsum against the soft palate
+    {Phone::HH, {0, 0, 0, 60, 0}, {0.1f, 0.1f, 20.0f, 20.0f, 1.0f}},  // glottal: tongue from context
+    {Phone::JH, {0, 380, -60, 250, 10000}, {1.0f, 0.8f, 18.0f, 18.0f, 1.0f}},  // as CH
+    {Phone::K, {0, -30, -40, 500, 0}, {0.4f, 1.0f, 18.0f, 18.0f, 1.0f}},  // velar
+    {Phone::L, {0, 520, 0, -40, 0}, {1.0f, 0.6f, 18.0f, 18.0f, 1.0f}},  // lateral: tip up, sides down
+    {Phone::M, {0, 0, 0, 60, 0}, {0.2f, 0.2f, 20.0f, 20.0f, 1.0f}},  // lips only
+    {Phone::N, {0, 550, 20, 80, 0}, {1.0f, 0.6f, 18.0f, 18.0f, 1.0f}},  // alveolar
+    {Phone::NG, {0, -30, -40, 500, 0}, {0.4f, 1.0f, 18.0f, 18.0f, 1.0f}},  // velar
+    {Phone::P, {0, 0, 0, 60, 0}, {0.2f, 0.2f, 20.0f, 20.0f, 1.0f}},  // lips only
+    {Phone::R, {0, 250, -100, 250, 18000}, {0.8f, 1.0f, 16.0f, 16.0f, 1.0f}},  // bunched r: tip up and back, cupped
+    {Phone::S, {0, 420, 20, 200, 15000}, {1.0f, 0.6f, 18.0f, 18.0f, 1.0f}},  // sibilant: tip near the ridge, grooved
+    {Phone::SH, {0, 380, -60, 250, 10000}, {1.0f, 0.8f, 18.0f, 18.0f, 1.0f}},  // postalveolar
+    {Phone::T, {0, 550, 20, 80, 0}, {1.0f, 0.6f, 18.0f, 18.0f, 1.0f}},  // alveolar
+    {Phone::TH, {0, 230, 120, 40, 0}, {1.0f, 0.6f, 18.0f, 18.0f, 1.0f}},  // dental
+    {Phone::V, {0, 0, 0, 60, 0}, {0.2f, 0.2f, 20.0f, 20.0f, 1.0f}},  // lips only
+    {Phone::W, {0, -20, -50, 350, 0}, {0.3f, 0.8f, 16.0f, 16.0f, 1.0f}},  // labial-velar: dorsum raised back
+    {Phone::Y, {0, 100, 20, 450, 0}, {0.4f, 1.0f, 16.0f, 16.0f, 1.0f}},  // palatal: body high front
+    {Phone::Z, {0, 420, 20, 200, 15000}, {1.0f, 0.6f, 18.0f, 18.0f, 1.0f}},  // sibilant
+    {Phone::ZH, {0, 380, -60, 250, 10000}, {1.0f, 0.8f, 18.0f, 18.0f, 1.0f}},  // postalveolar
+    {Phone::SIL, {0, 0, 0, 0, 0}, {0.5f, 0.5f, 20.0f, 20.0f, 1.0f}},  // rest
+}};
+
+constexpr std::array<TongueTarget, kPhoneCount> make_table() {
+  std::array<TongueTarget, kPhoneCount> out{};
+  for (std::size_t i = 0; i < kPhoneCount; ++i) {
+    const Row& r = kRows[i];
+    out[i] = {r.phone, r.value, r.dominance[0], r.dominance[1], r.dominance[2], r.dominance[3],
+              r.dominance[4]};
+  }
+  return out;
+}
+constexpr auto kTable = make_table();
+
+constexpr bool in_phone_order() {
+  for (std::size_t i = 0; i < kPhoneCount; ++i)
+    if (static_cast<std::size_t>(kTable[i].phone) != i) return false;
+  return true;
+}
+static_assert(in_phone_order(), "tongue table rows must follow Phone order");
+
+}  // namespace
+
+std::span<const TongueTarget, kPhoneCount> tongue_table() { return kTable; }
+
+const TongueTarget& tongue_target(Phone phone) { return kTable[static_cast<std::size_t>(phone)]; }
+
+Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<const Phone> phones) {
+  if (targets.size() != phones.size())
+    throw std::invalid_argument("tongue: " + std::to_string(targets.size()) + " targets but " +
+                                std::to_string(phones.size()) + " phones");
+  const std::int64_t frames = targets.empty() ? 0 : targets.back().end_frame;
+  Eigen::MatrixXf out = Eigen::MatrixXf::Zero(static_cast<Eigen::Index>(frames), kTongueFapCount);
+  if (targets.empty()) return out;
+  constexpr double kFps = static_cast<double>(kVoiceFramesPerSecond);
+  std::vector<double> centre(targets.size());
+  for (std::size_t s = 0; s < targets.size(); ++s)
+    centre[s] = 0.5 * static_cast<double>(targets[s].first_frame + targets[s].end_frame) / kFps;
+  std::size_t here = 0;  // the target phone that owns frame n
+  for (std::int64_t n = targets.front().first_frame; n < frames; ++n) {
+    while (n >= targets[here].end_frame) ++here;
+    const double t = static_cast<double>(n) / kFps;
+    std::array<double, kTongueFapCount> num{}, den{};
+    auto add = [&](std::size_t s) {
+      const TongueTarget& p = tongue_target(phones[s]);
+      const double tau = t - centre[s];
+      const double tip = p.tip().at(tau), body = p.body().at(tau);
+      for (std::size_t f = 0; f < kTongueFapCount; ++f) {
+        const double d = f < 3 ? tip : body;
+        num[f] += d * p.fap_value[f];
+        den[f] += d;
+      }
+    };
+    add(here);  // always: a long phone's own frames far from its centre still have a value
+    for (std::size_t s = here; s-- > 0 && t - centre[s] <= kTongueReachS;) add(s);
+    for (std::size_t s = here + 1; s < targets.size() && centre[s] - t <= kTongueReachS; ++s) add(s);
+    for (std::size_t f = 0; f < kTongueFapCount; ++f)
+      out(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(f)) =
+          den[f] > 0 ? static_cast<float>(num[f] / den[f]) : 0.0f;
+  }
+  return out;
+}
+
+}  // namespace fapcast::synth

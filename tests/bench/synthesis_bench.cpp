@@ -1,0 +1,171 @@
+// Synthesis speed without TTS: timed phones of a 10-second sentence -> 60 fps PCA frames and
+// tongue (synth::synthesize: grid, search, warp, cross-fade, smoothing, tongue), then FAPs
+// (codec::pca_to_faps) at 25 fps. The graph has the paper corpus's size (1,400 recordings x 30
+// phones, 21 classes, k = 17, 5 frames per phone) with SYNTHETIC class shapes plus noise: a
+// stand-in for a voice's search data, not a voice. Counters: seconds of animation per CPU second,
+// mean active states per phone. Baselines in the same run: no cap on the active states, and
+// PCA -> FAP through the whole mesh (mean + c * components over 3N columns) instead of the basis
+// restricted to the feature points.
+#include "fapcast/codec/face_geometry.hpp"
+#include "fapcast/codec/pca_faps.hpp"
+#include "fapcast/synth/synthesis.hpp"
+#include "fapcast/transport/track_resample.hpp"
+#include "support/synthetic_voice_graph.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <numeric>
+#include <random>
+
+namespace {
+using namespace fapcast;
+
+constexpr std::int64_t kRate = 22050;
+constexpr double kSentenceS = 10.0;
+constexpr Eigen::Index kK = 17;
+constexpr std::int64_t kMeshVertices = 26'719;  // ICT-FaceKit's full head, for the mesh baseline
+
+struct World {
+  test::SyntheticVoiceGraph voice;
+  std::vector<synth::TimedPhone> phones;
+  codec::FeaturePointBasis basis;
+  codec::RowMajorMatrixXf mesh_mean, mesh_components;
+  std::vector<codec::FeaturePointVertex> fp_vertices;
+};
+
+const World& world() {
+  static const World w = [] {
+    World w;
+    w.voice = test::synthetic_voice_graph(1400, 30, 5, kK, 42, 0.1f);
+    // A 10 s sentence: random phones of 50..130 ms, silence at both ends.
+    std::mt19937_64 rng(7);
+    std::uniform_int_distribution<int> phone(0, static_cast<int>(synth::kPhoneCount) - 2), ms(50, 130);
+    std::int64_t at = 0;
+    const auto end = static_cast<std::int64_t>(kSentenceS * kRate);
+    while (at < end) {
+      const std::int64_t len = std::min<std::int64_t>(end - at, ms(rng) * kRate / 1000);
+      const auto p = (at == 0 || at + len >= end) ? synth::Phone::SIL : static_cast<synth::Phone>(phone(rng));
+      w.phones.push_back({p, at, at + len, at, at, synth::kNoWord, ""});
+      at += len;
+    }
+    // A mesh basis whose feature-point vertices sit on the generic face (cm).
+    const auto face = codec::generic_adult_face();
+    std::normal_distribution<float> normal(0.0f, 0.05f);
+    w.mesh_mean = codec::RowMajorMatrixXf::Zero(1, 3 * kMeshVertices);
+    w.mesh_components.resize(kK, 3 * kMeshVertices);
+    for (Eigen::Index i = 0; i < w.mesh_components.size(); ++i) w.mesh_components.data()[i] = normal(rng);
+    std::int64_t v = 0;
+    for (const auto& [fp, at3] : face.feature_points) {
+      w.fp_vertices.push_back({fp, v * 997});
+      for (int a = 0; a < 3; ++a) w.mesh_mean(0, 3 * v * 997 + a) = static_cast<float>(at3(a));
+      ++v;
+    }
+    w.basis = codec::restrict_basis(w.mesh_mean, w.mesh_components, w.fp_vertices, face.feature_points);
+    return w;
+  }();
+  return w;
+}
+
+void report(benchmark::State& state, const synth::SynthesizedTrack& s) {
+  state.counters["anim_s_per_cpu_s"] =
+      benchmark::Counter(kSentenceS * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  const auto& a = s.search.stats.active_per_step;
+  state.counters["active_mean"] = std::accumulate(a.begin(), a.end(), 0.0) / static_cast<double>(a.size());
+  state.counters["active_max"] = static_cast<double>(*std::max_element(a.begin(), a.end()));
+  state.counters["phones"] = static_cast<double>(s.timeline.phones.size());
+  state.counters["units"] = static_cast<double>(s.search.units.size());
+}
+
+synth::SynthesisOptions options_of(const benchmark::State& state) {
+  synth::SynthesisOptions o;
+  o.search.beta = static_cast<double>(state.range(0)) / 100.0;
+  if (state.range(1) > 0) o.search.max_active = static_cast<std::size_t>(state.range(1));
+  return o;
+}
+
+// Phones -> 60 fps PCA frames and tongue. Args: beta x 100, cap (0 = none).
+void BM_Synthesize(benchmark::State& state) {
+  const World& w = world();
+  const auto options = options_of(state);
+  synth::SynthesizedTrack s;
+  for (auto _ : state) {
+    s = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    benchmark::DoNotOptimize(s.pca_frames.data());
+  }
+  report(state, s);
+}
+BENCHMARK(BM_Synthesize)->Args({0, 0})->Args({0, 16})->Args({10, 0})->Args({10, 16})->Unit(benchmark::kMillisecond);
+
+// Phones -> FAP frames at 25 fps (what `say` writes, without TTS and file output).
+void BM_PhonesToFaps(benchmark::State& state) {
+  const World& w = world();
+  const auto options = options_of(state);
+  synth::SynthesizedTrack s;
+  for (auto _ : state) {
+    s = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    codec::FapSequence seq{"bench", {60, 1}, codec::pca_to_faps(s.pca_frames, w.basis)};
+    auto out = transport::resample_track(seq, {25, 1}, transport::ResampleMode::kLinear);
+    benchmark::DoNotOptimize(out.frames.data());
+  }
+  report(state, s);
+}
+BENCHMARK(BM_PhonesToFaps)->Args({0, 0})->Args({10, 16})->Unit(benchmark::kMillisecond);
+
+// The search is over the whole utterance (Viterbi back-trace), so the first frame exists only
+// when the sentence is synthesised: time to first frame = synthesis + one frame of FAPs.
+void BM_TimeToFirstFrame(benchmark::State& state) {
+  const World& w = world();
+  const auto options = options_of(state);
+  for (auto _ : state) {
+    auto s = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    auto first = codec::pca_to_faps(s.pca_frames.topRows(1), w.basis);
+    benchmark::DoNotOptimize(first.data());
+  }
+}
+BENCHMARK(BM_TimeToFirstFrame)->Args({0, 0})->Args({10, 16})->Unit(benchmark::kMillisecond);
+
+// PCA -> FAP for 600 frames (10 s at 60 fps): the restricted basis against reconstructing every
+// mesh vertex and then reading the feature points.
+Eigen::MatrixXf frames_600() {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<float> normal;
+  Eigen::MatrixXf c(600, kK);
+  for (Eigen::Index i = 0; i < c.size(); ++i) c.data()[i] = normal(rng);
+  return c;
+}
+
+void BM_PcaToFaps_RestrictedBasis(benchmark::State& state) {
+  const World& w = world();
+  const Eigen::MatrixXf c = frames_600();
+  for (auto _ : state) {
+    auto f = codec::pca_to_faps(c, w.basis);
+    benchmark::DoNotOptimize(f.data());
+  }
+  state.counters["frames_per_s"] = benchmark::Counter(600.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_PcaToFaps_RestrictedBasis)->Unit(benchmark::kMillisecond);
+
+void BM_PcaToFaps_FullMesh(benchmark::State& state) {
+  const World& w = world();
+  const Eigen::MatrixXf c = frames_600();
+  // Each frame reconstructed over all 3N columns, then the feature points read off it (the FAP
+  // arithmetic that follows is left out: this baseline is a lower bound).
+  for (auto _ : state) {
+    codec::RowMajorMatrixXf mesh(1, w.mesh_mean.cols());
+    Eigen::MatrixXf picked(600, static_cast<Eigen::Index>(3 * w.fp_vertices.size()));
+    for (Eigen::Index n = 0; n < 600; ++n) {
+      mesh.noalias() = w.mesh_mean + c.row(n) * w.mesh_components;
+      for (std::size_t i = 0; i < w.fp_vertices.size(); ++i)
+        for (int a = 0; a < 3; ++a)
+          picked(n, static_cast<Eigen::Index>(3 * i + a)) = mesh(0, 3 * w.fp_vertices[i].vertex + a);
+    }
+    benchmark::DoNotOptimize(picked.data());
+  }
+  state.counters["frames_per_s"] = benchmark::Counter(600.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_PcaToFaps_FullMesh)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,57 @@
+#pragma once
+// A SYNTHETIC stand-in for a voice's search data: recordings of random phones whose PCA frames
+// hold a known per-class shape (so tests can see what was rendered) plus optional noise. Not a
+// voice: no mesh, no retargeting.
+#include "fapcast/synth/phone_graph.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <vector>
+
+namespace fapcast::test {
+
+struct SyntheticVoiceGraph {
+  std::vector<synth::PhoneState> states;
+  Eigen::MatrixXf frames;  // corpus frames x k
+  std::unique_ptr<synth::PhoneGraph> graph;
+};
+
+// Coefficient c of class v's shape: column 0 is -1 for bilabials (a closure) and 1 + v / 10
+// otherwise; column c > 0 is sin(v + c).
+inline float class_shape(synth::VisemeClass v, Eigen::Index c) {
+  const auto i = static_cast<int>(v);
+  if (c > 0) return static_cast<float>(std::sin(i + static_cast<int>(c)));
+  return v == synth::VisemeClass::kBilabial ? -1.0f : 1.0f + static_cast<float>(i) / 10.0f;
+}
+
+// `recordings` x `phones_per_recording` states of random classes drawn from `classes` (all 21
+// when empty), `frames_per_phone` frames each, k columns; noise is N(0, noise^2).
+inline SyntheticVoiceGraph synthetic_voice_graph(std::uint32_t recordings, int phones_per_recording,
+                                                 std::uint32_t frames_per_phone, Eigen::Index k,
+                                                 std::uint64_t seed, float noise = 0.0f,
+                                                 std::vector<synth::VisemeClass> classes = {},
+                                                 bool junction_features = true) {
+  if (classes.empty())
+    for (std::size_t v = 0; v < synth::kVisemeClassCount; ++v) classes.push_back(static_cast<synth::VisemeClass>(v));
+  SyntheticVoiceGraph g;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, classes.size() - 1);
+  std::normal_distribution<float> normal(0.0f, 1.0f);
+  std::uint32_t f = 0;
+  for (std::uint32_t u = 0; u < recordings; ++u)
+    for (int p = 0; p < phones_per_recording; ++p, f += frames_per_phone)
+      g.states.push_back({u, classes[pick(rng)], {f, frames_per_phone}});
+  g.frames.resize(f, k);
+  for (const auto& s : g.states)
+    for (std::uint32_t n = s.frames.first; n < s.frames.first + s.frames.count; ++n)
+      for (Eigen::Index c = 0; c < k; ++c)
+        g.frames(n, c) = class_shape(s.viseme, c) + (noise > 0 ? noise * normal(rng) : 0.0f);
+  g.graph = junction_features ? std::make_unique<synth::PhoneGraph>(g.states, synth::junction_features(g.states, g.frames))
+                              : std::make_unique<synth::PhoneGraph>(g.states);
+  return g;
+}
+
+}  // namespace fapcast::test

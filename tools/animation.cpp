@@ -1,0 +1,68 @@
+#include "animation.hpp"
+
+#include "fapcast/codec/bvh_export.hpp"
+#include "fapcast/codec/bvh_text.hpp"
+#include "fapcast/codec/pca_faps.hpp"
+#include "fapcast/synth/tongue.hpp"
+#include "fapcast/transport/file_io.hpp"
+#include "fapcast/transport/track_file.hpp"
+#include "fapcast/transport/track_resample.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace fapcast::tools {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+}  // namespace
+
+codec::FapSequence fap_track(const synth::SynthesizedTrack& track, const codec::FeaturePointBasis& basis,
+                             const AnimationOptions& options, std::int64_t end_sample) {
+  codec::FapSequence voice_rate{options.name, {static_cast<std::uint32_t>(synth::kVoiceFramesPerSecond), 1},
+                                codec::pca_to_faps(track.pca_frames, basis)};
+  const auto& targets = track.timeline.phones;
+  std::size_t t = 0;
+  for (std::size_t n = 0; n < voice_rate.frames.size(); ++n) {
+    codec::FapFrame& f = voice_rate.frames[n];
+    for (std::size_t i = 0; i < synth::kTongueFapCount; ++i)
+      f.set(synth::kFirstTongueFap + static_cast<int>(i),
+            static_cast<std::int32_t>(std::lround(track.tongue(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(i)))));
+    if (options.viseme) {
+      while (static_cast<std::int64_t>(n) >= targets[t].end_frame) ++t;
+      f.mask.set(codec::kVisemeFap);
+      f.viseme = {static_cast<std::uint8_t>(synth::mpeg4_viseme(track.timeline.phone_of[t])), 0, 63, false};
+    }
+  }
+  codec::FapSequence out = voice_rate.rate == options.rate
+                               ? std::move(voice_rate)
+                               : transport::resample_track(voice_rate, options.rate, transport::ResampleMode::kLinear);
+  // The 60 fps grid ends on the first instant at or after the audio's end; at another rate that
+  // can leave one frame shown after the sound has ended.
+  const std::int64_t sample_rate = track.timeline.sample_rate_hz;
+  const auto shown = static_cast<std::size_t>(
+      end_sample > 0 ? codec::sample_to_frame(end_sample - 1, options.rate, sample_rate) + 1 : 0);
+  if (out.frames.size() > shown) out.frames.resize(shown);
+  return out;
+}
+
+bool is_animation_output(const std::filesystem::path& path) {
+  return transport::track_format_of(path).has_value() || lower_extension(path) == ".bvh";
+}
+
+void write_animation(const std::filesystem::path& path, const codec::FapSequence& seq,
+                     std::int64_t sample_rate, const codec::FeaturePointPositions& neutral) {
+  if (lower_extension(path) == ".bvh") {
+    transport::write_file_atomically(path, codec::write_bvh(codec::fap_to_bvh(seq, codec::fit_generic_face(neutral))));
+    return;
+  }
+  transport::write_track_file(path, seq, sample_rate);
+}
+
+}  // namespace fapcast::tools

@@ -1,0 +1,37 @@
+#pragma once
+// The back half shared by `say` and `animate`: a synthesised track (60 fps PCA frames + tongue)
+// -> FAP frames through the codec -> the requested frame rate on the WAV timeline -> a file
+// chosen by extension. Wiring only: each step is a library function.
+#include "fapcast/codec/fap_frame.hpp"
+#include "fapcast/codec/feature_point_basis.hpp"
+#include "fapcast/synth/synthesis.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace fapcast::tools {
+
+struct AnimationOptions {
+  codec::FrameRate rate{25, 1};  // output frames per second
+  bool viseme = false;           // also write FAP 1 (the MPEG-4 viseme of the phone on screen)
+  std::string name = "fapcast";  // the track's name (.fap header)
+};
+
+// FAP frames of `track` at options.rate: frame j shows the 60 fps frames interpolated at
+// j / rate seconds (transport::resample_track, linear), i.e. sample
+// codec::frame_to_sample(j, rate, sample_rate) of the WAV; exactly the frames shown before
+// `end_sample` (the audio's length) are kept. Masks: drivable_faps(basis) plus the tongue (43-47)
+// and, optionally, FAP 1.
+codec::FapSequence fap_track(const synth::SynthesizedTrack& track, const codec::FeaturePointBasis& basis,
+                             const AnimationOptions& options, std::int64_t end_sample);
+
+// Whether `path` names an output `say`/`animate` can write (.fap, .fba, .json, .bvh).
+bool is_animation_output(const std::filesystem::path& path);
+
+// Writes `seq` atomically by extension; .json carries each frame's sample at `sample_rate`,
+// .bvh is rigged on the neutral face (codec::fit_generic_face supplies pivots and the tongue tip).
+void write_animation(const std::filesystem::path& path, const codec::FapSequence& seq,
+                     std::int64_t sample_rate, const codec::FeaturePointPositions& neutral);
+
+}  // namespace fapcast::tools

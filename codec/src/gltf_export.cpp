@@ -199,6 +199,38 @@ namespace {
   throw InputError({source, std::nullopt, std::nullopt}, rule, detail);
 }
 
+[[noreturn]] void fail_at(const std::string& source, std::uint64_t offset, const std::string& detail) {
+  throw InputError({source, std::nullopt, offset}, "glb-container", detail);
+}
+
+std::uint32_t le32(std::string_view bytes, std::size_t at) {
+  std::uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = (v << 8) | static_cast<unsigned char>(bytes[at + static_cast<std::size_t>(i)]);
+  return v;
+}
+
+// The GLB container, checked before tinygltf sees it: tinygltf 2.7 lets a BIN chunk run up to
+// 8 bytes past the declared length, so the lengths are held to the byte here.
+void check_container(std::string_view b, const std::string& source) {
+  if (b.size() < 20) fail_at(source, 0, "shorter than the 20-byte GLB header and chunk header");
+  if (b.substr(0, 4) != "glTF") fail_at(source, 0, "no 'glTF' magic");
+  if (le32(b, 4) != 2) fail_at(source, 4, "GLB version " + std::to_string(le32(b, 4)) + ", 2 expected");
+  if (le32(b, 8) != b.size())
+    fail_at(source, 8, "header length " + std::to_string(le32(b, 8)) + " but the file has " +
+                           std::to_string(b.size()) + " bytes");
+  const std::uint64_t json = le32(b, 12);
+  if (json == 0 || json % 4 != 0 || 20 + json > b.size())
+    fail_at(source, 12, "JSON chunk length " + std::to_string(json) + " is 0, unaligned or past the end");
+  if (le32(b, 16) != 0x4E4F534Au) fail_at(source, 16, "first chunk is not JSON");
+  const std::uint64_t bin = 20 + json;
+  if (bin == b.size()) return;
+  if (bin + 8 > b.size()) fail_at(source, bin, "truncated BIN chunk header");
+  const std::uint64_t bin_length = le32(b, bin);
+  if (bin_length % 4 != 0 || bin + 8 + bin_length != b.size())
+    fail_at(source, bin, "BIN chunk length " + std::to_string(bin_length) + " does not end the file");
+  if (le32(b, bin + 4) != 0x004E4942u) fail_at(source, bin + 4, "second chunk is not BIN");
+}
+
 // The floats of a FLOAT accessor of `components` per element, bounds-checked.
 std::vector<float> read_floats(const tinygltf::Model& m, int index, int components,
                                const std::string& source, const char* what) {
@@ -240,7 +272,7 @@ FrameRate rate_of(const std::vector<float>& times, const std::string& source) {
   if (!(step > 0)) fail(source, "gltf-key-times", "key times do not increase");
   const double fps = 1.0 / step;
   FrameRate rate{static_cast<std::uint32_t>(std::lround(fps)), 1};
-  if (std::abs(fps - rate.numerator) > 1e-3 * fps)
+  if (std::abs(fps - rate.numerator) > 1e-4 * fps)
     rate = FrameRate{static_cast<std::uint32_t>(std::lround(fps * 1001)), 1001};
   for (std::size_t f = 0; f < times.size(); ++f) {
     const double want = static_cast<double>(f) * rate.denominator / rate.numerator;
@@ -259,6 +291,7 @@ MorphAnimation read_glb(std::string_view bytes, const std::string& source) {
   std::string err, warn;
   if (bytes.size() > std::numeric_limits<unsigned int>::max())
     fail(source, "glb-too-large", "more than 4 GiB");
+  check_container(bytes, source);
   if (!gltf.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(bytes.data()),
                                  static_cast<unsigned int>(bytes.size())))
     fail(source, "glb-syntax", err.empty() ? "tinygltf refused the file" : err);

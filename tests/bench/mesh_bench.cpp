@@ -17,6 +17,7 @@
 #include "fapcast/synth/face_adaptation.hpp"
 #include "fapcast/synth/face_model.hpp"
 #include "fapcast/synth/obj_mesh.hpp"
+#include "support/scatter_adaptation.hpp"
 
 namespace {
 std::atomic<std::int64_t> g_heap{0}, g_peak{0};
@@ -52,27 +53,6 @@ const synth::FaceModel& actor() {
   return a;
 }
 
-// The alternative: the same maps and weights, scattered onto corners (no halfedge structure).
-std::vector<Eigen::Matrix3f> scatter_maps(const Positions& generic, const Positions& specific,
-                                          const synth::PolygonFaces& faces) {
-  const auto tris = synth::triangulate(faces);
-  std::vector<Eigen::Matrix3d> sum(static_cast<std::size_t>(generic.cols()), Eigen::Matrix3d::Zero());
-  std::vector<double> weight(sum.size(), 0.0);
-  const Eigen::Matrix3Xd x = generic.cast<double>(), y = specific.cast<double>();
-  for (Eigen::Index t = 0; t < tris.cols(); ++t) {
-    const int a = tris(0, t), b = tris(1, t), c = tris(2, t);
-    const double area = 0.5 * (x.col(b) - x.col(a)).cross(x.col(c) - x.col(a)).norm();
-    const Eigen::Matrix3d m = synth::triangle_map(x.col(a), x.col(b), x.col(c), y.col(a), y.col(b), y.col(c));
-    for (const int v : {a, b, c}) {
-      sum[static_cast<std::size_t>(v)] += area * m;
-      weight[static_cast<std::size_t>(v)] += area;
-    }
-  }
-  std::vector<Eigen::Matrix3f> out(sum.size());
-  for (std::size_t v = 0; v < sum.size(); ++v) out[v] = (sum[v] / weight[v]).cast<float>();
-  return out;
-}
-
 template <typename Build>
 void measure_build(benchmark::State& state, Build build) {
   const auto& g = synth::ict_face_model();
@@ -99,7 +79,7 @@ BENCHMARK(BM_AdaptationBuild_OpenMesh)->Unit(benchmark::kMillisecond);
 
 void BM_AdaptationBuild_Scatter(benchmark::State& state) {
   measure_build(state, [](const synth::FaceModel& g, const synth::FaceModel& a) {
-    return scatter_maps(g.neutral_cm, a.neutral_cm, g.faces);
+    return test::scatter_adaptation_maps(g.neutral_cm, a.neutral_cm, g.faces);
   });
 }
 BENCHMARK(BM_AdaptationBuild_Scatter)->Unit(benchmark::kMillisecond);

@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "fapcast/codec/input_error.hpp"
@@ -102,7 +104,7 @@ TEST(GltfExport, TinyGltfLoadsWhatTheSpecRequires) {
   EXPECT_EQ(input.count, 5u);
   EXPECT_EQ(output.count, 10u);  // F x K scalars
   ASSERT_EQ(input.minValues.size(), 1u);  // glTF: sampler input needs min/max
-  EXPECT_EQ(input.maxValues[0], static_cast<double>(4.0f / 60.0f));
+  EXPECT_EQ(input.maxValues[0], static_cast<double>(static_cast<float>(4.0 / 60.0)));
   const auto& buffer = m.buffers[0].data;
   const auto& in_view = m.bufferViews[static_cast<std::size_t>(input.bufferView)];
   const auto& out_view = m.bufferViews[static_cast<std::size_t>(output.bufferView)];
@@ -138,7 +140,7 @@ TEST(GltfExport, ContainerIsWellFormed) {
       const auto view = json["accessors"][sampler[key].get<int>()]["bufferView"].get<int>();
       EXPECT_FALSE(json["bufferViews"][view].contains("target"));
     }
-  for (const auto& view : json["bufferViews"]) EXPECT_EQ(view["byteOffset"].get<int>() % 4, 0);
+  for (const auto& view : json["bufferViews"]) EXPECT_EQ(view.value("byteOffset", 0) % 4, 0);
 }
 
 TEST(GltfExport, ReadGlbRoundTrips) {
@@ -205,11 +207,49 @@ TEST(GltfExport, ReadGlbNamesTheRuleBroken) {
     return std::string("accepted");
   };
   const std::string glb = write_glb(square());
-  EXPECT_EQ(rule_of("not a glb at all"), "glb-syntax");
-  EXPECT_EQ(rule_of(glb.substr(0, glb.size() - 40)), "glb-syntax");
+  EXPECT_EQ(rule_of("not a glb at all"), "glb-container");
+  EXPECT_EQ(rule_of(glb.substr(0, glb.size() - 40)), "glb-container");
   std::string flipped = glb;
   flipped[8] ^= 0x10;  // total length
-  EXPECT_EQ(rule_of(flipped), "glb-syntax");
+  EXPECT_EQ(rule_of(flipped), "glb-container");
+  // A BIN chunk that claims 8 more bytes than the file has (tinygltf 2.7 would read past it).
+  std::string overrun = glb;
+  const std::size_t bin = 20 + u32(glb, 12);
+  const std::uint32_t longer = u32(glb, bin) + 8;
+  std::memcpy(overrun.data() + bin, &longer, 4);
+  EXPECT_EQ(rule_of(overrun), "glb-container");
+  // Valid container, broken JSON.
+  std::string json = glb;
+  json[20] = '[';
+  EXPECT_EQ(rule_of(json), "glb-syntax");
+}
+
+}  // namespace
+}  // namespace fapcast::codec
+
+namespace fapcast::codec {
+namespace {
+
+// A file from another writer (Python json + struct, tests/data/PROVENANCE.md).
+TEST(GltfExport, ReadsAGlbFromAnotherWriter) {
+  const std::string path = std::string(FAPCAST_TEST_DATA) + "/gltf/square-2-targets-3-frames.glb";
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const MorphAnimation a = read_glb(bytes, path);
+  EXPECT_EQ(a.name, "square");
+  EXPECT_EQ(a.base_positions_m.cols(), 4);
+  EXPECT_EQ(a.triangles.cols(), 2);
+  ASSERT_EQ(a.targets_m.size(), 2u);
+  EXPECT_EQ(a.targets_m[0](1, 2), 0.25f);
+  EXPECT_EQ(a.target_names, (std::vector<std::string>{"a", "b"}));
+  EXPECT_EQ(a.rate, (FrameRate{60, 1}));
+  ASSERT_EQ(a.weights.rows(), 3);
+  EXPECT_EQ(a.weights(1, 0), 0.5f);
+  EXPECT_EQ(a.weights(2, 0), 1.0f);
+  // And writing it again gives a file that reads back the same.
+  const MorphAnimation b = read_glb(write_glb(a), "again.glb");
+  EXPECT_EQ(b.targets_m[1], a.targets_m[1]);
+  EXPECT_EQ(b.weights, a.weights);
 }
 
 }  // namespace

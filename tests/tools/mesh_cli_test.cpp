@@ -67,14 +67,19 @@ TEST_F(MeshCli, ExpressionsThenAdaptToAScaledFace) {
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(targets)) ++files;
   EXPECT_EQ(files, 6u);
+  // Adapt two of them (keeps the test fast under the sanitizers).
+  const auto two = dir_ + "/two";
+  fs::create_directories(two);
+  fs::copy_file(targets + "/joy.obj", two + "/joy.obj");
+  fs::copy_file(targets + "/fear.obj", two + "/fear.obj");
 
   // The specific face: the generic one 1.5 times larger, moved.
   const synth::Positions big = (1.5f * generic.vertices).colwise() + Eigen::Vector3f(1, 2, 3);
   transport::write_file_atomically(dir_ + "/big.obj", synth::write_obj_mesh(big, generic.faces));
   r = run_command(fapcast("adapt --generic '" + kIct + "' --specific '" + dir_ + "/big.obj' --targets '" +
-                          targets + "' -o '" + adapted + "'"));
+                          two + "' -o '" + adapted + "'"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("6 targets"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 targets"), std::string::npos) << r.out;
   const auto big_joy = synth::read_obj_mesh(adapted + "/joy.obj");
   const synth::Positions want = big + 1.5f * (joy.vertices - generic.vertices);
   EXPECT_LT((big_joy.vertices - want).cwiseAbs().maxCoeff(), 1e-3f);
@@ -104,7 +109,7 @@ TEST_F(MeshCli, AdaptRefusesBadInputWithExitOneAndBadUsageWithTwo) {
   EXPECT_EQ(r.exit_code, 2);
   r = run_command(fapcast("render '" + dir_ + "/tri.obj' -o '" + out + "'"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("glb-syntax"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("glb-container"), std::string::npos) << r.err;
 }
 
 TEST_F(MeshCli, ExpressionTourAsGlbWithObjFrames) {

@@ -308,7 +308,7 @@ class Parser {
 
 // ---- writing -------------------------------------------------------------------------------
 
-std::string quoted(std::string_view s) {
+std::string praat_quoted(std::string_view s) {
   std::string out = "\"";
   for (char c : s) {
     out += c;
@@ -374,8 +374,8 @@ std::string write_textgrid(const Alignment& grid, TextGridForm form) {
     if (auto p = check_tier_span(grid, tier)) refuse(*p);
     const bool intervals = tier.kind == TierKind::intervals;
     w.heading(1, "item [" + std::to_string(k + 1) + "]:");
-    w.line(2, "class", quoted(intervals ? "IntervalTier" : "TextTier"));
-    w.line(2, "name", quoted(tier.name));
+    w.line(2, "class", praat_quoted(intervals ? "IntervalTier" : "TextTier"));
+    w.line(2, "name", praat_quoted(tier.name));
     w.number(2, "xmin", tier.start_s);
     w.number(2, "xmax", tier.end_s);
     if (intervals) {
@@ -385,7 +385,7 @@ std::string write_textgrid(const Alignment& grid, TextGridForm form) {
         w.heading(2, "intervals [" + std::to_string(i + 1) + "]:");
         w.number(3, "xmin", tier.intervals[i].start_s);
         w.number(3, "xmax", tier.intervals[i].end_s);
-        w.line(3, "text", quoted(tier.intervals[i].label));
+        w.line(3, "text", praat_quoted(tier.intervals[i].label));
       }
     } else {
       w.line(2, "points: size", std::to_string(tier.points.size()));
@@ -393,7 +393,7 @@ std::string write_textgrid(const Alignment& grid, TextGridForm form) {
         if (auto p = check_point(tier, i)) refuse(*p);
         w.heading(2, "points [" + std::to_string(i + 1) + "]:");
         w.number(3, "number", tier.points[i].time_s);
-        w.line(3, "mark", quoted(tier.points[i].mark));
+        w.line(3, "mark", praat_quoted(tier.points[i].mark));
       }
     }
   }

@@ -214,6 +214,7 @@ std::string_view section_name(SectionId id) {
       {vs::kFrameCoefficients, "frame coefficients"}, {vs::kRbfCentres, "rbf centres"},
       {vs::kRbfWeights, "rbf weights"},      {vs::kRbfOffset, "rbf offset"},
       {vs::kRbfScalars, "rbf scalars"},      {vs::kPhoneGraph, "phone graph"},
+      {vs::kFeaturePoints, "feature points"},
   };
   for (const auto& [known, name] : kNames) {
     if (known == id) return name;
@@ -270,6 +271,10 @@ void VoiceFileWriter::add_provenance(const VoiceProvenance& p) {
   j["tool_version"] = p.tool_version;
   j["parameters"] = nlohmann::ordered_json::object();
   for (const auto& [name, value] : p.parameters) j["parameters"][name] = value;
+  if (!p.notes.empty()) {
+    j["notes"] = nlohmann::ordered_json::object();
+    for (const auto& [name, text] : p.notes) j["notes"][name] = text;
+  }
   const std::string text = j.dump(2) + "\n";
   add(voice_section::kProvenance, ElementType::kJson, 1, text.size(), std::as_bytes(std::span(text)));
 }
@@ -450,6 +455,14 @@ VoiceProvenance VoiceFileView::provenance() const {
              describe(s.id) + ": parameter \"" + name + "\" is not a number");
     }
     p.parameters[name] = value.get<double>();
+  }
+  if (const auto notes = j.find("notes"); notes != j.end()) {  // optional
+    if (!notes->is_object()) refuse(source_, s.offset, "provenance-field", describe(s.id) + ": \"notes\" is not an object");
+    for (const auto& [name, value] : notes->items()) {
+      if (!value.is_string())
+        refuse(source_, s.offset, "provenance-field", describe(s.id) + ": note \"" + name + "\" is not a string");
+      p.notes[name] = value.get<std::string>();
+    }
   }
   return p;
 }

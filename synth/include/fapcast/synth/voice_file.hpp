@@ -71,7 +71,8 @@ inline constexpr SectionId kRbfCentres{"RCEN"};    // f64 m x d: source prototyp
 inline constexpr SectionId kRbfWeights{"RWEI"};    // f32 m x D
 inline constexpr SectionId kRbfOffset{"ROFF"};     // f32 1 x D: intercept b
 inline constexpr SectionId kRbfScalars{"RPAR"};    // f64 1 x 2: r^2, lambda
-inline constexpr SectionId kPhoneGraph{"GRPH"};    // bytes: phone graph arrays (opaque for now)
+inline constexpr SectionId kPhoneGraph{"GRPH"};    // bytes: phone graph (voice_graph.hpp layout)
+inline constexpr SectionId kFeaturePoints{"FPNT"}; // json: target-face feature points (voice.hpp)
 }  // namespace voice_section
 
 // A human name for a known section id ("pca components"), or "unknown section".
@@ -86,6 +87,7 @@ struct VoiceProvenance {
   std::string build_time_utc;  // ISO 8601, e.g. "2026-11-22T04:00:00Z"
   std::string tool_version;    // fapcast version that built it
   std::map<std::string, double> parameters;  // k, lambda, r_squared, frames, ...
+  std::map<std::string, std::string> notes;  // optional texts: prototype rule, PCA route, ...
   friend bool operator==(const VoiceProvenance&, const VoiceProvenance&) = default;
 };
 

@@ -1,0 +1,114 @@
+// The whole voice build (voice_build.hpp) on the SYNTHETIC reference corpus onto the full ICT
+// face (D = 80,157): the exact PCA route on the full corpus, and the exact route against EM-PCA on
+// the same subset of utterances (EM-PCA's time is linear in frames x iterations; the full-corpus
+// EM figure is extrapolated from the subset, see spec/voice.md). Peak memory: VmHWM of this
+// process, reset per benchmark.
+//
+// The corpus is recorded once into a temporary directory (about 3 s), or taken from
+// $FAPCAST_BENCH_CORPUS when set.
+#include <benchmark/benchmark.h>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "fapcast/synth/data_root.hpp"
+#include "fapcast/synth/recording_script.hpp"
+#include "fapcast/synth/reference_talker.hpp"
+#include "fapcast/synth/syllabified_lexicon.hpp"
+#include "fapcast/synth/voice_build.hpp"
+#include "fapcast/transport/file_io.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace fapcast::synth;
+
+constexpr std::size_t kSubsetUtterances = 30;
+
+struct Corpora {
+  fs::path full;
+  fs::path subset;  // the first kSubsetUtterances takes, scanned (no manifest)
+  bool owned = false;
+  ~Corpora() {
+    std::error_code ignored;
+    if (owned) fs::remove_all(full, ignored);
+    fs::remove_all(subset, ignored);
+  }
+};
+
+const Corpora& corpora() {
+  static const Corpora c = [] {
+    Corpora out;
+    if (const char* given = std::getenv("FAPCAST_BENCH_CORPUS"); given != nullptr && *given != '\0') {
+      out.full = given;
+    } else {
+      out.owned = true;
+      out.full = fs::temp_directory_path() / ("fapcast_bench_reference_" + std::to_string(::getpid()));
+      const auto lexicon = parse_festival_lexicon(fapcast::transport::read_file(default_cmudict_path()), "cmudict");
+      const auto counts = parse_word_counts(fapcast::transport::read_file(default_word_counts_path()), "word counts");
+      (void)record_reference_corpus(build_recording_script(counts, lexicon), out.full, {},
+                                    [&](const std::string& name, std::string_view bytes) {
+                                      fapcast::transport::write_file_atomically(out.full / name, bytes);
+                                    });
+    }
+    out.subset = fs::temp_directory_path() / ("fapcast_bench_subset_" + std::to_string(::getpid()));
+    fs::create_directories(out.subset);
+    for (std::size_t i = 1; i <= kSubsetUtterances; ++i) {
+      char stem[16];
+      std::snprintf(stem, sizeof stem, "utt%04zu", i);
+      for (const char* ext : {".c3d", ".TextGrid"})
+        fs::copy_file(out.full / (std::string(stem) + ext), out.subset / (std::string(stem) + ext),
+                      fs::copy_options::overwrite_existing);
+    }
+    return out;
+  }();
+  return c;
+}
+
+void reset_peak_memory() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+double peak_memory_mb() {
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+  return -1;
+}
+
+void run(benchmark::State& state, const fs::path& corpus, PcaRoute route) {
+  VoiceBuildOptions options;
+  options.pca = route;
+  options.build_time_utc = "bench";
+  reset_peak_memory();
+  VoiceBuildSummary s;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const BuiltVoice v = build_voice(corpus, options);
+    s = v.summary;
+    bytes = v.bytes.size();
+  }
+  state.counters["frames"] = static_cast<double>(s.frames);
+  state.counters["read_s"] = s.seconds_read;
+  state.counters["fit_s"] = s.seconds_fit;
+  state.counters["pca_s"] = s.seconds_pca;
+  state.counters["pca_iterations"] = s.pca_iterations;
+  state.counters["explained"] = s.explained_fraction;
+  state.counters["voice_MB"] = static_cast<double>(bytes) / 1e6;
+  state.counters["peak_MB"] = peak_memory_mb();
+}
+
+void BM_VoiceBuildFullExact(benchmark::State& state) { run(state, corpora().full, PcaRoute::exact); }
+void BM_VoiceBuildSubsetExact(benchmark::State& state) { run(state, corpora().subset, PcaRoute::exact); }
+void BM_VoiceBuildSubsetEm(benchmark::State& state) { run(state, corpora().subset, PcaRoute::em); }
+
+BENCHMARK(BM_VoiceBuildFullExact)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_VoiceBuildSubsetExact)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+BENCHMARK(BM_VoiceBuildSubsetEm)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,107 @@
+// `fapcast voice build` and `fapcast voice info` (spec/voice.md).
+#include "command.hpp"
+#include "default_voice.hpp"
+
+#include "fapcast/synth/synthetic_label.hpp"
+#include "fapcast/synth/voice.hpp"
+#include "fapcast/synth/voice_build.hpp"
+#include "fapcast/transport/file_io.hpp"
+
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#ifndef FAPCAST_VERSION
+#define FAPCAST_VERSION "unknown"
+#endif
+
+namespace {
+
+constexpr const char* kVoiceGroupHelp = "Build a voice from a capture corpus; show what a voice holds";
+
+std::string_view element_type_name(fapcast::synth::ElementType type) {
+  using fapcast::synth::ElementType;
+  switch (type) {
+    case ElementType::kBytes: return "bytes";
+    case ElementType::kFloat32: return "f32";
+    case ElementType::kFloat64: return "f64";
+    case ElementType::kInt32: return "i32";
+    case ElementType::kUint32: return "u32";
+    case ElementType::kJson: return "json";
+  }
+  return "?";
+}
+
+const fapcast::tools::Registration build_reg{"60-voice-build", [](CLI::App& app) {
+  struct Args {
+    std::string corpus;
+    std::string output;
+    std::string pca = "exact";
+    std::uint64_t seed = 1;
+    bool quiet = false;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = fapcast::tools::command_group(app, "voice", kVoiceGroupHelp)
+                  ->add_subcommand("build",
+                                   "Build a voice from a corpus directory (manifest.json, or *.c3d with "
+                                   "*.TextGrid): prototypes, RBF retargeting onto the ICT face, PCA, phone graph");
+  cmd->add_option("corpus", args->corpus, "Corpus directory")->required();
+  cmd->add_option("-o,--output", args->output, "Voice file to write (.fapv)")->required();
+  cmd->add_option("--pca", args->pca, "PCA route: exact (the RBF map's affine image) or em (EM-PCA, minutes)")
+      ->check(CLI::IsMember({"exact", "em"}))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of EM-PCA's start (recorded in the provenance)")->capture_default_str();
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
+  cmd->callback([args] {
+    fapcast::synth::VoiceBuildOptions options;
+    options.pca = args->pca == "em" ? fapcast::synth::PcaRoute::em : fapcast::synth::PcaRoute::exact;
+    options.seed = args->seed;
+    options.build_time_utc = fapcast::tools::voice_build_time_utc();
+    options.tool_version = FAPCAST_VERSION;
+    options.progress = [&](std::string_view stage, std::size_t done, std::size_t total) {
+      if (args->quiet || (stage == "read" && done % 25 != 0 && done != total)) return;
+      std::cerr << "\rvoice build: " << stage << " " << done << " / " << total << "        " << std::flush;
+    };
+    const auto voice = fapcast::synth::build_voice(args->corpus, options);
+    if (!args->quiet) std::cerr << "\n";
+    fapcast::transport::write_file_atomically(args->output, voice.bytes);
+    const auto& s = voice.summary;
+    std::cout << "voice " << args->output << ": " << s.frames << " frames, " << s.utterances << " utterances, "
+              << s.states << " phone states, " << s.prototypes << " prototypes (target rank " << s.target_rank
+              << "), r^2 " << s.r_squared_m2 << " m^2, lambda " << s.lambda << (s.lambda_at_range_edge ? " (range edge)" : "")
+              << ", " << pca_route_name(options.pca) << " PCA explains " << std::setprecision(6)
+              << 100 * s.explained_fraction << " %, " << voice.bytes.size() << " bytes; read " << s.seconds_read
+              << " s, fit " << s.seconds_fit << " s, pca " << s.seconds_pca << " s, total " << s.seconds_total << " s\n";
+  });
+}};
+
+const fapcast::tools::Registration info_reg{"61-voice-info", [](CLI::App& app) {
+  auto path = std::make_shared<std::string>();
+  auto* cmd = fapcast::tools::command_group(app, "voice", kVoiceGroupHelp)
+                  ->add_subcommand("info", "Print a voice's provenance and the size of each section");
+  cmd->add_option("voice", *path, "Voice file (.fapv)")->required();
+  cmd->callback([path] {
+    const auto voice = fapcast::synth::Voice::open(*path);
+    const auto& p = voice.provenance();
+    std::cout << "voice:        " << *path << "\n"
+              << "corpus:       " << p.corpus << "\n"
+              << "target face:  " << p.target_face << "\n"
+              << "seed:         " << p.seed << "\n"
+              << "synthetic:    " << (p.synthetic ? "yes" : "no") << "\n";
+    if (p.synthetic) std::cout << "label:        " << fapcast::synth::kSyntheticLabel << "\n";
+    std::cout << "built:        " << p.build_time_utc << " by fapcast " << p.tool_version << "\n";
+    for (const auto& [name, value] : p.parameters) std::cout << "  " << std::left << std::setw(24) << name << value << "\n";
+    for (const auto& [name, text] : p.notes) std::cout << "  " << std::left << std::setw(24) << name << text << "\n";
+    std::cout << "k " << voice.component_count() << ", D " << voice.dimension() << ", frames "
+              << voice.frame_coefficients().rows() << ", phone states " << voice.graph().size() << ", utterances "
+              << voice.utterance_frames().size() << ", feature points " << voice.feature_points().size()
+              << ", RBF centres " << voice.retarget_map().centre_count() << "\n";
+    std::cout << "sections (" << voice.file().sections().size() << ", " << voice.file().file_size() << " bytes):\n";
+    for (const auto& s : voice.file().sections())
+      std::cout << "  " << s.id.str() << "  " << std::left << std::setw(20) << fapcast::synth::section_name(s.id)
+                << std::setw(6) << element_type_name(s.type) << std::right << std::setw(8) << s.rows << " x "
+                << std::left << std::setw(8) << s.cols << std::right << std::setw(12) << s.size << " bytes\n";
+  });
+}};
+
+}  // namespace

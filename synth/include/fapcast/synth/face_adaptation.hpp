@@ -31,7 +31,7 @@ class FaceAdaptation {
   std::int32_t vertex_count() const { return static_cast<std::int32_t>(maps_.size()); }
   // Vertex i's map: specific displacement = vertex_map(i) * generic displacement.
   const Eigen::Matrix3f& vertex_map(std::int32_t i) const { return maps_[static_cast<std::size_t>(i)]; }
-  // Least-squares linear map of specific onto generic positions about their centroids; the map
+  // Least-squares linear map from generic to specific positions about their centroids; the map
   // of every vertex that touches no usable triangle.
   const Eigen::Matrix3d& global_map() const { return global_map_; }
 

@@ -38,6 +38,7 @@ const fapcast::tools::Registration build_reg{"60-voice-build", [](CLI::App& app)
     std::string output;
     std::string pca = "exact";
     std::uint64_t seed = 1;
+    int em_iterations = 300;
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
@@ -50,12 +51,16 @@ const fapcast::tools::Registration build_reg{"60-voice-build", [](CLI::App& app)
   cmd->add_option("--pca", args->pca, "PCA route: exact (the RBF map's affine image) or em (EM-PCA, minutes)")
       ->check(CLI::IsMember({"exact", "em"}))
       ->capture_default_str();
+  cmd->add_option("--em-iterations", args->em_iterations, "EM-PCA: at most this many passes after the mean pass")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of EM-PCA's start (recorded in the provenance)")->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
   cmd->callback([args] {
     fapcast::synth::VoiceBuildOptions options;
     options.pca = args->pca == "em" ? fapcast::synth::PcaRoute::em : fapcast::synth::PcaRoute::exact;
     options.seed = args->seed;
+    options.em_max_iterations = args->em_iterations;
     options.build_time_utc = fapcast::tools::voice_build_time_utc();
     options.tool_version = FAPCAST_VERSION;
     options.progress = [&](std::string_view stage, std::size_t done, std::size_t total) {
@@ -70,7 +75,10 @@ const fapcast::tools::Registration build_reg{"60-voice-build", [](CLI::App& app)
               << s.states << " phone states, " << s.prototypes << " prototypes (target rank " << s.target_rank
               << "), r^2 " << s.r_squared_m2 << " m^2, lambda " << s.lambda << (s.lambda_at_range_edge ? " (range edge)" : "")
               << ", " << pca_route_name(options.pca) << " PCA explains " << std::setprecision(6)
-              << 100 * s.explained_fraction << " %, " << voice.bytes.size() << " bytes; read " << s.seconds_read
+              << 100 * s.explained_fraction << " %";
+    if (options.pca == fapcast::synth::PcaRoute::em)
+      std::cout << " after " << s.pca_iterations << " EM passes" << (s.pca_converged ? "" : " (not converged)");
+    std::cout << ", " << voice.bytes.size() << " bytes; read " << s.seconds_read
               << " s, fit " << s.seconds_fit << " s, pca " << s.seconds_pca << " s, total " << s.seconds_total << " s\n";
   });
 }};
@@ -102,6 +110,20 @@ const fapcast::tools::Registration info_reg{"61-voice-info", [](CLI::App& app) {
                 << std::setw(6) << element_type_name(s.type) << std::right << std::setw(8) << s.rows << " x "
                 << std::left << std::setw(8) << s.cols << std::right << std::setw(12) << s.size << " bytes\n";
   });
+}};
+
+}  // namespace
+
+namespace {
+
+const fapcast::tools::Registration default_reg{"62-voice-default", [](CLI::App& app) {
+  auto quiet = std::make_shared<bool>(false);
+  auto* cmd = fapcast::tools::command_group(app, "voice", kVoiceGroupHelp)
+                  ->add_subcommand("default",
+                                   "Build the default voice (SYNTHETIC reference corpus, seed 1) into the cache "
+                                   "unless it is there, and print its path");
+  cmd->add_flag("-q,--quiet", *quiet, "No progress on standard error");
+  cmd->callback([quiet] { std::cout << fapcast::tools::ensure_default_voice(*quiet).string() << "\n"; });
 }};
 
 }  // namespace

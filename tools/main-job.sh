@@ -3,7 +3,8 @@
 # `fapcast say` with the default voice (built from the SYNTHETIC reference corpus on first use and
 # cached), then (1) converts a real Xface .fap sample through every format fapcast writes
 # (strict .fap, FBA bitstream and back, BVH, JSON) and (2) records a small SYNTHETIC reference
-# corpus (espeak-ng speech, ICT-FaceKit markers: C3D + WAV + TextGrid + manifest).
+# corpus (espeak-ng speech, ICT-FaceKit markers: C3D + WAV + TextGrid + manifest), (3) builds its
+# voice onto the generic ICT face and scores the retargeting by the paper's lip measures.
 # Outputs land in out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,5 +21,8 @@ sample=tests/data/xface/joy.fap
 "$fapcast" fap info out/joy.fba
 "$fapcast" export "$sample" -o out/joy.bvh
 "$fapcast" export "$sample" -o out/joy.json
-"$fapcast" corpus record-reference -o out/reference-corpus --count 12 --seed 1
-ls -l out/ out/reference-corpus | head -30
+"$fapcast" corpus record-reference -q -o out/reference-corpus --seed 1
+"$fapcast" voice build -q out/reference-corpus -o out/reference.fapv
+"$fapcast" voice info out/reference.fapv
+"$fapcast" eval retarget -q out/reference.fapv
+ls -l out/ | head -30

@@ -1,5 +1,7 @@
 #include "fapcast/synth/obj_mesh.hpp"
 
+#include <array>
+#include <charconv>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,6 +63,62 @@ ObjMesh read_obj_mesh(const std::filesystem::path& file) {
     mesh.faces.face_vertices.push_back(static_cast<std::int32_t>(zero_based));
   }
   return mesh;
+}
+
+std::string write_obj_mesh(const Positions& vertices, const PolygonFaces& faces,
+                           std::string_view comment) {
+  std::string out;
+  out.reserve(static_cast<std::size_t>(vertices.cols()) * 40 + faces.face_vertices.size() * 8);
+  if (!comment.empty()) {
+    out += "# ";
+    out += comment;
+    out += '\n';
+  }
+  std::array<char, 32> buffer{};
+  for (Eigen::Index i = 0; i < vertices.cols(); ++i) {
+    out += 'v';
+    for (int c = 0; c < 3; ++c) {
+      // Shortest text that reads back to the same float: OBJ round trips are exact.
+      const auto r = std::to_chars(buffer.data(), buffer.data() + buffer.size(), vertices(c, i));
+      out += ' ';
+      out.append(buffer.data(), r.ptr);
+    }
+    out += '\n';
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    out += 'f';
+    for (auto k = faces.face_starts[f]; k < faces.face_starts[f + 1]; ++k) {
+      out += ' ';
+      out += std::to_string(faces.face_vertices[static_cast<std::size_t>(k)] + 1);
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+void require_same_topology(const ObjMesh& generic, const std::filesystem::path& generic_file,
+                           const ObjMesh& specific, const std::filesystem::path& specific_file) {
+  const auto mismatch = [&](const std::string& what) {
+    std::string detail = what;
+    detail += " (generic mesh ";
+    detail += generic_file.string();
+    detail += ")";
+    throw DataFileError(specific_file.string(), 0, "topology-mismatch", detail);
+  };
+  if (specific.vertices.cols() != generic.vertices.cols())
+    mismatch(std::to_string(specific.vertices.cols()) + " vertices, expected " +
+             std::to_string(generic.vertices.cols()));
+  if (specific.faces.size() != generic.faces.size())
+    mismatch(std::to_string(specific.faces.size()) + " faces, expected " +
+             std::to_string(generic.faces.size()));
+  for (std::size_t f = 0; f < generic.faces.size(); ++f) {
+    const auto begin = generic.faces.face_starts[f], end = generic.faces.face_starts[f + 1];
+    bool same = specific.faces.face_starts[f] == begin && specific.faces.face_starts[f + 1] == end;
+    for (auto k = begin; same && k < end; ++k)
+      same = specific.faces.face_vertices[static_cast<std::size_t>(k)] ==
+             generic.faces.face_vertices[static_cast<std::size_t>(k)];
+    if (!same) mismatch("face " + std::to_string(f + 1) + " has other corners than the generic mesh's");
+  }
 }
 
 Eigen::Matrix3Xi triangulate(const PolygonFaces& faces) {

@@ -39,6 +39,12 @@ class StepBuilder {
     }
   }
 
+  // How many offers so far cost strictly less than `bound`.
+  std::size_t count_below(double bound) const {
+    return static_cast<std::size_t>(std::count_if(
+        out_.begin(), out_.end(), [bound](const Active& a) { return a.cost < bound; }));
+  }
+
   std::vector<Active> take() {
     for (const auto& a : out_) slot_[a.state] = kNoBack;
     return std::exchange(out_, {});
@@ -118,8 +124,15 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
       if (graph.has_child(i) && graph.state(i + 1).viseme == targets[t])
         builder.offer(i + 1, prev[a].cost, a, false);
     }
-    // Across recordings: states whose parent looks like the phone we leave.
-    offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), options.beta, builder);
+    // Across recordings: states whose parent looks like the phone we leave. Every join costs at
+    // least the cheapest previous cost + 1, so when the cap is already filled by continuations
+    // strictly cheaper than that, no join can survive pruning: skip them (exact, and the common
+    // case inside long units, where the junction costs dominate the search time).
+    const double join_floor =
+        std::min_element(prev.begin(), prev.end(), better)->cost + 1.0;
+    if (!options.max_active ||
+        builder.count_below(join_floor) < std::max<std::size_t>(*options.max_active, 1))
+      offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), options.beta, builder);
     steps[t] = builder.take();
     if (steps[t].empty()) {  // the voice never recorded this diviseme: join anywhere that matches
       ++result.stats.hard_joins;

@@ -131,6 +131,8 @@ BuiltVoice build_voice(const std::filesystem::path& corpus_dir, const VoiceBuild
     EmPcaOptions em;
     em.components = k;
     em.seed = options.seed;
+    em.max_iterations = options.em_max_iterations;
+    em.tolerance = options.em_tolerance;
     em.on_iteration = [&](int iteration, double) {
       if (options.progress) options.progress("pca", static_cast<std::size_t>(iteration), static_cast<std::size_t>(em.max_iterations));
     };
@@ -190,6 +192,7 @@ BuiltVoice build_voice(const std::filesystem::path& corpus_dir, const VoiceBuild
                            {"target_prototype_rank", static_cast<double>(summary.target_rank)},
                            {"explained_fraction", summary.explained_fraction},
                            {"pca_iterations", basis.iterations},
+                           {"pca_converged", basis.converged ? 1 : 0},
                            {"frames_per_second", kVoiceFramesPerSecond}};
   if (listing.seed) provenance.parameters["corpus_seed"] = static_cast<double>(*listing.seed);
   provenance.notes = {{"prototype_rule", std::string(kSourcePrototypeRule)},

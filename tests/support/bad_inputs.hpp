@@ -43,6 +43,16 @@ inline std::map<std::string, std::string> golden_errors(const std::filesystem::p
   return golden;
 }
 
+// A golden list in `file`, keyed by the text before the first ": " (the file name); empty lines
+// and '#' comment lines skipped (the voice files' EXPECTED.txt).
+inline std::map<std::string, std::string> golden_lines(const std::filesystem::path& file) {
+  std::map<std::string, std::string> golden;
+  std::istringstream lines(slurp(file));
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line[0] != '#') golden[line.substr(0, line.find(": "))] = line;
+  return golden;
+}
+
 // A GoogleTest parameter name for a file name: "bad.001.x-y.bvh" -> "bad_001_x_y".
 inline std::string test_name_of(std::string name) {
   name = name.substr(0, name.rfind('.'));

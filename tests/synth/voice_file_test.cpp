@@ -10,6 +10,7 @@
 #include "fapcast/synth/crc32.hpp"
 #include "fapcast/synth/input_error.hpp"
 #include "fapcast/transport/file_io.hpp"
+#include "support/bad_inputs.hpp"
 
 namespace fapcast::synth {
 namespace {
@@ -178,16 +179,7 @@ std::vector<BadVoice> bad_voices() {
 }
 
 // The golden list: "<file>: <message without the directory>" per line.
-std::map<std::string, std::string> golden() {
-  std::ifstream in(kData / "bad" / "EXPECTED.txt");
-  std::map<std::string, std::string> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    out[line.substr(0, line.find(": "))] = line;
-  }
-  return out;
-}
+std::map<std::string, std::string> golden() { return test::golden_lines(kData / "bad" / "EXPECTED.txt"); }
 
 class BadVoiceFile : public ::testing::TestWithParam<BadVoice> {};
 

@@ -13,6 +13,7 @@
 #include "fapcast/synth/input_error.hpp"
 #include "fapcast/synth/voice_graph.hpp"
 #include "fapcast/transport/file_io.hpp"
+#include "support/bad_inputs.hpp"
 
 namespace fapcast::synth {
 namespace {
@@ -184,16 +185,7 @@ std::vector<BadVoice> bad_voices() {
   return out;
 }
 
-std::map<std::string, std::string> golden() {
-  std::ifstream in(kBad / "EXPECTED.txt");
-  std::map<std::string, std::string> out;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    out[line.substr(0, line.find(": "))] = line;
-  }
-  return out;
-}
+std::map<std::string, std::string> golden() { return test::golden_lines(kBad / "EXPECTED.txt"); }
 
 class BadFullVoice : public ::testing::TestWithParam<BadVoice> {};
 

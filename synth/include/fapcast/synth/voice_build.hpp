@@ -25,6 +25,10 @@ struct VoiceBuildOptions {
   PcaRoute pca = PcaRoute::exact;
   int components = 17;           // k
   std::uint64_t seed = 1;        // EM-PCA's random start (recorded either way)
+  // EM-PCA's stopping rule (EmPcaOptions): at most this many passes after the mean pass, fewer
+  // when the subspace moves less than the tolerance (sine of the largest principal angle).
+  int em_max_iterations = 300;
+  double em_tolerance = 1e-5;
   std::string corpus_name;       // provenance "corpus"; empty = the directory as given
   std::string build_time_utc;    // provenance, as given (the CLI uses SOURCE_DATE_EPOCH or now)
   std::string tool_version;

@@ -1,0 +1,137 @@
+// Mesh outputs and model adaptation on the full ICT face (26,719 vertices, 52,220 triangles):
+//  - building a FaceAdaptation (OpenMesh adjacency) vs the obvious alternative, a plain scatter of
+//    triangle maps onto their corners with no mesh structure: time and peak heap;
+//  - adapting one dense 3 x N target, and all 53 ICT expression targets (sparse);
+//  - .glb bytes per second of animation for k = 17 morph targets at 60 fps.
+// Peak heap is counted by replacing global operator new/delete in this program only.
+#include <benchmark/benchmark.h>
+
+#include <malloc.h>
+
+#include <Eigen/Geometry>
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "fapcast/codec/gltf_export.hpp"
+#include "fapcast/synth/face_adaptation.hpp"
+#include "fapcast/synth/face_model.hpp"
+#include "fapcast/synth/obj_mesh.hpp"
+#include "support/scatter_adaptation.hpp"
+
+namespace {
+std::atomic<std::int64_t> g_heap{0}, g_peak{0};
+void* counted_alloc(std::size_t n) {
+  void* p = std::malloc(n == 0 ? 1 : n);
+  if (!p) throw std::bad_alloc();
+  const auto now = g_heap += static_cast<std::int64_t>(malloc_usable_size(p));
+  auto peak = g_peak.load();
+  while (now > peak && !g_peak.compare_exchange_weak(peak, now)) {}
+  return p;
+}
+void counted_free(void* p) {
+  if (!p) return;
+  g_heap -= static_cast<std::int64_t>(malloc_usable_size(p));
+  std::free(p);
+}
+}  // namespace
+
+void* operator new(std::size_t n) { return counted_alloc(n); }
+void* operator new[](std::size_t n) { return counted_alloc(n); }
+void operator delete(void* p) noexcept { counted_free(p); }
+void operator delete[](void* p) noexcept { counted_free(p); }
+void operator delete(void* p, std::size_t) noexcept { counted_free(p); }
+void operator delete[](void* p, std::size_t) noexcept { counted_free(p); }
+
+namespace {
+
+using namespace fapcast;
+using synth::Positions;
+
+const synth::FaceModel& actor() {
+  static const synth::FaceModel a = synth::make_actor(synth::ict_face_model(), std::vector<float>{0.8f, -0.6f, 0.5f, 0.0f, 0.7f});
+  return a;
+}
+
+template <typename Build>
+void measure_build(benchmark::State& state, Build build) {
+  const auto& g = synth::ict_face_model();
+  std::int64_t peak = 0;
+  for (auto _ : state) {
+    const auto before = g_heap.load();
+    g_peak = before;
+    auto result = build(g, actor());
+    benchmark::DoNotOptimize(result);
+    peak = std::max(peak, g_peak.load() - before);
+  }
+  state.counters["peak_heap_MB"] = static_cast<double>(peak) / 1e6;
+  state.counters["vertices"] = static_cast<double>(g.vertex_count());
+}
+
+void BM_AdaptationBuild_OpenMesh(benchmark::State& state) {
+  measure_build(state, [](const synth::FaceModel& g, const synth::FaceModel& a) {
+    return synth::FaceAdaptation(g.neutral_cm, a.neutral_cm, g.faces);
+  });
+  const synth::FaceAdaptation held(synth::ict_face_model().neutral_cm, actor().neutral_cm, synth::ict_face_model().faces);
+  state.counters["held_MB"] = static_cast<double>(held.memory_bytes()) / 1e6;
+}
+BENCHMARK(BM_AdaptationBuild_OpenMesh)->Unit(benchmark::kMillisecond);
+
+void BM_AdaptationBuild_Scatter(benchmark::State& state) {
+  measure_build(state, [](const synth::FaceModel& g, const synth::FaceModel& a) {
+    return test::scatter_adaptation_maps(g.neutral_cm, a.neutral_cm, g.faces);
+  });
+}
+BENCHMARK(BM_AdaptationBuild_Scatter)->Unit(benchmark::kMillisecond);
+
+void BM_AdaptDenseTarget(benchmark::State& state) {
+  const auto& g = synth::ict_face_model();
+  const synth::FaceAdaptation adaptation(g.neutral_cm, actor().neutral_cm, g.faces);
+  Positions d = Positions::Zero(3, g.vertex_count());
+  synth::add_scaled(d, g.expressions[g.expression_index("jawOpen")], 1.0f);
+  for (auto _ : state) benchmark::DoNotOptimize(adaptation.adapt(d));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_AdaptDenseTarget)->Unit(benchmark::kMicrosecond);
+
+void BM_AdaptAll53SparseTargets(benchmark::State& state) {
+  const auto& g = synth::ict_face_model();
+  const synth::FaceAdaptation adaptation(g.neutral_cm, actor().neutral_cm, g.faces);
+  for (auto _ : state)
+    for (const auto& e : g.expressions) benchmark::DoNotOptimize(adaptation.adapt(e));
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(g.expressions.size()));
+}
+BENCHMARK(BM_AdaptAll53SparseTargets)->Unit(benchmark::kMillisecond);
+
+// .glb of the ICT face with k = 17 targets and `seconds` of 60 fps weights.
+codec::MorphAnimation ict_animation(int seconds) {
+  const auto& g = synth::ict_face_model();
+  codec::MorphAnimation a;
+  a.base_positions_m = 0.01f * g.neutral_cm;
+  a.triangles = synth::triangulate(g.faces);
+  for (int k = 0; k < 17; ++k) {
+    Positions d = Positions::Zero(3, g.vertex_count());
+    synth::add_scaled(d, g.expressions[static_cast<std::size_t>(k) * 3], 0.01f);
+    a.targets_m.push_back(d);
+  }
+  a.weights = Eigen::MatrixXf::Random(60 * seconds, 17);
+  a.rate = {60, 1};
+  return a;
+}
+
+void BM_GlbWrite_k17_60fps(benchmark::State& state) {
+  const auto seconds = static_cast<int>(state.range(0));
+  const auto a = ict_animation(seconds);
+  std::size_t bytes = 0;
+  for (auto _ : state) bytes = codec::write_glb(a).size();
+  const auto one = codec::write_glb(ict_animation(1)).size();
+  const auto eleven = codec::write_glb(ict_animation(11)).size();
+  state.counters["glb_MB"] = static_cast<double>(bytes) / 1e6;
+  state.counters["animation_bytes_per_s"] = static_cast<double>(eleven - one) / 10.0;
+  state.counters["mesh_and_targets_MB"] = static_cast<double>(one - (eleven - one) / 10) / 1e6;
+}
+BENCHMARK(BM_GlbWrite_k17_60fps)->Arg(10)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,75 @@
+#include "mesh_export.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "fapcast/synth/obj_mesh.hpp"
+#include "fapcast/transport/file_io.hpp"
+
+namespace fapcast::tools {
+
+namespace {
+constexpr float kMetresPerCm = 0.01f;
+}
+
+codec::MorphAnimation morph_animation_from_cm(const synth::Positions& base_cm,
+                                              const synth::PolygonFaces& faces,
+                                              const std::vector<synth::Positions>& targets_cm,
+                                              std::vector<std::string> target_names,
+                                              Eigen::MatrixXf weights, codec::FrameRate rate,
+                                              std::string name) {
+  codec::MorphAnimation a;
+  a.name = std::move(name);
+  a.base_positions_m = kMetresPerCm * base_cm;
+  a.triangles = synth::triangulate(faces);
+  for (const auto& t : targets_cm) a.targets_m.push_back(kMetresPerCm * t);
+  a.target_names = std::move(target_names);
+  a.weights = std::move(weights);
+  a.rate = rate;
+  return a;
+}
+
+codec::MorphAnimation morph_animation_from_pca(
+    const Eigen::Ref<const Eigen::Matrix<float, 1, Eigen::Dynamic>>& mean_m,
+    const Eigen::Ref<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>& components_m,
+    const synth::PolygonFaces& faces, Eigen::MatrixXf pca_frames, codec::FrameRate rate,
+    std::string name) {
+  const Eigen::Index d = mean_m.cols();
+  if (d % 3 != 0 || components_m.cols() != d || pca_frames.cols() != components_m.rows())
+    throw std::invalid_argument("PCA mean, components and frames disagree in size");
+  const Eigen::Index n = d / 3;
+  codec::MorphAnimation a;
+  a.name = std::move(name);
+  a.base_positions_m = Eigen::Map<const Eigen::Matrix3Xf>(mean_m.data(), 3, n);
+  a.triangles = synth::triangulate(faces);
+  for (Eigen::Index k = 0; k < components_m.rows(); ++k) {
+    const Eigen::Matrix<float, 1, Eigen::Dynamic> row = components_m.row(k);  // contiguous copy
+    a.targets_m.push_back(Eigen::Map<const Eigen::Matrix3Xf>(row.data(), 3, n));
+    a.target_names.push_back("pc" + std::to_string(k + 1));
+  }
+  a.weights = std::move(pca_frames);
+  a.rate = rate;
+  return a;
+}
+
+std::size_t write_obj_frames(const codec::MorphAnimation& animation, const std::filesystem::path& dir,
+                             int every) {
+  std::filesystem::create_directories(dir);
+  synth::PolygonFaces faces;
+  faces.face_vertices.assign(animation.triangles.data(),
+                             animation.triangles.data() + animation.triangles.size());
+  for (Eigen::Index t = 1; t <= animation.triangles.cols(); ++t)
+    faces.face_starts.push_back(static_cast<std::int32_t>(3 * t));
+  std::size_t written = 0;
+  for (Eigen::Index f = 0; f < animation.weights.rows(); f += std::max(every, 1)) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%06ld.obj", static_cast<long>(f));
+    transport::write_file_atomically(
+        dir / name, synth::write_obj_mesh(codec::frame_positions(animation, f), faces,
+                                          "fapcast frame " + std::to_string(f) + ", metres"));
+    ++written;
+  }
+  return written;
+}
+
+}  // namespace fapcast::tools

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 
 #include "fapcast/synth/crc32.hpp"
@@ -56,6 +57,7 @@ TEST(Voice, OpensACompleteVoiceAndHandsOutItsParts) {
   ASSERT_EQ(voice.rigid_markers().size(), 3u);
   EXPECT_EQ(voice.rigid_markers()[2].source_reference_m, Eigen::Vector3d(0.0, 0.04, 0.1));
   EXPECT_EQ(voice.retarget_map().centre_count(), 2);
+  EXPECT_FALSE(voice.face_maps().has_value()) << "a voice on its own face has no FMAP";
   EXPECT_EQ(voice.retarget_map().lambda(), 1e-6);
   // The map evaluates: at the first centre, vertex 0's y is offset + w0 phi0 + w1 phi1.
   const Eigen::VectorXd y = voice.retarget_map()(Eigen::Vector3d::Zero());
@@ -129,6 +131,13 @@ std::vector<BadVoice> bad_voices() {
   out.push_back({"bad.008.rbf-scalars.fapv", patched(kRparIndex, [](std::string& b, std::uint64_t at) {
                    const double zero = 0.0;  // r^2 = 0
                    std::memcpy(b.data() + at, &zero, 8);
+                 })});
+  out.push_back({"bad.009.section-shape.FMAP.fapv", with([](TinyVoice& v) {
+                   v.face_maps = RowMajorMatrixXf::Zero(3, 8);  // a 3 x 3 map per vertex is 9 numbers
+                 })});
+  out.push_back({"bad.010.non-finite.FMAP.fapv", with([](TinyVoice& v) {
+                   v.face_maps = RowMajorMatrixXf::Identity(3, 9);
+                   (*v.face_maps)(2, 4) = std::numeric_limits<float>::quiet_NaN();
                  })});
   return out;
 }

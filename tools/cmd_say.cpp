@@ -1,5 +1,5 @@
-// `fapcast say "TEXT" -o OUT.fap|OUT.glb [--wav OUT.wav] [--voice V] [--fps N] [--expression E] ...`: speaks the text with
-// espeak-ng and animates it (spec/synthesis.md). Argument parsing only.
+// `fapcast say "TEXT" -o OUT.fap|OUT.glb [--wav OUT.wav] [--voice V] [--fps N] [--expression E] ...`:
+// speaks the text with espeak-ng and animates it (spec/synthesis.md). Argument parsing only.
 #include "command.hpp"
 #include "synthesis_cli.hpp"
 

@@ -32,9 +32,10 @@ void check_generic(const Voice& voice, const Positions& generic_m) {
   for (const auto& p : voice.feature_points()) {
     const Eigen::Vector3d at = generic_m.col(p.vertex).cast<double>();
     if ((at - p.neutral_m).norm() > kNeutralToleranceM) {
+      const Eigen::IOFormat xyz(Eigen::StreamPrecision, Eigen::DontAlignCols, ", ", ", ");
       std::ostringstream m;
       m << "generic-mismatch: feature point " << p.label << " (vertex " << p.vertex << ") is at ("
-        << at.transpose() << ") m on the generic face but at (" << p.neutral_m.transpose()
+        << at.transpose().format(xyz) << ") m on the generic face but at (" << p.neutral_m.transpose().format(xyz)
         << ") m on the voice's neutral face: the generic mesh must be the voice's own face, in its unit";
       throw std::invalid_argument(m.str());
     }

@@ -301,7 +301,7 @@ void RetargetedVoiceSpeaks() {
   for (const std::string v : {"v", "big"}) {
     r = run_command(fapcast(animate + " --voice " + out(v + ".fapv") + " -o " + out("rt-" + v + ".fap")));
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    r = run_command(fapcast(animate + " --voice " + out(v + ".fapv") + " --expression joy:30 -o " + out("rt-" + v + ".glb")));
+    r = run_command(fapcast(animate + " --voice " + out(v + ".fapv") + " -o " + out("rt-" + v + ".glb")));
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   const auto g = transport::read_track_file(out("rt-v.fap")), s = transport::read_track_file(out("rt-big.fap"));
@@ -318,7 +318,7 @@ void RetargetedVoiceSpeaks() {
   ASSERT_EQ(gg.targets_m.size(), sg.targets_m.size());
   const Eigen::Matrix3Xf generic_m = 0.01f * generic.vertices, big_m = 0.01f * big;
   EXPECT_LT((sg.base_positions_m - (big_m + 1.5f * (gg.base_positions_m - generic_m))).cwiseAbs().maxCoeff(), 1e-5f);
-  for (std::size_t i = 0; i < gg.targets_m.size(); ++i)  // the components and the expression
+  for (std::size_t i = 0; i < gg.targets_m.size(); ++i)  // the components (expressions: speech_expression_test)
     EXPECT_LT((sg.targets_m[i] - 1.5f * gg.targets_m[i]).cwiseAbs().maxCoeff(), 1e-6f) << "target " << i;
   EXPECT_EQ(sg.weights, gg.weights) << "the PCA frames are the voice's, unchanged";
 

@@ -332,6 +332,9 @@ void RetargetedVoiceSpeaks() {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   r = run_command(fapcast(animate + " --voice " + out("actor.fapv") + " -o " + out("rt-actor.fap")));
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_command(fapcast("say \"Hello.\" --voice " + out("actor.fapv") + " -o " + out("actor-say.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(transport::read_track_file(out("actor-say.fap")).frames.size(), 5u);
   const synth::Voice actor_voice = synth::Voice::open(out("actor.fapv"));
   for (const auto& p : actor_voice.feature_points())
     ASSERT_LT((p.neutral_m - 0.01 * actor.col(p.vertex).cast<double>()).norm(), 1e-7) << p.label;

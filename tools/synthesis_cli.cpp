@@ -43,6 +43,7 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
             }
           },
           "EXPRESSION"));
+  cmd->add_option("--obj-frames", args.obj_frames, ".glb: also write every frame as OBJ (metres) here, for debugging");
   cmd->add_flag("-q,--quiet", args.quiet, "No progress on standard error");
   cmd->callback([&args, fps, name, run = std::move(run)] {
     if (!is_animation_output(args.output))
@@ -53,6 +54,8 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
                        " fps PCA frames as keyframes (players interpolate); --fps does not apply");
     if (is_mesh_output(args.output) && args.viseme)
       throw UsageError(name + ": --viseme (FAP 1) has no place in a .glb");
+    if (!is_mesh_output(args.output) && !args.obj_frames.empty())
+      throw UsageError(name + ": --obj-frames needs a .glb output");
     if (!args.expression_text.empty()) args.expression = synth::parse_expression_blend(args.expression_text);
     run();
   });
@@ -61,10 +64,11 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
 
 namespace {
 
-// The voice's PCA frames (with the expression's weight) as a .glb at the voice's 60 fps: frames
-// shown while the audio plays.
-void write_mesh_animation(const SynthesisArgs& args, const synth::SpeechBasis& basis,
-                          const synth::SynthesizedTrack& track, std::int64_t audio_samples, const std::string& name) {
+// The voice's PCA frames (with the expression's weight) as a morph animation at the voice's
+// 60 fps: the frames shown while the audio plays, on the ICT face's triangles.
+codec::MorphAnimation mesh_animation(const SynthesisArgs& args, const synth::SpeechBasis& basis,
+                                     const synth::SynthesizedTrack& track, std::int64_t audio_samples,
+                                     const std::string& name) {
   const codec::FrameRate rate{static_cast<std::uint32_t>(synth::Voice::kFramesPerSecond), 1};
   Eigen::MatrixXf weights = synth::speech_weights(track.pca_frames, basis);
   const auto shown = frames_shown(audio_samples, rate, track.timeline.sample_rate_hz);
@@ -74,8 +78,7 @@ void write_mesh_animation(const SynthesisArgs& args, const synth::SpeechBasis& b
     throw std::runtime_error(args.output + ": the voice's face has " + std::to_string(basis.mean.cols() / 3) +
                              " vertices, not the ICT face's " + std::to_string(face.vertex_count()) +
                              ": no faces to write a mesh with");
-  transport::write_file_atomically(
-      args.output, codec::write_glb(morph_animation_from_speech(basis, face.faces, std::move(weights), rate, name)));
+  return morph_animation_from_speech(basis, face.faces, std::move(weights), rate, name);
 }
 
 }  // namespace
@@ -95,10 +98,15 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const synth::TimedP
                                                     sample_rate_hz, audio_samples, options, source);
   std::size_t frames = 0;
   int fps = args.fps;
+  double seconds = 0;
+  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   if (is_mesh_output(args.output)) {
-    write_mesh_animation(args, speech, track, audio_samples, name);
-    frames = static_cast<std::size_t>(
-        frames_shown(audio_samples, {static_cast<std::uint32_t>(synth::Voice::kFramesPerSecond), 1}, sample_rate_hz));
+    const codec::MorphAnimation animation = mesh_animation(args, speech, track, audio_samples, name);
+    seconds = elapsed();
+    transport::write_file_atomically(args.output, codec::write_glb(animation));
+    if (!args.obj_frames.empty())
+      std::cout << args.obj_frames << ": " << write_obj_frames(animation, args.obj_frames) << " OBJ frames\n";
+    frames = static_cast<std::size_t>(animation.weights.rows());
     fps = synth::Voice::kFramesPerSecond;
   } else {
     const codec::FeaturePointBasis basis = face_basis(speech, voice, voice_name);
@@ -109,10 +117,10 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const synth::TimedP
     if (args.expression) animation.expression = expression_field(*args.expression);
     track.pca_frames = synth::speech_weights(track.pca_frames, speech);
     const codec::FapSequence seq = fap_track(track, basis, animation, audio_samples);
+    seconds = elapsed();
     write_animation(args.output, seq, sample_rate_hz, basis.neutral);
     frames = seq.frames.size();
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << args.output << ": " << frames << " frames at " << fps << " fps ("
             << static_cast<double>(audio_samples) / static_cast<double>(sample_rate_hz) << " s), "
             << track.timeline.phones.size() << " phones in " << track.search.units.size()

@@ -25,12 +25,13 @@ struct SynthesisArgs {
   std::size_t max_active = 64;  // 0 = no cap
   bool viseme = false;
   bool quiet = false;
+  std::string obj_frames;  // .glb only: also every frame as OBJ here (debugging)
   std::string expression_text;                     // as given: "joy:40[,surprise:20]"
   std::optional<synth::ExpressionBlend> expression;  // parsed before `run` is called
 };
 
 // Adds the sub-command `name` to `app` with -o, --voice, --fps, --beta, --max-active, --viseme,
-// --expression, -q; the caller adds its own inputs to the returned command. On a parse it checks
+// --expression, --obj-frames, -q; the caller adds its own inputs to the returned command. On a parse it checks
 // the output's extension and the options that do not apply to it (UsageError, before any work),
 // parses the expression into args.expression, then calls `run`.
 CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const std::string& description,

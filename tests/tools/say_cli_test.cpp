@@ -260,11 +260,18 @@ void GlbCarriesThePcaFrames() {
   EXPECT_LT((j.targets_m.back() - joy_m).cwiseAbs().maxCoeff(), 1e-9f);
 
   // say: the WAV goes beside the .glb.
-  r = run_command(fapcast("say \"Hello.\" --voice " + voice() + " --expression joy:40 -o " + out("hello.glb")));
+  r = run_command(fapcast("say \"Hello.\" --voice " + voice() + " --expression joy:40 -o " + out("hello.glb") +
+                          " --obj-frames " + out("hello-obj")));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const synth::MonoAudio hello = synth::read_wav(out("hello.wav"));
   const auto h = codec::read_glb(transport::read_file(out("hello.glb")), "hello.glb");
   EXPECT_EQ(h.weights.rows(), frames_for(hello, 60));
+  // --obj-frames: every frame as an OBJ of the mesh the .glb shows.
+  std::size_t objs = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(out("hello-obj"))) ++objs;
+  EXPECT_EQ(objs, static_cast<std::size_t>(h.weights.rows()));
+  const auto frame5 = synth::read_obj_mesh(out("hello-obj") + "/frame_000005.obj");
+  EXPECT_LT((frame5.vertices - codec::frame_positions(h, 5)).cwiseAbs().maxCoeff(), 1e-7f);
 
   // A standard viewer: three.js's GLTFLoader (Debian libjs-three) in Node sees k + 1 morph
   // targets and one morphTargetInfluences track with a key per frame, holding the file's weights.
@@ -399,6 +406,7 @@ TEST(SayCliUsage, MistakesExitTwo) {
   EXPECT_NE(run_command(fapcast("say \"Hi.\" -o x.fap --expression glee")).err.find("joy, sadness"), std::string::npos);
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.glb --fps 25")).exit_code, 2);  // .glb keys are the voice's 60 fps
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.glb --viseme")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --obj-frames d")).exit_code, 2);  // OBJ frames: .glb only
   EXPECT_EQ(run_command(fapcast("voice retarget v.fapv --generic g.obj -o v2.fapv")).exit_code, 2);  // no --specific
 }
 

@@ -8,20 +8,13 @@
 #include "fapcast/transport/track_file.hpp"
 #include "fapcast/transport/track_resample.hpp"
 
+#include "file_extension.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
 namespace fapcast::tools {
-namespace {
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
-}  // namespace
 
 codec::FapSequence fap_track(const synth::SynthesizedTrack& track, const codec::FeaturePointBasis& basis,
                              const AnimationOptions& options, std::int64_t end_sample) {
@@ -31,6 +24,10 @@ codec::FapSequence fap_track(const synth::SynthesizedTrack& track, const codec::
   std::size_t t = 0;
   for (std::size_t n = 0; n < voice_rate.frames.size(); ++n) {
     codec::FapFrame& f = voice_rate.frames[n];
+    if (options.expression) {
+      f.mask.set(codec::kExpressionFap);
+      f.expression = *options.expression;
+    }
     for (std::size_t i = 0; i < synth::kTongueFapCount; ++i)
       f.set(synth::kFirstTongueFap + static_cast<int>(i),
             static_cast<std::int32_t>(std::lround(track.tongue(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(i)))));
@@ -45,16 +42,31 @@ codec::FapSequence fap_track(const synth::SynthesizedTrack& track, const codec::
                                : transport::resample_track(voice_rate, options.rate, transport::ResampleMode::kLinear);
   // The 60 fps grid ends on the first instant at or after the audio's end; at another rate that
   // can leave one frame shown after the sound has ended.
-  const std::int64_t sample_rate = track.timeline.sample_rate_hz;
-  const auto shown = static_cast<std::size_t>(
-      end_sample > 0 ? codec::sample_to_frame(end_sample - 1, options.rate, sample_rate) + 1 : 0);
+  const auto shown = static_cast<std::size_t>(frames_shown(end_sample, options.rate, track.timeline.sample_rate_hz));
   if (out.frames.size() > shown) out.frames.resize(shown);
   return out;
 }
 
-bool is_animation_output(const std::filesystem::path& path) {
-  return transport::track_format_of(path).has_value() || lower_extension(path) == ".bvh";
+std::int64_t frames_shown(std::int64_t end_sample, codec::FrameRate rate, std::int64_t sample_rate) {
+  return end_sample > 0 ? codec::sample_to_frame(end_sample - 1, rate, sample_rate) + 1 : 0;
 }
+
+codec::ExpressionField expression_field(const synth::ExpressionBlend& blend) {
+  codec::ExpressionField f;
+  f.select1 = static_cast<std::uint8_t>(blend.first.expression);
+  f.intensity1 = static_cast<std::uint8_t>(blend.first.intensity);
+  if (blend.second) {
+    f.select2 = static_cast<std::uint8_t>(blend.second->expression);
+    f.intensity2 = static_cast<std::uint8_t>(blend.second->intensity);
+  }
+  return f;
+}
+
+bool is_animation_output(const std::filesystem::path& path) {
+  return transport::track_format_of(path).has_value() || is_mesh_output(path) || lower_extension(path) == ".bvh";
+}
+
+bool is_mesh_output(const std::filesystem::path& path) { return lower_extension(path) == ".glb"; }
 
 void write_animation(const std::filesystem::path& path, const codec::FapSequence& seq,
                      std::int64_t sample_rate, const codec::FeaturePointPositions& neutral) {

@@ -4,10 +4,12 @@
 // chosen by extension. Wiring only: each step is a library function.
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/feature_point_basis.hpp"
+#include "fapcast/synth/speech_expression.hpp"
 #include "fapcast/synth/synthesis.hpp"
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace fapcast::tools {
@@ -16,18 +18,29 @@ struct AnimationOptions {
   codec::FrameRate rate{25, 1};  // output frames per second
   bool viseme = false;           // also write FAP 1 (the MPEG-4 viseme of the phone on screen)
   std::string name = "fapcast";  // the track's name (.fap header)
+  std::optional<codec::ExpressionField> expression;  // FAP 2 in every frame, when set
 };
+
+// FAP 2 for a blend: select / intensity pairs, no init_face, no expression_def.
+codec::ExpressionField expression_field(const synth::ExpressionBlend& blend);
+
+// The frames at `rate` shown while audio of `end_sample` samples plays: every j with
+// codec::frame_to_sample(j, rate, sample_rate) < end_sample.
+std::int64_t frames_shown(std::int64_t end_sample, codec::FrameRate rate, std::int64_t sample_rate);
 
 // FAP frames of `track` at options.rate: frame j shows the 60 fps frames interpolated at
 // j / rate seconds (transport::resample_track, linear), i.e. sample
 // codec::frame_to_sample(j, rate, sample_rate) of the WAV; exactly the frames shown before
 // `end_sample` (the audio's length) are kept. Masks: drivable_faps(basis) plus the tongue (43-47)
-// and, optionally, FAP 1.
+// and, optionally, FAP 1 and FAP 2. track.pca_frames hold one weight per basis component
+// (synth::speech_weights: with an expression, its weight is the last column).
 codec::FapSequence fap_track(const synth::SynthesizedTrack& track, const codec::FeaturePointBasis& basis,
                              const AnimationOptions& options, std::int64_t end_sample);
 
-// Whether `path` names an output `say`/`animate` can write (.fap, .fba, .json, .bvh).
+// Whether `path` names an output `say`/`animate` can write (.fap, .fba, .json, .bvh, .glb).
 bool is_animation_output(const std::filesystem::path& path);
+// Whether it is the mesh output (.glb), which takes the voice's PCA frames, not FAPs.
+bool is_mesh_output(const std::filesystem::path& path);
 
 // Writes `seq` atomically by extension; .json carries each frame's sample at `sample_rate`,
 // .bvh is rigged on the neutral face (codec::fit_generic_face supplies pivots and the tongue tip).

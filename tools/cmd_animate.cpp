@@ -1,6 +1,7 @@
 // `fapcast animate --wav IN.wav --align IN.TextGrid|IN.lab -o OUT.fap [--voice V] ...`: animates
 // recorded speech from its phone alignment (spec/synthesis.md). Argument parsing only.
 #include "command.hpp"
+#include "file_extension.hpp"
 #include "synthesis_cli.hpp"
 
 #include "fapcast/synth/alignment_phones.hpp"
@@ -9,7 +10,6 @@
 #include "fapcast/synth/textgrid.hpp"
 #include "fapcast/transport/file_io.hpp"
 
-#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
@@ -20,14 +20,8 @@ using namespace fapcast;
 // An alignment may end up to 20 ms after its audio (rounding, a trailing pause) and is cut there.
 constexpr std::int64_t kToleranceMs = 20;
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
 synth::Alignment read_alignment(const std::string& path) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = tools::lower_extension(path);
   const std::string bytes = transport::read_file(path);
   if (ext == ".textgrid") return synth::read_textgrid(bytes, path);
   const synth::LabFile lab = synth::read_lab(bytes, path);
@@ -44,31 +38,29 @@ const tools::Registration reg{"21-animate", [](CLI::App& app) {
     tools::SynthesisArgs synthesis;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = app.add_subcommand("animate", "Animate recorded speech from its WAV and phone alignment "
-                                            "(TextGrid or HTK/MOCHA .lab)");
+  auto* cmd = tools::add_synthesis_command(
+      app, "animate", "Animate recorded speech from its WAV and phone alignment (TextGrid or HTK/MOCHA .lab)",
+      args->synthesis, [args] {
+        const std::string ext = tools::lower_extension(args->align);
+        if (ext != ".textgrid" && ext != ".lab")
+          throw tools::UsageError("animate: alignment '" + args->align + "' must end in .TextGrid or .lab");
+        const synth::MonoAudio audio = synth::read_wav(args->wav);
+        const synth::Alignment alignment = read_alignment(args->align);
+        const synth::LabelTier* tier = synth::phone_tier(alignment);
+        if (tier == nullptr || tier->intervals.empty())
+          throw std::runtime_error(args->align + ": no-phone-tier: the alignment has no phone intervals");
+        const auto samples = static_cast<std::int64_t>(audio.samples.size());
+        auto phones = synth::phones_from_tier(*tier, audio.sample_rate_hz, args->align);
+        if (!phones.empty() && phones.back().end_sample < samples && !args->synthesis.quiet)
+          std::cerr << "fapcast: warning: " << args->align << " ends before " << args->wav
+                    << "; the rest is animated as silence\n";
+        phones = synth::fit_phones_to_audio(std::move(phones), samples,
+                                            kToleranceMs * audio.sample_rate_hz / 1000, args->align);
+        tools::synthesize_to_file(args->synthesis, phones, audio.sample_rate_hz, samples, args->align,
+                                  "fapcast animate");
+      });
   cmd->add_option("--wav", args->wav, "The speech (mono WAV): the timeline")->required();
   cmd->add_option("--align", args->align, "Its phone alignment: .TextGrid or .lab")->required();
-  tools::add_synthesis_options(cmd, args->synthesis);
-  cmd->callback([args] {
-    tools::check_animation_output("animate", args->synthesis);
-    const std::string ext = lower_extension(args->align);
-    if (ext != ".textgrid" && ext != ".lab")
-      throw tools::UsageError("animate: alignment '" + args->align + "' must end in .TextGrid or .lab");
-    const synth::MonoAudio audio = synth::read_wav(args->wav);
-    const synth::Alignment alignment = read_alignment(args->align);
-    const synth::LabelTier* tier = synth::phone_tier(alignment);
-    if (tier == nullptr || tier->intervals.empty())
-      throw std::runtime_error(args->align + ": no-phone-tier: the alignment has no phone intervals");
-    const auto samples = static_cast<std::int64_t>(audio.samples.size());
-    auto phones = synth::phones_from_tier(*tier, audio.sample_rate_hz, args->align);
-    if (!phones.empty() && phones.back().end_sample < samples && !args->synthesis.quiet)
-      std::cerr << "fapcast: warning: " << args->align << " ends before " << args->wav
-                << "; the rest is animated as silence\n";
-    phones = synth::fit_phones_to_audio(std::move(phones), samples,
-                                        kToleranceMs * audio.sample_rate_hz / 1000, args->align);
-    tools::synthesize_to_file(args->synthesis, phones, audio.sample_rate_hz, samples, args->align,
-                              "fapcast animate");
-  });
 }};
 
 }  // namespace

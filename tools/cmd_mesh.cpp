@@ -4,6 +4,7 @@
 //   fapcast render IN.glb -o DIR [--view face|mouth] [--width PX] [--every N]
 // Argument parsing only; synth adapts and builds expressions, codec writes and reads glTF, the
 // rasteriser (tools/software_render) draws.
+#include "animation.hpp"
 #include "command.hpp"
 #include "mesh_export.hpp"
 #include "software_render.hpp"
@@ -14,7 +15,6 @@
 #include "fapcast/synth/obj_targets.hpp"
 #include "fapcast/transport/file_io.hpp"
 
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -25,12 +25,6 @@
 namespace {
 using namespace fapcast;
 namespace fs = std::filesystem;
-
-bool is_glb(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".glb";
-}
 
 synth::WriteFile write_into(const fs::path& dir) {
   fs::create_directories(dir);
@@ -97,7 +91,7 @@ const tools::Registration expressions_reg{"71-expressions", [](CLI::App& app) {
   cmd->add_option("--obj-frames", args->obj_frames, ".glb: also write every frame as OBJ (metres) here");
   cmd->callback([args] {
     const synth::FaceModel& face = synth::ict_face_model();
-    if (!is_glb(args->output)) {
+    if (!tools::is_mesh_output(args->output)) {
       if (!args->obj_frames.empty()) throw tools::UsageError("expressions: --obj-frames needs a .glb output");
       synth::write_expression_targets(face, args->intensity, write_into(args->output));
       std::cout << "expressions: 6 OBJ targets -> " << args->output << "\n";

@@ -1,15 +1,20 @@
-// `fapcast voice build` and `fapcast voice info` (spec/voice.md).
+// `fapcast voice build`, `voice info`, `voice default` (spec/voice.md) and `voice retarget`
+// (spec/adaptation.md).
 #include "command.hpp"
 #include "default_voice.hpp"
 
 #include "fapcast/synth/synthetic_label.hpp"
 #include "fapcast/synth/voice.hpp"
+#include "fapcast/synth/obj_mesh.hpp"
 #include "fapcast/synth/voice_build.hpp"
+#include "fapcast/synth/voice_retarget.hpp"
 #include "fapcast/transport/file_io.hpp"
 
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 #ifndef FAPCAST_VERSION
 #define FAPCAST_VERSION "unknown"
@@ -124,6 +129,50 @@ const fapcast::tools::Registration default_reg{"62-voice-default", [](CLI::App& 
                                    "unless it is there, and print its path");
   cmd->add_flag("-q,--quiet", *quiet, "No progress on standard error");
   cmd->callback([quiet] { std::cout << fapcast::tools::ensure_default_voice(*quiet).string() << "\n"; });
+}};
+
+}  // namespace
+
+namespace {
+
+const fapcast::tools::Registration retarget_reg{"63-voice-retarget", [](CLI::App& app) {
+  struct Args {
+    std::string voice, generic, specific, output, unit = "cm";
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = fapcast::tools::command_group(app, "voice", kVoiceGroupHelp)
+                  ->add_subcommand("retarget",
+                                   "Re-target a voice to a specific face of its face's topology without "
+                                   "re-recording: per-vertex affine maps carry the PCA mean and components, the "
+                                   "RBF map and the neutral feature points (spec/adaptation.md)");
+  cmd->add_option("VOICE", args->voice, "Voice file (.fapv)")->required();
+  cmd->add_option("--generic", args->generic, "The voice's own neutral face (.obj), e.g. the ICT generic mesh")
+      ->required();
+  cmd->add_option("--specific", args->specific, "The specific neutral face (.obj), same topology")->required();
+  cmd->add_option("--obj-unit", args->unit, "Length unit of both OBJ files")
+      ->check(CLI::IsMember({"cm", "m", "mm"}))
+      ->capture_default_str();
+  cmd->add_option("-o,--output", args->output, "The re-targeted voice (.fapv, written atomically)")->required();
+  cmd->callback([args] {
+    const float metres = args->unit == "cm" ? 0.01f : args->unit == "mm" ? 0.001f : 1.0f;
+    const auto generic = fapcast::synth::read_obj_mesh(args->generic);
+    const auto specific = fapcast::synth::read_obj_mesh(args->specific);
+    fapcast::synth::require_same_topology(generic, args->generic, specific, args->specific);
+    const auto voice = fapcast::synth::Voice::open(args->voice);
+    fapcast::synth::RetargetedVoice out;
+    try {
+      out = fapcast::synth::retarget_voice(voice, metres * generic.vertices, metres * specific.vertices, generic.faces,
+                                           std::filesystem::path(args->specific).filename().string());
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error(args->generic + ": " + e.what());
+    }
+    fapcast::transport::write_file_atomically(args->output, out.bytes);
+    const auto& s = out.summary;
+    std::cout << "voice " << args->output << ": " << voice.component_count() << " components re-targeted over "
+              << s.vertices << " vertices, " << s.triangles << " triangles (" << s.degenerate_triangles
+              << " degenerate, " << s.global_map_vertices << " vertices on the global map); feature points moved by "
+              << "up to " << s.max_feature_point_offset_m * 1000.0 << " mm; " << out.bytes.size() << " bytes\n";
+  });
 }};
 
 }  // namespace

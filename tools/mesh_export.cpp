@@ -29,25 +29,21 @@ codec::MorphAnimation morph_animation_from_cm(const synth::Positions& base_cm,
   return a;
 }
 
-codec::MorphAnimation morph_animation_from_pca(
-    const Eigen::Ref<const Eigen::Matrix<float, 1, Eigen::Dynamic>>& mean_m,
-    const Eigen::Ref<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>& components_m,
-    const synth::PolygonFaces& faces, Eigen::MatrixXf pca_frames, codec::FrameRate rate,
-    std::string name) {
-  const Eigen::Index d = mean_m.cols();
-  if (d % 3 != 0 || components_m.cols() != d || pca_frames.cols() != components_m.rows())
-    throw std::invalid_argument("PCA mean, components and frames disagree in size");
+codec::MorphAnimation morph_animation_from_speech(const synth::SpeechBasis& basis, const synth::PolygonFaces& faces,
+                                                  Eigen::MatrixXf weights, codec::FrameRate rate, std::string name) {
+  const Eigen::Index d = basis.mean.cols();
+  if (basis.mean.rows() != 1 || d % 3 != 0 || basis.components.cols() != d || weights.cols() != basis.components.rows() ||
+      basis.names.size() != static_cast<std::size_t>(basis.components.rows()))
+    throw std::invalid_argument("morph basis mean, directions, names and weights disagree in size");
   const Eigen::Index n = d / 3;
   codec::MorphAnimation a;
   a.name = std::move(name);
-  a.base_positions_m = Eigen::Map<const Eigen::Matrix3Xf>(mean_m.data(), 3, n);
+  a.base_positions_m = Eigen::Map<const Eigen::Matrix3Xf>(basis.mean.data(), 3, n);
   a.triangles = synth::triangulate(faces);
-  for (Eigen::Index k = 0; k < components_m.rows(); ++k) {
-    const Eigen::Matrix<float, 1, Eigen::Dynamic> row = components_m.row(k);  // contiguous copy
-    a.targets_m.push_back(Eigen::Map<const Eigen::Matrix3Xf>(row.data(), 3, n));
-    a.target_names.push_back("pc" + std::to_string(k + 1));
-  }
-  a.weights = std::move(pca_frames);
+  for (Eigen::Index k = 0; k < basis.components.rows(); ++k)
+    a.targets_m.push_back(Eigen::Map<const Eigen::Matrix3Xf>(basis.components.row(k).data(), 3, n));
+  a.target_names = basis.names;
+  a.weights = std::move(weights);
   a.rate = rate;
   return a;
 }

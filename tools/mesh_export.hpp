@@ -1,13 +1,14 @@
 #pragma once
 // Glue between synth's meshes (cm, polygons) and codec's glTF export (metres, triangles): what
-// `fapcast expressions -o OUT.glb` uses now and `fapcast say -o OUT.glb` will use (a voice's PCA
-// mean is the base mesh, its components the targets, its PCA frames the weights).
+// `fapcast expressions -o OUT.glb` and `fapcast say -o OUT.glb` use (a voice's PCA mean is the
+// base mesh, its components the targets, its PCA frames the weights).
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "fapcast/codec/gltf_export.hpp"
 #include "fapcast/synth/mesh_types.hpp"
+#include "fapcast/synth/speech_expression.hpp"
 
 namespace fapcast::tools {
 
@@ -20,17 +21,14 @@ codec::MorphAnimation morph_animation_from_cm(const synth::Positions& base_cm,
                                               Eigen::MatrixXf weights, codec::FrameRate rate,
                                               std::string name);
 
-// A voice's PCA as a morph animation (already in metres): mean 1 x 3N (xyz interleaved per
-// vertex) is the base mesh, each of the k rows of components 1 x 3N a morph target, and the
-// F x k PCA frames the weights; faces: the voice's target mesh (the ICT face). What
-// `fapcast say -o OUT.glb` calls with voice.pca_mean(), voice.pca_components() and the
-// synthesised frames at Voice::kFramesPerSecond. Throws std::invalid_argument when the sizes
-// disagree.
-codec::MorphAnimation morph_animation_from_pca(
-    const Eigen::Ref<const Eigen::Matrix<float, 1, Eigen::Dynamic>>& mean_m,
-    const Eigen::Ref<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>& components_m,
-    const synth::PolygonFaces& faces, Eigen::MatrixXf pca_frames, codec::FrameRate rate,
-    std::string name);
+// A voice's face as a morph animation (already in metres): the basis mean 1 x 3N (xyz
+// interleaved per vertex) is the base mesh, each of its K directions (the k PCA components, then
+// an expression's) a morph target named by basis.names, and the F x K weights
+// (synth::speech_weights) the animation; faces: the voice's mesh (the ICT face). What
+// `fapcast say -o OUT.glb` writes at Voice::kFramesPerSecond. Throws std::invalid_argument when
+// the sizes disagree.
+codec::MorphAnimation morph_animation_from_speech(const synth::SpeechBasis& basis, const synth::PolygonFaces& faces,
+                                                  Eigen::MatrixXf weights, codec::FrameRate rate, std::string name);
 
 // Writes frames 0, every, 2 * every ... of the animation as OBJ files frame_000000.obj ... in
 // `dir` (created; each written atomically), positions in metres. Returns the count written.

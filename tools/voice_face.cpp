@@ -8,7 +8,8 @@
 
 namespace fapcast::tools {
 
-codec::FeaturePointBasis face_basis(const synth::Voice& voice, const std::string& source) {
+codec::FeaturePointBasis face_basis(const synth::SpeechBasis& basis, const synth::Voice& voice,
+                                    const std::string& source) {
   std::vector<codec::FeaturePointVertex> vertices;
   codec::FeaturePointPositions neutral;
   for (const synth::VoiceFeaturePoint& p : voice.feature_points()) {
@@ -17,7 +18,7 @@ codec::FeaturePointBasis face_basis(const synth::Voice& voice, const std::string
     vertices.push_back({*fp, p.vertex});
     neutral[*fp] = p.neutral_m;
   }
-  return codec::restrict_basis(voice.pca_mean(), voice.pca_components(), vertices, std::move(neutral));
+  return codec::restrict_basis(basis.mean, basis.components, vertices, std::move(neutral));
 }
 
 void check_voice_phone_set(const synth::Voice& voice, const std::string& source) {

@@ -2,6 +2,7 @@
 // What `say` and `animate` take from a voice: its search data and its face basis restricted to
 // the feature points (codec's input type), and the default voice when none is named.
 #include "fapcast/codec/feature_point_basis.hpp"
+#include "fapcast/synth/speech_expression.hpp"
 #include "fapcast/synth/voice.hpp"
 
 #include <filesystem>
@@ -9,9 +10,11 @@
 
 namespace fapcast::tools {
 
-// The voice's PCA basis (metres) at its feature points' vertices, with their neutral positions.
-// Throws std::runtime_error naming the voice and the label when a label is not a feature point.
-codec::FeaturePointBasis face_basis(const synth::Voice& voice, const std::string& source);
+// `basis` (the voice's PCA basis, with an expression when one is asked for; metres) at the
+// voice's feature points' vertices, with their neutral positions. Throws std::runtime_error
+// naming the voice and the label when a label is not a feature point.
+codec::FeaturePointBasis face_basis(const synth::SpeechBasis& basis, const synth::Voice& voice,
+                                    const std::string& source);
 
 // Checks that the voice's graph classes are this build's classes of its phones (a voice built
 // with another phone set or viseme table would search the wrong units). Throws

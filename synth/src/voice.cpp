@@ -139,6 +139,15 @@ Voice Voice::open(const std::filesystem::path& path) {
   }
   RbfMap map(Eigen::MatrixXd(centres), r_squared, view.matrix_f32(vs::kRbfWeights).cast<double>(),
              view.matrix_f32(vs::kRbfOffset).row(0).transpose().cast<double>(), lambda);
+  if (const SectionInfo* maps = view.find(vs::kFaceMaps)) {
+    if (maps->type != ElementType::kFloat32 || maps->rows != static_cast<std::uint64_t>(d / 3) || maps->cols != 9)
+      refuse(view, vs::kFaceMaps, "section-shape",
+             "expected float32 " + std::to_string(d / 3) + " x 9 (one 3 x 3 map per vertex), found type " +
+                 std::to_string(static_cast<unsigned>(maps->type)) + ", " + std::to_string(maps->rows) + " x " +
+                 std::to_string(maps->cols));
+    if (!view.matrix_f32(vs::kFaceMaps).allFinite())
+      refuse(view, vs::kFaceMaps, "non-finite", "a face map holds a NaN or an infinity");
+  }
   Eigen::MatrixXf frames = coefficients;
   JunctionFeatures junction = junction_features(graph.states, frames);
   PhoneGraph phone_graph(std::move(graph.states), std::move(junction));
@@ -149,5 +158,9 @@ Voice Voice::open(const std::filesystem::path& path) {
 Eigen::Map<const RowMajorMatrixXf> Voice::pca_mean() const { return view_.matrix_f32(vs::kPcaMean); }
 Eigen::Map<const RowMajorMatrixXf> Voice::pca_components() const { return view_.matrix_f32(vs::kPcaComponents); }
 Eigen::Map<const RowMajorMatrixXf> Voice::pca_variances() const { return view_.matrix_f32(vs::kPcaVariances); }
+std::optional<Eigen::Map<const RowMajorMatrixXf>> Voice::face_maps() const {
+  if (view_.find(vs::kFaceMaps) == nullptr) return std::nullopt;
+  return view_.matrix_f32(vs::kFaceMaps);
+}
 
 }  // namespace fapcast::synth

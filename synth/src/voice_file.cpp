@@ -214,7 +214,7 @@ std::string_view section_name(SectionId id) {
       {vs::kFrameCoefficients, "frame coefficients"}, {vs::kRbfCentres, "rbf centres"},
       {vs::kRbfWeights, "rbf weights"},      {vs::kRbfOffset, "rbf offset"},
       {vs::kRbfScalars, "rbf scalars"},      {vs::kPhoneGraph, "phone graph"},
-      {vs::kFeaturePoints, "feature points"},
+      {vs::kFeaturePoints, "feature points"}, {vs::kFaceMaps, "face maps"},
   };
   for (const auto& [known, name] : kNames) {
     if (known == id) return name;

@@ -2,7 +2,9 @@
 //  - building a FaceAdaptation (OpenMesh adjacency) vs the obvious alternative, a plain scatter of
 //    triangle maps onto their corners with no mesh structure: time and peak heap;
 //  - adapting one dense 3 x N target, and all 53 ICT expression targets (sparse);
-//  - .glb bytes per second of animation for k = 17 morph targets at 60 fps.
+//  - .glb bytes per second of animation for k = 17 morph targets at 60 fps;
+//  - `voice retarget` (retarget_voice) of a voice shaped like the reference voice (k = 17, 21 RBF
+//    centres, full ICT face) to the actor, against opening (mapping + verifying) the same voice.
 // Peak heap is counted by replacing global operator new/delete in this program only.
 #include <benchmark/benchmark.h>
 
@@ -17,7 +19,12 @@
 #include "fapcast/synth/face_adaptation.hpp"
 #include "fapcast/synth/face_model.hpp"
 #include "fapcast/synth/obj_mesh.hpp"
+#include "fapcast/synth/voice_retarget.hpp"
+#include "fapcast/transport/file_io.hpp"
 #include "support/scatter_adaptation.hpp"
+#include "support/tiny_voice.hpp"
+
+#include <filesystem>
 
 namespace {
 std::atomic<std::int64_t> g_heap{0}, g_peak{0};
@@ -131,6 +138,47 @@ void BM_GlbWrite_k17_60fps(benchmark::State& state) {
   state.counters["mesh_and_targets_MB"] = static_cast<double>(one - (eleven - one) / 10) / 1e6;
 }
 BENCHMARK(BM_GlbWrite_k17_60fps)->Arg(10)->Unit(benchmark::kMillisecond);
+
+// A voice file shaped like the reference voice (k = 17, m = 21, D = 3 x 26,719) with SYNTHETIC
+// contents: what retarget_voice reads and writes is independent of the values.
+const std::filesystem::path& reference_shaped_voice() {
+  static const std::filesystem::path file = [] {
+    test::TinyVoice t;
+    t.vertices = synth::ict_face_model().vertex_count();
+    t.components = 17;
+    t.centres = 21;
+    t.coefficients = synth::RowMajorMatrixXf::Zero(3, 17);
+    t.set_neutral_face(0.01f * synth::ict_face_model().neutral_cm);  // retarget checks the generic face
+    const auto path = std::filesystem::temp_directory_path() / "fapcast_mesh_bench_voice.fapv";
+    transport::write_file_atomically(path, t.bytes());
+    return path;
+  }();
+  return file;
+}
+
+void BM_VoiceRetarget_k17(benchmark::State& state) {
+  const synth::Voice voice = synth::Voice::open(reference_shaped_voice());
+  const auto& g = synth::ict_face_model();
+  const Positions generic_m = 0.01f * g.neutral_cm, specific_m = 0.01f * actor().neutral_cm;
+  std::int64_t peak = 0;
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    const auto before = g_heap.load();
+    g_peak = before;
+    const auto out = synth::retarget_voice(voice, generic_m, specific_m, g.faces, "actor");
+    bytes = out.bytes.size();
+    peak = std::max(peak, g_peak.load() - before);
+  }
+  state.counters["peak_heap_MB"] = static_cast<double>(peak) / 1e6;
+  state.counters["voice_MB"] = static_cast<double>(bytes) / 1e6;
+}
+BENCHMARK(BM_VoiceRetarget_k17)->Unit(benchmark::kMillisecond);
+
+void BM_VoiceOpen_k17(benchmark::State& state) {
+  const auto& file = reference_shaped_voice();
+  for (auto _ : state) benchmark::DoNotOptimize(synth::Voice::open(file).dimension());
+}
+BENCHMARK(BM_VoiceOpen_k17)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 
 #include "fapcast/synth/crc32.hpp"
@@ -14,66 +15,14 @@
 #include "fapcast/synth/voice_graph.hpp"
 #include "fapcast/transport/file_io.hpp"
 #include "support/bad_inputs.hpp"
+#include "support/tiny_voice.hpp"
 
 namespace fapcast::synth {
 namespace {
 
 namespace vs = voice_section;
+using fapcast::test::TinyVoice;
 const std::filesystem::path kBad = std::filesystem::path(FAPCAST_TEST_DATA) / "voice" / "bad-voice";
-
-// The pieces of a tiny voice: D = 9 (3 vertices), k = 1, m = 2 centres of d = 3 (one feature
-// point), 3 frames in one utterance of two phone states. Tests change a piece and assemble.
-struct TinyVoice {
-  VoiceProvenance provenance;
-  VoiceGraphData graph;
-  std::string feature_points;
-  RowMajorMatrixXf coefficients{{0.5f}, {-0.5f}, {0.f}};
-  SectionId skip{"----"};
-
-  TinyVoice() {
-    provenance.corpus = "hand-made";
-    provenance.target_face = "three-vertex test face";
-    provenance.seed = 3;
-    provenance.synthetic = true;
-    provenance.build_time_utc = "2026-11-22T04:00:00Z";
-    provenance.tool_version = "0.1.0";
-    provenance.parameters = {{"k", 1}};
-    provenance.notes = {{"prototype_rule", "by hand"}};
-    graph.utterances = {{0, 3}};
-    graph.frame_count = 3;
-    graph.states = {{0, VisemeClass::kSilence, {0, 1}}, {0, VisemeClass::kBilabial, {1, 2}}};
-    graph.phones = {Phone::SIL, Phone::M};
-    const std::vector<VoiceFeaturePoint> points = {{"8.1", 0, {0.0, -0.02, 0.1}}};
-    const std::vector<VoiceRigidMarker> rigid = {{"H.temple_l", 0, {0.07, 0.03, 0.0}, {0.07, 0.03, 0.01}},
-                                                 {"H.temple_r", 1, {-0.07, 0.03, 0.0}, {-0.07, 0.03, 0.01}},
-                                                 {"H.nose_bridge", 2, {0.0, 0.04, 0.09}, {0.0, 0.04, 0.1}}};
-    feature_points = voice_feature_points_json(points, rigid);
-  }
-
-  std::string bytes() const {
-    VoiceFileWriter w;
-    auto add = [&](SectionId id, auto matrix) {
-      if (!(id == skip)) w.add_matrix(id, matrix);
-    };
-    if (!(vs::kProvenance == skip)) w.add_provenance(provenance);
-    add(vs::kPcaMean, RowMajorMatrixXf{{0.f, 1.f, 2.f, 3.f, 4.f, 5.f, 6.f, 7.f, 8.f}});
-    add(vs::kPcaComponents, RowMajorMatrixXf{{0.f, 1.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f}});
-    add(vs::kPcaVariances, RowMajorMatrixXf{{0.25f}});
-    add(vs::kFrameCoefficients, coefficients);
-    add(vs::kRbfCentres, RowMajorMatrixXd{{0.0, 0.0, 0.0}, {0.0, -0.01, 0.0}});
-    add(vs::kRbfWeights, RowMajorMatrixXf{{0.f, 1.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f},
-                                          {0.f, -1.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f, 0.f}});
-    add(vs::kRbfOffset, RowMajorMatrixXf{{0.f, 1.f, 2.f, 3.f, 4.f, 5.f, 6.f, 7.f, 8.f}});
-    add(vs::kRbfScalars, RowMajorMatrixXd{{1e-4, 1e-6}});
-    if (!(vs::kPhoneGraph == skip)) {
-      const auto g = encode_voice_graph(graph);
-      w.add(vs::kPhoneGraph, ElementType::kBytes, 1, g.size(), g);
-    }
-    if (!(vs::kFeaturePoints == skip))
-      w.add(vs::kFeaturePoints, ElementType::kJson, 1, feature_points.size(), std::as_bytes(std::span(feature_points)));
-    return w.bytes();
-  }
-};
 
 std::string refusal(const std::filesystem::path& file) {
   try {
@@ -108,6 +57,7 @@ TEST(Voice, OpensACompleteVoiceAndHandsOutItsParts) {
   ASSERT_EQ(voice.rigid_markers().size(), 3u);
   EXPECT_EQ(voice.rigid_markers()[2].source_reference_m, Eigen::Vector3d(0.0, 0.04, 0.1));
   EXPECT_EQ(voice.retarget_map().centre_count(), 2);
+  EXPECT_FALSE(voice.face_maps().has_value()) << "a voice on its own face has no FMAP";
   EXPECT_EQ(voice.retarget_map().lambda(), 1e-6);
   // The map evaluates: at the first centre, vertex 0's y is offset + w0 phi0 + w1 phi1.
   const Eigen::VectorXd y = voice.retarget_map()(Eigen::Vector3d::Zero());
@@ -181,6 +131,13 @@ std::vector<BadVoice> bad_voices() {
   out.push_back({"bad.008.rbf-scalars.fapv", patched(kRparIndex, [](std::string& b, std::uint64_t at) {
                    const double zero = 0.0;  // r^2 = 0
                    std::memcpy(b.data() + at, &zero, 8);
+                 })});
+  out.push_back({"bad.009.section-shape.FMAP.fapv", with([](TinyVoice& v) {
+                   v.face_maps = RowMajorMatrixXf::Zero(3, 8);  // a 3 x 3 map per vertex is 9 numbers
+                 })});
+  out.push_back({"bad.010.non-finite.FMAP.fapv", with([](TinyVoice& v) {
+                   v.face_maps = RowMajorMatrixXf::Identity(3, 9);
+                   (*v.face_maps)(2, 4) = std::numeric_limits<float>::quiet_NaN();
                  })});
   return out;
 }

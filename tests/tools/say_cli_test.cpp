@@ -4,6 +4,13 @@
 #include "support/run_command.hpp"
 
 #include "fapcast/codec/frame_rate.hpp"
+#include "fapcast/codec/gltf_export.hpp"
+#include "fapcast/synth/alignment_phones.hpp"
+#include "fapcast/synth/face_model.hpp"
+#include "fapcast/synth/facial_expression.hpp"
+#include "fapcast/synth/obj_mesh.hpp"
+#include "fapcast/synth/synthesis.hpp"
+#include "fapcast/synth/voice.hpp"
 #include "fapcast/synth/lab_file.hpp"
 #include "fapcast/synth/mono_audio.hpp"
 #include "fapcast/synth/textgrid.hpp"
@@ -162,6 +169,196 @@ void BadInputExitsOneAndNamesIt() {
   EXPECT_FALSE(fs::exists(out("e.fap")));
 }
 
+// The take's phones as `animate` reads them, synthesised by the library with the CLI's defaults.
+synth::SynthesizedTrack library_track(const synth::Voice& v, const synth::MonoAudio& audio) {
+  const synth::Alignment a = synth::read_textgrid(transport::read_file(take("TextGrid")), take("TextGrid"));
+  const auto samples = static_cast<std::int64_t>(audio.samples.size());
+  const auto phones = synth::fit_phones_to_audio(synth::phones_from_tier(*synth::phone_tier(a), audio.sample_rate_hz, "t"),
+                                                 samples, audio.sample_rate_hz / 50, "t");
+  synth::SynthesisOptions options;
+  options.search.beta = 0.1;
+  options.search.max_active = 64;
+  return synth::synthesize(v.graph(), v.frame_coefficients(), phones, audio.sample_rate_hz, samples, options, "t");
+}
+
+double mean_fap(const codec::FapSequence& seq, int fap) {
+  double sum = 0;
+  for (const auto& f : seq.frames) sum += f.value(fap);
+  return sum / static_cast<double>(seq.frames.size());
+}
+
+// --expression: FAP 2 in every frame of .fap and .fba, and the lips' FAPs come from the blended
+// face: joy pulls the lip corners outwards and up.
+void ExpressionBlendsWithSpeech() {
+  const std::string animate = "animate --wav " + take("wav") + " --align " + take("TextGrid") + " --voice " + voice();
+  auto r = run_command(fapcast(animate + " -o " + out("plain.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string name : {"joy.fap", "joy.fba"}) {
+    r = run_command(fapcast(animate + " --expression joy:63 -o " + out(name)));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_NE(r.out.find("expression joy:63"), std::string::npos) << r.out;
+  const auto plain = transport::read_track_file(out("plain.fap"));
+  for (const std::string name : {"joy.fap", "joy.fba"}) {
+    SCOPED_TRACE(name);
+    const auto joy = transport::read_track_file(out(name));
+    ASSERT_EQ(joy.frames.size(), plain.frames.size());
+    for (const auto& f : joy.frames) {
+      ASSERT_TRUE(f.mask.test(2));
+      ASSERT_EQ(f.expression.select1, 1);  // joy
+      ASSERT_EQ(f.expression.intensity1, 63);
+      ASSERT_EQ(f.expression.select2, 0);
+    }
+    for (const int fap : {53, 54, 59, 60}) {  // stretch / raise the outer lip corners 8.3, 8.4
+      ASSERT_TRUE(joy.frames[0].mask.test(fap)) << fap;
+      EXPECT_GT(mean_fap(joy, fap), mean_fap(plain, fap) + 20) << "FAP " << fap;
+    }
+    EXPECT_FALSE(plain.frames[0].mask.test(2));
+  }
+  // Two expressions: both fields.
+  r = run_command(fapcast(animate + " --expression joy:40,surprise:20 -o " + out("two.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto two = transport::read_track_file(out("two.fap"));
+  EXPECT_EQ(two.frames[0].expression, (codec::ExpressionField{1, 40, 6, 20, false, false}));
+}
+
+// -o OUT.glb: the voice's mean is the mesh, its k components the targets, the synthesised PCA
+// frames the weights at 60 fps; --expression adds one target with weight 1; three.js loads it.
+void GlbCarriesThePcaFrames() {
+  const synth::Voice v = synth::Voice::open(voice());
+  const synth::MonoAudio audio = synth::read_wav(take("wav"));
+  const std::string animate = "animate --wav " + take("wav") + " --align " + take("TextGrid") + " --voice " + voice();
+  auto r = run_command(fapcast(animate + " -o " + out("anim.glb")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("frames at 60 fps"), std::string::npos) << r.out;
+  const auto a = codec::read_glb(transport::read_file(out("anim.glb")), out("anim.glb"));
+  const auto k = static_cast<std::size_t>(v.component_count());
+  ASSERT_EQ(a.targets_m.size(), k);
+  EXPECT_EQ(a.target_names.front(), "pc1");
+  EXPECT_EQ(a.rate, (codec::FrameRate{60, 1}));
+  const Eigen::Index n = v.dimension() / 3;
+  EXPECT_EQ(a.base_positions_m, Eigen::Map<const Eigen::Matrix3Xf>(v.pca_mean().data(), 3, n));
+  for (std::size_t i = 0; i < k; ++i) {
+    const Eigen::Matrix<float, 1, Eigen::Dynamic> row = v.pca_components().row(static_cast<Eigen::Index>(i));
+    ASSERT_EQ(a.targets_m[i], Eigen::Map<const Eigen::Matrix3Xf>(row.data(), 3, n)) << "component " << i;
+  }
+  const synth::SynthesizedTrack track = library_track(v, audio);
+  ASSERT_EQ(a.weights.rows(), frames_for(audio, 60));
+  ASSERT_LE(a.weights.rows(), track.pca_frames.rows());
+  EXPECT_EQ(a.weights, track.pca_frames.topRows(a.weights.rows())) << "the weights are the PCA frames, bit for bit";
+  EXPECT_EQ(a.triangles, synth::triangulate(synth::ict_face_model().faces));
+
+  r = run_command(fapcast(animate + " --expression joy:40 -o " + out("joy.glb")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = codec::read_glb(transport::read_file(out("joy.glb")), out("joy.glb"));
+  ASSERT_EQ(j.targets_m.size(), k + 1);
+  EXPECT_EQ(j.target_names.back(), "joy:40");
+  EXPECT_TRUE((j.weights.col(static_cast<Eigen::Index>(k)).array() == 1.0f).all());
+  EXPECT_EQ(j.weights.leftCols(static_cast<Eigen::Index>(k)), a.weights);
+  const synth::Positions joy_m =
+      0.01f * synth::expression_displacement(synth::ict_face_model(), {synth::Expression::joy, 40});
+  EXPECT_LT((j.targets_m.back() - joy_m).cwiseAbs().maxCoeff(), 1e-9f);
+
+  // say: the WAV goes beside the .glb.
+  r = run_command(fapcast("say \"Hello.\" --voice " + voice() + " --expression joy:40 -o " + out("hello.glb") +
+                          " --obj-frames " + out("hello-obj")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const synth::MonoAudio hello = synth::read_wav(out("hello.wav"));
+  const auto h = codec::read_glb(transport::read_file(out("hello.glb")), "hello.glb");
+  EXPECT_EQ(h.weights.rows(), frames_for(hello, 60));
+  // --obj-frames: every frame as an OBJ of the mesh the .glb shows.
+  std::size_t objs = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(out("hello-obj"))) ++objs;
+  EXPECT_EQ(objs, static_cast<std::size_t>(h.weights.rows()));
+  const auto frame5 = synth::read_obj_mesh(out("hello-obj") + "/frame_000005.obj");
+  EXPECT_LT((frame5.vertices - codec::frame_positions(h, 5)).cwiseAbs().maxCoeff(), 1e-7f);
+
+  // A standard viewer: three.js's GLTFLoader (Debian libjs-three) in Node sees k + 1 morph
+  // targets and one morphTargetInfluences track with a key per frame, holding the file's weights.
+  const std::string script = std::string(FAPCAST_SOURCE_DIR) + "/tests/viewer/three_gltf_check.js";
+  r = run_command("node '" + script + "' '" + out("hello.glb") + "' --targets " + std::to_string(k + 1) +
+                  " --frames " + std::to_string(h.weights.rows()) + " --fps 60");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto seen = nlohmann::json::parse(r.out);
+  EXPECT_EQ(seen["vertices"], n);
+  EXPECT_EQ(seen["names"].front(), "pc1");
+  EXPECT_EQ(seen["names"].back(), "joy:40");
+  const auto& track0 = seen["animations"][0]["tracks"][0];
+  ASSERT_EQ(track0["weights"].size(), static_cast<std::size_t>(h.weights.size()));
+  for (Eigen::Index f = 0; f < h.weights.rows(); ++f)
+    for (Eigen::Index c = 0; c <= static_cast<Eigen::Index>(k); ++c)
+      ASSERT_EQ(track0["weights"][static_cast<std::size_t>(f * (static_cast<Eigen::Index>(k) + 1) + c)].get<float>(),
+                h.weights(f, c))
+          << "frame " << f << ", target " << c;
+}
+
+// voice retarget: on a face 1.5 times the generic one (moved), every displacement is 1.5 times
+// the generic one and the FAPs (displacements over the face's own FAPU) stay the same; on an
+// actor made of ICT identity shapes the voice speaks and its FAPU are the actor's.
+void RetargetedVoiceSpeaks() {
+  const std::string ict = std::string(FAPCAST_SOURCE_DIR) + "/data/ict-facekit/generic_neutral_mesh.obj";
+  const synth::ObjMesh generic = synth::read_obj_mesh(ict);
+  const synth::Positions big = (1.5f * generic.vertices).colwise() + Eigen::Vector3f(1, 2, 3);
+  transport::write_file_atomically(out("big.obj"), synth::write_obj_mesh(big, generic.faces));
+  auto r = run_command(fapcast("voice retarget " + voice() + " --generic '" + ict + "' --specific " + out("big.obj") +
+                               " -o " + out("big.fapv")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("components re-targeted"), std::string::npos) << r.out;
+  const std::string animate = "animate --wav " + take("wav") + " --align " + take("TextGrid");
+  for (const std::string v : {"v", "big"}) {
+    r = run_command(fapcast(animate + " --voice " + out(v + ".fapv") + " -o " + out("rt-" + v + ".fap")));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run_command(fapcast(animate + " --voice " + out(v + ".fapv") + " -o " + out("rt-" + v + ".glb")));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const auto g = transport::read_track_file(out("rt-v.fap")), s = transport::read_track_file(out("rt-big.fap"));
+  ASSERT_EQ(g.frames.size(), s.frames.size());
+  int worst = 0;
+  for (std::size_t f = 0; f < g.frames.size(); ++f) {
+    ASSERT_EQ(g.frames[f].mask, s.frames[f].mask);
+    for (int fap = 3; fap <= 68; ++fap)
+      if (g.frames[f].mask.test(fap)) worst = std::max(worst, std::abs(g.frames[f].value(fap) - s.frames[f].value(fap)));
+  }
+  EXPECT_LE(worst, 1) << "FAPs are in the face's own units: a scaled face plays the same values (+-1 rounding)";
+  const auto gg = codec::read_glb(transport::read_file(out("rt-v.glb")), "rt-v.glb");
+  const auto sg = codec::read_glb(transport::read_file(out("rt-big.glb")), "rt-big.glb");
+  ASSERT_EQ(gg.targets_m.size(), sg.targets_m.size());
+  const Eigen::Matrix3Xf generic_m = 0.01f * generic.vertices, big_m = 0.01f * big;
+  EXPECT_LT((sg.base_positions_m - (big_m + 1.5f * (gg.base_positions_m - generic_m))).cwiseAbs().maxCoeff(), 1e-5f);
+  for (std::size_t i = 0; i < gg.targets_m.size(); ++i)  // the components (expressions: speech_expression_test)
+    EXPECT_LT((sg.targets_m[i] - 1.5f * gg.targets_m[i]).cwiseAbs().maxCoeff(), 1e-6f) << "target " << i;
+  EXPECT_EQ(sg.weights, gg.weights) << "the PCA frames are the voice's, unchanged";
+
+  // An actor from three ICT identity shapes: the voice speaks with the actor's FAPU.
+  const synth::FaceModel& face = synth::ict_face_model();
+  synth::Positions actor = face.neutral_cm;
+  for (std::size_t i = 0; i < 3; ++i) synth::add_scaled(actor, face.identities[i], i == 1 ? -0.8f : 0.9f);
+  transport::write_file_atomically(out("actor.obj"), synth::write_obj_mesh(actor, face.faces));
+  r = run_command(fapcast("voice retarget " + voice() + " --generic '" + ict + "' --specific " + out("actor.obj") +
+                          " -o " + out("actor.fapv")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_command(fapcast(animate + " --voice " + out("actor.fapv") + " -o " + out("rt-actor.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_command(fapcast("say \"Hello.\" --voice " + out("actor.fapv") + " -o " + out("actor-say.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(transport::read_track_file(out("actor-say.fap")).frames.size(), 5u);
+  const synth::Voice actor_voice = synth::Voice::open(out("actor.fapv"));
+  for (const auto& p : actor_voice.feature_points())
+    ASSERT_LT((p.neutral_m - 0.01 * actor.col(p.vertex).cast<double>()).norm(), 1e-7) << p.label;
+  const auto a = transport::read_track_file(out("rt-actor.fap"));
+  ASSERT_EQ(a.frames.size(), g.frames.size());
+  int differ = 0;
+  for (std::size_t f = 0; f < g.frames.size(); ++f) differ += g.frames[f].value(3) != a.frames[f].value(3);
+  EXPECT_GT(differ, 0) << "another face: other displacements and other FAPU";
+
+  // Bad input: the generic mesh in the wrong unit names the rule and the feature point.
+  r = run_command(fapcast("voice retarget " + voice() + " --generic '" + ict + "' --obj-unit m --specific " +
+                          out("big.obj") + " -o " + out("bad.fapv")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("generic-mismatch"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("bad.fapv")));
+}
+
 TEST_F(SayCli, SayAndAnimateEndToEnd) {
   {
     SCOPED_TRACE("SayWritesTheTrackInSyncWithTheWav");
@@ -179,6 +376,18 @@ TEST_F(SayCli, SayAndAnimateEndToEnd) {
     SCOPED_TRACE("BadInputExitsOneAndNamesIt");
     BadInputExitsOneAndNamesIt();
   }
+  {
+    SCOPED_TRACE("ExpressionBlendsWithSpeech");
+    ExpressionBlendsWithSpeech();
+  }
+  {
+    SCOPED_TRACE("GlbCarriesThePcaFrames");
+    GlbCarriesThePcaFrames();
+  }
+  {
+    SCOPED_TRACE("RetargetedVoiceSpeaks");
+    RetargetedVoiceSpeaks();
+  }
 }
 
 TEST(SayCliUsage, MistakesExitTwo) {
@@ -188,6 +397,17 @@ TEST(SayCliUsage, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 500")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("animate --wav a.wav -o x.fap")).exit_code, 2);  // no --align
   EXPECT_EQ(run_command(fapcast("animate --wav a.wav --align a.txt -o x.fap")).exit_code, 2);
+  // Expressions: an unknown name or an intensity outside 0..63 is a usage mistake, said clearly.
+  for (const std::string bad : {"glee:40", "joy:64", "joy:40,fear:10,anger:5"}) {
+    const auto r = run_command(fapcast("say \"Hi.\" -o x.fap --voice v.fapv --expression " + bad));
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("--expression"), std::string::npos) << r.err;
+  }
+  EXPECT_NE(run_command(fapcast("say \"Hi.\" -o x.fap --expression glee")).err.find("joy, sadness"), std::string::npos);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.glb --fps 25")).exit_code, 2);  // .glb keys are the voice's 60 fps
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.glb --viseme")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --obj-frames d")).exit_code, 2);  // OBJ frames: .glb only
+  EXPECT_EQ(run_command(fapcast("voice retarget v.fapv --generic g.obj -o v2.fapv")).exit_code, 2);  // no --specific
 }
 
 }  // namespace

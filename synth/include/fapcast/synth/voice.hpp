@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -64,6 +65,10 @@ class Voice {  // move-only
   // vector is the feature points' markers in feature_points() order, metres, in the head frame
   // the rigid markers' source_reference_m define.
   const RbfMap& retarget_map() const { return map_; }
+  // The per-vertex maps from the generic ICT face to this voice's face (N x 9, vertex i's 3 x 3
+  // map row-major: displacement on this face = map * displacement on ICT) when the voice was
+  // re-targeted (`fapcast voice retarget`, section FMAP); nullopt for a voice on ICT itself.
+  std::optional<Eigen::Map<const RowMajorMatrixXf>> face_maps() const;
   // The container, for section sizes (voice info).
   const VoiceFileView& file() const { return view_; }
 

@@ -13,6 +13,8 @@ packages=(
   espeak-ng festlex-cmu sox tshark xz-utils gzip
   # tests: a standard glTF viewer (three.js r111 and its GLTFLoader) run by Node, no network
   nodejs libjs-three
+  # the BVH export's cross-check: Blender's own importer, run headless (tests/codec/bvh_blender_test.cpp)
+  blender
 )
 
 missing=()

@@ -70,19 +70,25 @@ void BM_Search(benchmark::State& state) {
       state.range(1) > 0 ? std::optional<std::size_t>(static_cast<std::size_t>(state.range(1))) : std::nullopt;
   SearchResult r;
   for (auto _ : state) {
-    r = unit_search(*w.graph, w.targets, {beta, cap});
+    r = unit_search(*w.graph, w.targets, {beta, cap, state.range(2) != 0});
     benchmark::DoNotOptimize(r.cost);
   }
   report(state, r);
 }
-// Args: beta x 100, cap (0 = none).
-BENCHMARK(BM_Search)->Args({0, 0})->Args({10, 0})->Args({10, 64})->Args({10, 16})->Unit(benchmark::kMillisecond);
+// Args: beta x 100, cap (0 = none), prune joins (1) or evaluate every join (0: the reference).
+BENCHMARK(BM_Search)
+    ->ArgNames({"beta100", "cap", "prune"})
+    ->Args({0, 0, 1})
+    ->Args({10, 0, 0})->Args({10, 0, 1})
+    ->Args({10, 64, 0})->Args({10, 64, 1})
+    ->Args({10, 16, 0})->Args({10, 16, 1})
+    ->Unit(benchmark::kMillisecond);
 
 void BM_SearchAndRender(benchmark::State& state) {
   const World& w = world();
   SearchResult r;
   for (auto _ : state) {
-    r = unit_search(*w.graph, w.targets, {0.1, 16});
+    r = unit_search(*w.graph, w.targets, {0.1, 64});
     auto y = render_units(*w.graph, w.frames, r, w.timing);
     benchmark::DoNotOptimize(y.data());
   }

@@ -1,6 +1,7 @@
 #pragma once
 // The phone graph of the paper's section 3.7: one horizontal chain of phone states per recorded
 // utterance, indexed so that the unit search never scans the corpus.
+#include "fapcast/synth/junction_bound.hpp"
 #include "fapcast/synth/viseme.hpp"
 
 #include <Eigen/Core>
@@ -30,16 +31,32 @@ struct PhoneState {
 
 // Boundary shape of a state for the junction cost (see junction_cost): `entry` is
 // [x0, x1 - 2 x0] of its first two frames, `exit` is [2 x_-1 - x_-2, -x_-1] of its last two,
-// where x are the PCA coefficient vectors (k each, so both have 2k entries).
+// where x are the PCA coefficient vectors (k each, so both have 2k entries). One row per state,
+// row-major, zero-padded to a multiple of kJunctionLanes columns: a state's boundary is one
+// contiguous run of floats, and the padding adds nothing to any cost (zero in every row).
+inline constexpr Eigen::Index kJunctionLanes = 8;
+using JunctionRows = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 struct JunctionFeatures {
-  Eigen::MatrixXf entry;  // states x 2k
-  Eigen::MatrixXf exit;   // states x 2k
+  JunctionRows entry;  // states x (2k rounded up to kJunctionLanes)
+  JunctionRows exit;   // states x (2k rounded up to kJunctionLanes)
 };
 
 // Makes the junction features of every state from the voice's PCA frames (frames x k). A state
 // shorter than two frames borrows frames from its neighbours in the recording.
 JunctionFeatures junction_features(std::span<const PhoneState> states,
                                    const Eigen::MatrixXf& pca_frames);
+
+// C of a join from the state whose exit row is `exit` into the state whose entry row is `entry`
+// (`dims` floats each, a multiple of kJunctionLanes): half the squared distance of the rows, i.e.
+// the mean squared second difference over the junction. Summed in kJunctionLanes fixed lanes, so
+// every caller (the search, the reference search, junction_cost below) gets the same float.
+inline float junction_cost(const float* entry, const float* exit, Eigen::Index dims) {
+  using Block = Eigen::Array<float, kJunctionLanes, 1>;
+  Block lane = Block::Zero();
+  for (Eigen::Index d = 0; d < dims; d += kJunctionLanes)
+    lane += (Eigen::Map<const Block>(entry + d) - Eigen::Map<const Block>(exit + d)).square();
+  return 0.5f * (((lane[0] + lane[4]) + (lane[2] + lane[6])) + ((lane[1] + lane[5]) + (lane[3] + lane[7])));
+}
 
 class PhoneGraph {
  public:
@@ -67,10 +84,13 @@ class PhoneGraph {
 
   bool has_junction_features() const { return features_.entry.rows() > 0; }
   const JunctionFeatures& junction() const { return features_; }
+  // The search's lower bound on junction costs (empty without features).
+  const JunctionBound& junction_bound() const { return bound_; }
 
  private:
   std::vector<PhoneState> states_;
   JunctionFeatures features_;
+  JunctionBound bound_;
   // CSR-style indices: by_viseme_[offsets_[v] .. offsets_[v+1]) and the same for divisemes.
   std::vector<std::uint32_t> viseme_offsets_;
   std::vector<StateId> by_viseme_;

@@ -64,6 +64,20 @@ JunctionBound::JunctionBound(const PhoneGraph& graph) {
     const OnAxis p = on_axis(spread, r.dot(axis.row(a * kClasses + state_class(j))));
     entry_[static_cast<std::size_t>(j)] = {p.along, p.across, static_cast<float>(slack_per_spread * spread)};
   }
+  offset_.assign(kVisemeClassCount * kVisemeClassCount + 1, 0);
+  for (std::size_t d = 0; d < kVisemeClassCount * kVisemeClassCount; ++d)
+    offset_[d + 1] = offset_[d] + graph.entries(static_cast<VisemeClass>(d / kVisemeClassCount),
+                                                static_cast<VisemeClass>(d % kVisemeClassCount)).size();
+  entry_by_diviseme_.resize(offset_.back());
+  entry_rows_.resize(static_cast<Eigen::Index>(offset_.back()), dims);
+  for (std::size_t d = 0; d < kVisemeClassCount * kVisemeClassCount; ++d) {
+    const auto entries = graph.entries(static_cast<VisemeClass>(d / kVisemeClassCount),
+                                       static_cast<VisemeClass>(d % kVisemeClassCount));
+    for (std::size_t m = 0; m < entries.size(); ++m) {
+      entry_by_diviseme_[offset_[d] + m] = entry_[entries[m]];
+      entry_rows_.row(static_cast<Eigen::Index>(offset_[d] + m)) = f.entry.row(entries[m]);
+    }
+  }
   // Every exit on every axis of its class: one product per class, (states of a) x (axes of a).
   exit_.resize(static_cast<std::size_t>(n * kClasses));
   exit_slack_.resize(static_cast<std::size_t>(n));

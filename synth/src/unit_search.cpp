@@ -47,7 +47,9 @@ class StepBuilder {
 
   std::vector<Active> take() {
     for (const auto& a : out_) slot_[a.state] = kNoBack;
-    return std::exchange(out_, {});
+    std::vector<Active> next;
+    next.reserve(out_.size());  // the next step is usually about as large
+    return std::exchange(out_, std::move(next));
   }
 
  private:
@@ -97,19 +99,50 @@ struct Predecessor {
   const float* exit;     // its exit row
 };
 
+// The two classes of a join: the one left (the parent of the entry) and the one entered.
+struct Diviseme {
+  VisemeClass from, to;
+};
+
+// Buffers the join loop reuses from step to step.
+struct JoinScratch {
+  std::vector<Predecessor> pred;
+  std::vector<double> floor;           // per target
+};
+
 // A join's predecessor: the cheapest (cost, state), as `better` orders them.
 struct Choice {
   double cost;
   std::uint32_t back = kNoBack;
   StateId state = 0;
-  void consider(double c, std::uint32_t a, StateId s) {
-    if (c < cost || (c == cost && (back == kNoBack || s < state))) cost = c, back = a, state = s;
+  // Whether (c, s) beats the choice so far (then it becomes the choice).
+  bool consider(double c, std::uint32_t a, StateId s) {
+    if (!(c < cost || (c == cost && (back == kNoBack || s < state)))) return false;
+    cost = c, back = a, state = s;
+    return true;
   }
 };
 
-// `bound` exceeds `cost` by more than double rounding of either could explain (they are
-// computed by different sums of the same terms).
-bool clearly_above(double bound, double cost) { return bound > cost + 1e-12 * (1.0 + std::abs(cost)); }
+// Runs `loop.template operator()<Dims>()` with Dims = `width` when it is one of the usual row
+// widths (2k up to 64, rounded to kJunctionLanes), so the junction cost unrolls; else Dims = 0.
+template <class Loop>
+void join_with_width(Eigen::Index width, Loop&& loop) {
+  switch (width) {
+    case 8: return loop.template operator()<8>();
+    case 16: return loop.template operator()<16>();
+    case 24: return loop.template operator()<24>();
+    case 32: return loop.template operator()<32>();
+    case 40: return loop.template operator()<40>();
+    case 48: return loop.template operator()<48>();
+    case 56: return loop.template operator()<56>();
+    case 64: return loop.template operator()<64>();
+    default: return loop.template operator()<0>();
+  }
+}
+
+// The least bound that exceeds `cost` by more than double rounding could explain (a key-based
+// bound and a cost are different sums of the same terms).
+double clearly_above(double cost) { return cost + 1e-12 * (1.0 + std::abs(cost)); }
 
 // Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j).
 // The reference: every pair evaluated.
@@ -140,31 +173,34 @@ void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
 //             - beta (|u_j - u'| R_v + |s_j - s'| R_t),
 // with R_v, R_t the largest distances of the v_n, t_n from their means. The targets' points
 // differ little, so the last line is small: reading predecessors in ascending key, a target
-// stops at the first whose key_n + floor_j exceeds its best join, usually after a few. Reading
-// targets in ascending floor_j, the step stops at the first target whose cheapest possible join
-// exceeds what the cap keeps. Without the bound, key_n = base_n and floor_j = 0 (C >= 0).
+// stops at the first whose key_n + floor_j exceeds its best join (or what the cap keeps), usually
+// after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0).
 void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev,
-                        std::span<const StateId> targets, std::optional<VisemeClass> to, double beta,
-                        std::optional<std::size_t> max_active, CapLimit& cap, StepBuilder& step) {
+                        std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
+                        CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
   const auto& bound = graph.junction_bound();
-  const bool bounded = to && !bound.empty();
+  const bool bounded = diviseme && !bound.empty();
+  // A bounded sweep reads the diviseme's entry rows and points where they lie contiguously.
+  const std::span<const JunctionPoint> entry_point = bounded ? bound.entry_points(diviseme->from, diviseme->to)
+                                                             : std::span<const JunctionPoint>{};
+  const float* entry_rows = bounded ? bound.entry_rows(diviseme->from, diviseme->to) : nullptr;
   const double half_beta = 0.5 * beta;
   const std::size_t preds = prev.size();
 
-  std::vector<Predecessor> p(preds);
+  auto& p = scratch.pred;
+  p.resize(preds);
   for (std::uint32_t a = 0; a < preds; ++a) {
     const StateId i = prev[a].state;
     const double base = prev[a].cost + 1.0;
-    p[a] = {base, base, bounded ? bound.exit(i, *to) : JunctionPoint{}, a, i, f.exit.row(i).data()};
+    p[a] = {base, base, bounded ? bound.exit(i, diviseme->to) : JunctionPoint{}, a, i, f.exit.row(i).data()};
   }
-  std::vector<double> floor(targets.size(), 0.0);
-  std::vector<std::uint32_t> order(targets.size());  // targets, by ascending floor
-  std::iota(order.begin(), order.end(), 0u);
+  auto& floor = scratch.floor;
+  floor.assign(targets.size(), 0.0);
   if (bounded) {
     double u_mean = 0.0, s_mean = 0.0, v_mean = 0.0, t_mean = 0.0;
-    for (StateId j : targets) u_mean += bound.entry(j).along, s_mean += bound.entry(j).across;
+    for (const JunctionPoint& e : entry_point) u_mean += e.along, s_mean += e.across;
     u_mean /= static_cast<double>(targets.size()), s_mean /= static_cast<double>(targets.size());
     for (const Predecessor& x : p) v_mean += x.point.along, t_mean += x.point.across;
     v_mean /= static_cast<double>(preds), t_mean /= static_cast<double>(preds);
@@ -175,43 +211,41 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
       x.key = x.base + half_beta * (v * v + t * t - x.point.slack) - beta * (u_mean * v + s_mean * t);
     }
     for (std::size_t b = 0; b < targets.size(); ++b) {
-      const JunctionPoint& e = bound.entry(targets[b]);
+      const JunctionPoint& e = entry_point[b];
       const double u = e.along, s = e.across, du = u - u_mean, ds = s - s_mean;
       floor[b] = half_beta * (u * u + s * s - e.slack) - beta * (du * v_mean + ds * t_mean) -
                  beta * (std::abs(du) * v_reach + std::abs(ds) * t_reach);
     }
-    if (max_active)
-      std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return floor[x] < floor[y]; });
   }
   // Ascending key; ties in any order (a choice never depends on reading order, see Choice).
   std::sort(p.begin(), p.end(), [](const Predecessor& x, const Predecessor& y) { return x.key < y.key; });
 
-  for (std::uint32_t b : order) {
-    const StateId j = targets[b];
-    const float* entry = f.entry.row(j).data();
-    const JunctionPoint e = bounded ? bound.entry(j) : JunctionPoint{};
-    Choice best{cap.limit()};
-    for (const Predecessor& x : p) {
-      if (clearly_above(x.key + floor[b], best.cost)) break;
-      if (bounded && x.base + half_beta * JunctionBound::twice_cost_floor(e, x.point) > best.cost) continue;
-      best.consider(x.base + beta * junction_cost(entry, x.exit, dims), x.index, x.state);
+  join_with_width(f.entry.cols(), [&]<Eigen::Index Dims>() {
+    for (std::size_t b = 0; b < targets.size(); ++b) {
+      const StateId j = targets[b];
+      const float* entry = bounded ? entry_rows + static_cast<std::ptrdiff_t>(b) * dims : f.entry.row(j).data();
+      const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
+      Choice best{cap.limit()};
+      double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this
+      for (const Predecessor& x : p) {
+        if (x.key > stop) break;
+        if (bounded && x.base + half_beta * JunctionBound::twice_cost_floor(e, x.point) > best.cost) continue;
+        if (best.consider(x.base + beta * junction_cost<Dims>(entry, x.exit, dims), x.index, x.state))
+          stop = clearly_above(best.cost) - floor[b];
+      }
+      if (best.back == kNoBack) continue;  // dearer than the cap keeps
+      const bool continued = step.has(j);  // its continuation already bounds its cost
+      step.offer(j, best.cost, best.back, true);
+      if (!continued) cap.add(best.cost);
     }
-    if (best.back == kNoBack) {  // dearer than the cap keeps
-      // Targets come in ascending floor when capped: once the cheapest possible join of one
-      // exceeds the cap's limit, every later one does too (the limit only falls).
-      if (max_active && bounded && clearly_above(p.front().key + floor[b], cap.limit())) break;
-      continue;
-    }
-    const bool continued = step.has(j);  // its continuation already bounds its cost
-    step.offer(j, best.cost, best.back, true);
-    if (!continued) cap.add(best.cost);
-  }
+  });
 }
 
-// Offers the joins into `targets` (a diviseme's entries when `to` is set, else any states).
+// Offers the joins into `targets` (the entries of `diviseme` when set, else any states).
 // With beta = 0 (or no features) C drops out and the cheapest active wins every join.
 void offer_joins(const PhoneGraph& graph, const std::vector<Active>& prev, std::span<const StateId> targets,
-                 std::optional<VisemeClass> to, const SearchOptions& options, CapLimit& cap, StepBuilder& step) {
+                 std::optional<Diviseme> diviseme, const SearchOptions& options, CapLimit& cap, StepBuilder& step,
+                 JoinScratch& scratch) {
   if (targets.empty() || prev.empty()) return;
   if (options.beta == 0.0 || !graph.has_junction_features()) {
     const auto best = std::min_element(prev.begin(), prev.end(), better);
@@ -220,7 +254,7 @@ void offer_joins(const PhoneGraph& graph, const std::vector<Active>& prev, std::
     return;
   }
   if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, step);
-  offer_pruned_joins(graph, prev, targets, to, options.beta, options.max_active, cap, step);
+  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, cap, step, scratch);
 }
 
 void prune(std::vector<Active>& actives, std::optional<std::size_t> cap) {
@@ -251,6 +285,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   result.stats.active_per_step.push_back(steps[0].size());
 
   CapLimit cap(options.max_active);
+  JoinScratch scratch;
   for (std::size_t t = 1; t < targets.size(); ++t) {
     const auto& prev = steps[t - 1];
     cap.clear();
@@ -263,11 +298,12 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
       }
     }
     // Across recordings: states whose parent looks like the phone we leave.
-    offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), targets[t], options, cap, builder);
+    offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), Diviseme{targets[t - 1], targets[t]}, options,
+                cap, builder, scratch);
     steps[t] = builder.take();
     if (steps[t].empty()) {  // the voice never recorded this diviseme: join anywhere that matches
       ++result.stats.hard_joins;
-      offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, cap, builder);
+      offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, cap, builder, scratch);
       steps[t] = builder.take();
     }
     prune(steps[t], options.max_active);

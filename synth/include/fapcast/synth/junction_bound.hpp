@@ -13,7 +13,10 @@
 // exceeds the cost.
 #include "fapcast/synth/viseme.hpp"
 
+#include <Eigen/Core>
+
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace fapcast::synth {
@@ -42,6 +45,16 @@ class JunctionBound {
   // parent. Precomputed.
   const JunctionPoint& entry(std::uint32_t j) const { return entry_[j]; }
 
+  // The entries of diviseme (from, to) in the order of PhoneGraph::entries(from, to): their points
+  // and their entry rows, each contiguous (the search reads a diviseme's entries in one sweep).
+  std::span<const JunctionPoint> entry_points(VisemeClass from, VisemeClass to) const {
+    const auto d = diviseme(from, to);
+    return std::span(entry_by_diviseme_).subspan(offset_[d], offset_[d + 1] - offset_[d]);
+  }
+  const float* entry_rows(VisemeClass from, VisemeClass to) const {
+    return entry_rows_.data() + static_cast<std::ptrdiff_t>(offset_[diviseme(from, to)]) * entry_rows_.cols();
+  }
+
   // State i leaving a unit towards class `to`, on the axis of diviseme (class(i), to).
   JunctionPoint exit(std::uint32_t i, VisemeClass to) const {
     const auto& p = exit_[static_cast<std::size_t>(i) * kVisemeClassCount + static_cast<std::size_t>(to)];
@@ -59,7 +72,14 @@ class JunctionBound {
   struct OnAxis {
     float along, across;
   };
+  static std::size_t diviseme(VisemeClass from, VisemeClass to) {
+    return static_cast<std::size_t>(from) * kVisemeClassCount + static_cast<std::size_t>(to);
+  }
   std::vector<JunctionPoint> entry_;  // per state (zero for states without a parent)
+  // The same points and the entry rows again, grouped by diviseme: [offset_[d], offset_[d + 1]).
+  std::vector<std::size_t> offset_;
+  std::vector<JunctionPoint> entry_by_diviseme_;
+  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> entry_rows_;
   std::vector<OnAxis> exit_;          // per state and class `to`
   std::vector<float> exit_slack_;     // per state
 };

@@ -49,13 +49,22 @@ JunctionFeatures junction_features(std::span<const PhoneState> states,
 // C of a join from the state whose exit row is `exit` into the state whose entry row is `entry`
 // (`dims` floats each, a multiple of kJunctionLanes): half the squared distance of the rows, i.e.
 // the mean squared second difference over the junction. Summed in kJunctionLanes fixed lanes, so
-// every caller (the search, the reference search, junction_cost below) gets the same float.
-inline float junction_cost(const float* entry, const float* exit, Eigen::Index dims) {
-  using Block = Eigen::Array<float, kJunctionLanes, 1>;
-  Block lane = Block::Zero();
-  for (Eigen::Index d = 0; d < dims; d += kJunctionLanes)
-    lane += (Eigen::Map<const Block>(entry + d) - Eigen::Map<const Block>(exit + d)).square();
-  return 0.5f * (((lane[0] + lane[4]) + (lane[2] + lane[6])) + ((lane[1] + lane[5]) + (lane[3] + lane[7])));
+// every caller gets the same float to the bit; Dims > 0 fixes the width at compile time (the
+// search's hot loop), Dims = 0 reads it from `dims`.
+template <Eigen::Index Dims = 0>
+inline float junction_cost(const float* entry, const float* exit, Eigen::Index dims = Dims) {
+  static_assert(kJunctionLanes == 8 && Dims % kJunctionLanes == 0, "two blocks of four lanes");
+  using Four = Eigen::Array4f;
+  const Eigen::Index width = Dims > 0 ? Dims : dims;
+  Four low = Four::Zero(), high = Four::Zero();  // lanes 0-3 and 4-7
+  for (Eigen::Index d = 0; d < width; d += kJunctionLanes) {
+    const Four g0 = Eigen::Map<const Four>(entry + d) - Eigen::Map<const Four>(exit + d);
+    const Four g1 = Eigen::Map<const Four>(entry + d + 4) - Eigen::Map<const Four>(exit + d + 4);
+    low += g0 * g0;
+    high += g1 * g1;
+  }
+  const Four lane = low + high;  // lane l holds lanes l and l + 4
+  return 0.5f * ((lane[0] + lane[2]) + (lane[1] + lane[3]));
 }
 
 class PhoneGraph {

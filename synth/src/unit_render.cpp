@@ -122,21 +122,22 @@ Eigen::MatrixXf smooth_trajectory(const Eigen::MatrixXf& x, std::span<const doub
     dd[i] = a0[i] - (i >= 1 ? l1[i] * l1[i] * dd[i - 1] : 0.0) - (i >= 2 ? l2[i] * l2[i] * dd[i - 2] : 0.0);
     if (!(dd[i] > 0.0)) throw std::invalid_argument("smooth: weights must be positive");
   }
-  Eigen::MatrixXf y(x.rows(), x.cols());
-  std::vector<double> z(n);
-  for (Eigen::Index c = 0; c < x.cols(); ++c) {
-    for (std::size_t i = 0; i < n; ++i) {
-      z[i] = weights[i] * x(static_cast<Eigen::Index>(i), c);
-      if (i >= 1) z[i] -= l1[i] * z[i - 1];
-      if (i >= 2) z[i] -= l2[i] * z[i - 2];
-    }
-    for (std::size_t i = 0; i < n; ++i) z[i] /= dd[i];
-    for (std::size_t i = n; i-- > 0;) {
-      if (i + 1 < n) z[i] -= l1[i + 1] * z[i + 1];
-      if (i + 2 < n) z[i] -= l2[i + 2] * z[i + 2];
-      y(static_cast<Eigen::Index>(i), c) = static_cast<float>(z[i]);
-    }
+  // The same substitutions for all k columns at once, a frame (row) at a time.
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  Rows z = x.cast<double>();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto r = static_cast<Eigen::Index>(i);
+    z.row(r) *= weights[i];
+    if (i >= 1) z.row(r) -= l1[i] * z.row(r - 1);
+    if (i >= 2) z.row(r) -= l2[i] * z.row(r - 2);
   }
+  for (std::size_t i = 0; i < n; ++i) z.row(static_cast<Eigen::Index>(i)) /= dd[i];
+  for (std::size_t i = n; i-- > 0;) {
+    const auto r = static_cast<Eigen::Index>(i);
+    if (i + 1 < n) z.row(r) -= l1[i + 1] * z.row(r + 1);
+    if (i + 2 < n) z.row(r) -= l2[i + 2] * z.row(r + 2);
+  }
+  Eigen::MatrixXf y = z.cast<float>();
   return y;
 }
 

@@ -108,6 +108,7 @@ struct Diviseme {
 struct JoinScratch {
   std::vector<Predecessor> pred;
   std::vector<double> floor;           // per target
+  std::vector<std::uint32_t> order;    // targets, the cap's worth with the lowest floor first
 };
 
 // A join's predecessor: the cheapest (cost, state), as `better` orders them.
@@ -177,7 +178,8 @@ void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
 // after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0).
 void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev,
                         std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
-                        CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
+                        std::optional<std::size_t> max_active, CapLimit& cap, StepBuilder& step,
+                        JoinScratch& scratch) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
   const auto& bound = graph.junction_bound();
@@ -217,11 +219,19 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
                  beta * (std::abs(du) * v_reach + std::abs(ds) * t_reach);
     }
   }
+  // With a cap, the targets most likely to be kept (lowest floor) go first, so that the cap's
+  // limit is tight when the others are read (order changes work, never a result).
+  auto& order = scratch.order;
+  order.resize(targets.size());
+  std::iota(order.begin(), order.end(), 0u);
+  if (bounded && max_active && *max_active < targets.size())
+    std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(*max_active), order.end(),
+                     [&](std::uint32_t x, std::uint32_t y) { return floor[x] < floor[y]; });
   // Ascending key; ties in any order (a choice never depends on reading order, see Choice).
   std::sort(p.begin(), p.end(), [](const Predecessor& x, const Predecessor& y) { return x.key < y.key; });
 
   join_with_width(f.entry.cols(), [&]<Eigen::Index Dims>() {
-    for (std::size_t b = 0; b < targets.size(); ++b) {
+    for (const std::uint32_t b : order) {
       const StateId j = targets[b];
       const float* entry = bounded ? entry_rows + static_cast<std::ptrdiff_t>(b) * dims : f.entry.row(j).data();
       const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
@@ -254,7 +264,7 @@ void offer_joins(const PhoneGraph& graph, const std::vector<Active>& prev, std::
     return;
   }
   if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, step);
-  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, cap, step, scratch);
+  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, options.max_active, cap, step, scratch);
 }
 
 void prune(std::vector<Active>& actives, std::optional<std::size_t> cap) {

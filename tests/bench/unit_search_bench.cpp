@@ -96,6 +96,26 @@ void BM_SearchAndRender(benchmark::State& state) {
 }
 BENCHMARK(BM_SearchAndRender)->Unit(benchmark::kMillisecond);
 
+// What opening a voice pays for the search. Arg 0: the graph's indices alone; 1: the junction
+// features alone (from the PCA frames); 2: both and the junction bound (every exit on every axis
+// of its class), i.e. what Voice::open does. The bound costs (2) - (1) - (0).
+void BM_GraphOpen(benchmark::State& state) {
+  const World& w = world();
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      PhoneGraph g(w.states);
+      benchmark::DoNotOptimize(g.size());
+    } else if (state.range(0) == 1) {
+      JunctionFeatures f = junction_features(w.states, w.frames);
+      benchmark::DoNotOptimize(f.entry.data());
+    } else {
+      PhoneGraph g(w.states, junction_features(w.states, w.frames));
+      benchmark::DoNotOptimize(g.size());
+    }
+  }
+}
+BENCHMARK(BM_GraphOpen)->ArgName("what")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

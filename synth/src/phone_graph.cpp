@@ -44,8 +44,10 @@ PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features
   if (rows != 0 && (rows != states_.size() || features_.exit.rows() != features_.entry.rows() ||
                     features_.exit.cols() != features_.entry.cols() ||
                     features_.entry.cols() % kJunctionLanes != 0))
-    throw std::invalid_argument("phone graph: junction features have " + std::to_string(rows) +
-                                " rows for " + std::to_string(states_.size()) + " states");
+    throw std::invalid_argument("phone graph: junction features have " + std::to_string(rows) + " rows of " +
+                                std::to_string(features_.entry.cols()) + " columns for " +
+                                std::to_string(states_.size()) + " states (one row per state, columns a multiple of " +
+                                std::to_string(kJunctionLanes) + ")");
   const std::size_t none = SIZE_MAX;
   bucket(states_.size(), kVisemeClassCount, [&](StateId j) -> std::size_t { return index(states_[j].viseme); },
          viseme_offsets_, by_viseme_);

@@ -141,8 +141,9 @@ void join_with_width(Eigen::Index width, Loop&& loop) {
   }
 }
 
-// The least bound that exceeds `cost` by more than double rounding could explain (a key-based
-// bound and a cost are different sums of the same terms).
+// The least bound that exceeds `cost` by more than double rounding of the costs could explain
+// (a key-based bound and a cost are different sums of the same terms; the rounding of the
+// expanded squares is absorbed by the points' slacks, which scale with the spreads).
 double clearly_above(double cost) { return cost + 1e-12 * (1.0 + std::abs(cost)); }
 
 // Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j).

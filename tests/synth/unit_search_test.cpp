@@ -136,7 +136,7 @@ INSTANTIATE_TEST_SUITE_P(Betas, UnitSearchBruteForce, ::testing::Values(0.0, 0.0
 TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
   const auto seed = test_seed();
   std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> classes(3, 9), k(1, 9), recordings(8, 40), phones(3, 14), tlen(1, 40);
+  std::uniform_int_distribution<int> classes(3, 9), k(1, 9), recordings(6, 24), phones(3, 12), tlen(1, 30);
   const std::optional<std::size_t> caps[] = {std::nullopt, 1, 3, 16, 64};
   const double betas[] = {0.02, 0.1, 1.0};
   const float noises[] = {0.0f, 0.05f, 1.0f};

@@ -20,6 +20,14 @@ struct Drive {
   bool jaw_relative;
 };
 
+// `units` of a FAP rounded half away from zero (std::round), saturated to int32 (NaN: the minimum).
+std::int32_t rounded_fap_value(double units) {
+  const double v = std::round(units);
+  constexpr double lo = std::numeric_limits<std::int32_t>::min(), hi = std::numeric_limits<std::int32_t>::max();
+  if (!(v >= lo)) return std::numeric_limits<std::int32_t>::min();  // also NaN
+  return v > hi ? std::numeric_limits<std::int32_t>::max() : static_cast<std::int32_t>(v);
+}
+
 }  // namespace
 
 bool is_jaw_borne(FeaturePoint fp) {
@@ -39,10 +47,7 @@ FapMask drivable_faps(const FeaturePointBasis& basis) {
 }
 
 std::int32_t to_fap_value(int fap, double amount, const FapuValues& fapu) {
-  const double v = std::round(amount / fapu.of(fap_info(fap).unit));  // std::round: half away
-  constexpr double lo = std::numeric_limits<std::int32_t>::min(), hi = std::numeric_limits<std::int32_t>::max();
-  if (!(v >= lo)) return std::numeric_limits<std::int32_t>::min();  // also NaN
-  return v > hi ? std::numeric_limits<std::int32_t>::max() : static_cast<std::int32_t>(v);
+  return rounded_fap_value(amount / fapu.of(fap_info(fap).unit));
 }
 
 std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const FeaturePointBasis& basis,
@@ -66,18 +71,34 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
   for (Eigen::Index i = 0; i < p; ++i) rest.segment<3>(3 * i) = basis.neutral.at(basis.points[static_cast<std::size_t>(i)]).transpose();
   const Eigen::RowVectorXd offset = basis.mean - rest;
 
-  std::vector<FapFrame> frames(static_cast<std::size_t>(coefficients.rows()));
-  Eigen::RowVectorXd d(3 * p);
-  for (Eigen::Index n = 0; n < coefficients.rows(); ++n) {
-    d.noalias() = coefficients.row(n).cast<double>() * basis.components;
-    d += offset;
-    FapFrame& f = frames[static_cast<std::size_t>(n)];
-    for (const Drive& drive : drives) {
-      const auto i = static_cast<Eigen::Index>(drive.point);
-      Eigen::Vector3d move = d.segment<3>(3 * i).transpose();
-      if (drive.jaw_relative) move -= d.segment<3>(3 * static_cast<Eigen::Index>(*chin)).transpose();
-      f.set(drive.fap, to_fap_value(drive.fap, move.dot(drive.axis), fapu));
+  // A driven FAP's amount is linear in the coefficients: the displacement of its point (minus the
+  // chin's, when jaw-relative) along its axis. One weight column and one constant per FAP, so a
+  // frame is one k x FAPs product.
+  const auto k = basis.component_count();
+  const auto count = static_cast<Eigen::Index>(drives.size());
+  Eigen::MatrixXd weight(k, count);
+  Eigen::RowVectorXd constant(count), unit(count);
+  for (Eigen::Index m = 0; m < count; ++m) {
+    const Drive& drive = drives[static_cast<std::size_t>(m)];
+    const Eigen::Index at = 3 * static_cast<Eigen::Index>(drive.point);
+    Eigen::MatrixXd move = basis.components.middleCols<3>(at);
+    Eigen::RowVector3d still = offset.segment<3>(at);
+    if (drive.jaw_relative) {
+      const Eigen::Index jaw = 3 * static_cast<Eigen::Index>(*chin);
+      move -= basis.components.middleCols<3>(jaw);
+      still -= offset.segment<3>(jaw);
     }
+    weight.col(m) = move * drive.axis;
+    constant(m) = still.dot(drive.axis);
+    unit(m) = fapu.of(fap_info(drive.fap).unit);
+  }
+  const Eigen::MatrixXd amount = (coefficients.cast<double>() * weight).rowwise() + constant;  // frames x FAPs
+
+  std::vector<FapFrame> frames(static_cast<std::size_t>(coefficients.rows()));
+  for (Eigen::Index n = 0; n < coefficients.rows(); ++n) {
+    FapFrame& f = frames[static_cast<std::size_t>(n)];
+    for (Eigen::Index m = 0; m < count; ++m)
+      f.set(drives[static_cast<std::size_t>(m)].fap, rounded_fap_value(amount(n, m) / unit(m)));
   }
   return frames;
 }

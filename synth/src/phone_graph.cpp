@@ -42,9 +42,12 @@ PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features
   }
   const auto rows = static_cast<std::size_t>(features_.entry.rows());
   if (rows != 0 && (rows != states_.size() || features_.exit.rows() != features_.entry.rows() ||
-                    features_.exit.cols() != features_.entry.cols()))
-    throw std::invalid_argument("phone graph: junction features have " + std::to_string(rows) +
-                                " rows for " + std::to_string(states_.size()) + " states");
+                    features_.exit.cols() != features_.entry.cols() ||
+                    features_.entry.cols() % kJunctionLanes != 0))
+    throw std::invalid_argument("phone graph: junction features have " + std::to_string(rows) + " rows of " +
+                                std::to_string(features_.entry.cols()) + " columns for " +
+                                std::to_string(states_.size()) + " states (one row per state, columns a multiple of " +
+                                std::to_string(kJunctionLanes) + ")");
   const std::size_t none = SIZE_MAX;
   bucket(states_.size(), kVisemeClassCount, [&](StateId j) -> std::size_t { return index(states_[j].viseme); },
          viseme_offsets_, by_viseme_);
@@ -53,6 +56,7 @@ PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features
            return has_parent(j) ? diviseme_key(states_[j - 1].viseme, states_[j].viseme) : none;
          },
          diviseme_offsets_, by_diviseme_);
+  if (has_junction_features()) bound_ = JunctionBound(*this);
 }
 
 std::span<const StateId> PhoneGraph::with_viseme(VisemeClass v) const {
@@ -70,8 +74,9 @@ std::span<const StateId> PhoneGraph::entries(VisemeClass from, VisemeClass to) c
 JunctionFeatures junction_features(std::span<const PhoneState> states,
                                    const Eigen::MatrixXf& pca_frames) {
   const Eigen::Index k = pca_frames.cols();
-  JunctionFeatures f{Eigen::MatrixXf(static_cast<Eigen::Index>(states.size()), 2 * k),
-                     Eigen::MatrixXf(static_cast<Eigen::Index>(states.size()), 2 * k)};
+  const Eigen::Index width = (2 * k + kJunctionLanes - 1) / kJunctionLanes * kJunctionLanes;
+  const auto rows = static_cast<Eigen::Index>(states.size());
+  JunctionFeatures f{JunctionRows::Zero(rows, width), JunctionRows::Zero(rows, width)};
   // Frames of one recording are contiguous; a short state reads past its own span into its
   // neighbours, but never past its recording.
   for (std::size_t u_begin = 0; u_begin < states.size();) {
@@ -88,8 +93,9 @@ JunctionFeatures junction_features(std::span<const PhoneState> states,
       if (s.frames.count == 0)
         throw std::invalid_argument("phone graph: state " + std::to_string(j) + " spans no frames");
       const std::int64_t first = s.frames.first, last = first + s.frames.count - 1;
-      f.entry.row(static_cast<Eigen::Index>(j)) << x(first), x(first + 1) - 2 * x(first);
-      f.exit.row(static_cast<Eigen::Index>(j)) << 2 * x(last) - x(last - 1), -x(last);
+      const auto r = static_cast<Eigen::Index>(j);
+      f.entry.row(r).head(2 * k) << x(first), x(first + 1) - 2 * x(first);
+      f.exit.row(r).head(2 * k) << 2 * x(last) - x(last - 1), -x(last);
     }
     u_begin = u_end + 1;
   }
@@ -100,7 +106,7 @@ float junction_cost(const PhoneGraph& graph, StateId i, StateId j) {
   if (!graph.has_junction_features()) return 0.0f;
   const auto& f = graph.junction();
   // Two second differences straddle the junction; C is their mean squared norm.
-  return 0.5f * (f.entry.row(j) - f.exit.row(i)).squaredNorm();
+  return junction_cost(f.entry.row(j).data(), f.exit.row(i).data(), f.entry.cols());
 }
 
 }  // namespace fapcast::synth

@@ -104,7 +104,9 @@ Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<con
     auto add = [&](std::size_t s) {
       const TongueTarget& p = tongue_target(phones[s]);
       const double tau = t - centre[s];
-      const double tip = p.tip().at(tau), body = p.body().at(tau);
+      // Tip and body share their decay (spec/tongue.tsv): one exp serves both.
+      const double fall = p.tip().falloff(tau);
+      const double tip = p.alpha_tip * fall, body = p.alpha_body * fall;
       for (std::size_t f = 0; f < kTongueFapCount; ++f) {
         const double d = f < 3 ? tip : body;
         num[f] += d * p.fap_value[f];

@@ -16,19 +16,13 @@ struct RecordingFrames {
   std::int64_t lo, hi;
 };
 
-std::vector<RecordingFrames> recording_frames(const PhoneGraph& graph) {
-  std::vector<RecordingFrames> per_state(graph.size());
-  for (std::size_t b = 0; b < graph.size();) {
-    std::size_t e = b;
-    while (graph.has_child(static_cast<StateId>(e))) ++e;
-    const auto& last = graph.state(static_cast<StateId>(e)).frames;
-    const RecordingFrames r{graph.state(static_cast<StateId>(b)).frames.first,
-                            std::int64_t{last.first} + last.count - 1};
-    std::fill(per_state.begin() + static_cast<std::ptrdiff_t>(b),
-              per_state.begin() + static_cast<std::ptrdiff_t>(e) + 1, r);
-    b = e + 1;
-  }
-  return per_state;
+// The recording of state j: O(its length), so a render never walks the whole corpus.
+RecordingFrames recording_frames(const PhoneGraph& graph, StateId j) {
+  StateId first = j, last = j;
+  while (graph.has_parent(first)) --first;
+  while (graph.has_child(last)) ++last;
+  const auto& end = graph.state(last).frames;
+  return {graph.state(first).frames.first, std::int64_t{end.first} + end.count - 1};
 }
 
 // Linear time warp of state j's span onto target frames [s, e): where output frame n samples
@@ -38,8 +32,9 @@ double warp(const FrameSpan& span, std::int64_t s, std::int64_t e, std::int64_t 
   return span.first + (static_cast<double>(n - s) + 0.5) * scale - 0.5;
 }
 
-// The recording's PCA vector at fractional frame p, clamped to the recording.
-Eigen::RowVectorXf sample(const Eigen::MatrixXf& frames, RecordingFrames r, double p) {
+// The recording's PCA vector at fractional frame p, clamped to the recording: an expression over
+// two rows of `frames` (nothing allocated).
+auto sample(const Eigen::MatrixXf& frames, RecordingFrames r, double p) {
   p = std::clamp(p, static_cast<double>(r.lo), static_cast<double>(r.hi));
   const auto i0 = static_cast<std::int64_t>(std::floor(p));
   const auto i1 = std::min(i0 + 1, r.hi);
@@ -63,7 +58,13 @@ Eigen::MatrixXf render_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca
       throw std::invalid_argument("render: target phone " + std::to_string(t) +
                                   " does not start where the previous one ends");
   }
-  const auto recordings = recording_frames(graph);
+  // The recording of each target's state (consecutive states of one recording share it).
+  std::vector<RecordingFrames> recordings(targets.size());
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const StateId j = result.states[t];
+    const bool same = t > 0 && graph.state(j).utterance == graph.state(result.states[t - 1]).utterance;
+    recordings[t] = same ? recordings[t - 1] : recording_frames(graph, j);
+  }
   const std::int64_t origin = targets.front().first_frame;
   const std::int64_t frames = targets.back().end_frame - origin;
   Eigen::MatrixXf out(static_cast<Eigen::Index>(frames), pca_frames.cols());
@@ -72,7 +73,7 @@ Eigen::MatrixXf render_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca
   // Each target phone samples its own state through its own warp.
   auto at = [&](std::size_t t, std::int64_t n) {
     const StateId j = result.states[t];
-    return sample(pca_frames, recordings[j], warp(graph.state(j).frames, targets[t].first_frame, targets[t].end_frame, n));
+    return sample(pca_frames, recordings[t], warp(graph.state(j).frames, targets[t].first_frame, targets[t].end_frame, n));
   };
   for (std::size_t t = 0; t < targets.size(); ++t)
     for (std::int64_t n = targets[t].first_frame; n < targets[t].end_frame; ++n) {
@@ -121,21 +122,22 @@ Eigen::MatrixXf smooth_trajectory(const Eigen::MatrixXf& x, std::span<const doub
     dd[i] = a0[i] - (i >= 1 ? l1[i] * l1[i] * dd[i - 1] : 0.0) - (i >= 2 ? l2[i] * l2[i] * dd[i - 2] : 0.0);
     if (!(dd[i] > 0.0)) throw std::invalid_argument("smooth: weights must be positive");
   }
-  Eigen::MatrixXf y(x.rows(), x.cols());
-  std::vector<double> z(n);
-  for (Eigen::Index c = 0; c < x.cols(); ++c) {
-    for (std::size_t i = 0; i < n; ++i) {
-      z[i] = weights[i] * x(static_cast<Eigen::Index>(i), c);
-      if (i >= 1) z[i] -= l1[i] * z[i - 1];
-      if (i >= 2) z[i] -= l2[i] * z[i - 2];
-    }
-    for (std::size_t i = 0; i < n; ++i) z[i] /= dd[i];
-    for (std::size_t i = n; i-- > 0;) {
-      if (i + 1 < n) z[i] -= l1[i + 1] * z[i + 1];
-      if (i + 2 < n) z[i] -= l2[i + 2] * z[i + 2];
-      y(static_cast<Eigen::Index>(i), c) = static_cast<float>(z[i]);
-    }
+  // The same substitutions for all k columns at once, a frame (row) at a time.
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  Rows z = x.cast<double>();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto r = static_cast<Eigen::Index>(i);
+    z.row(r) *= weights[i];
+    if (i >= 1) z.row(r) -= l1[i] * z.row(r - 1);
+    if (i >= 2) z.row(r) -= l2[i] * z.row(r - 2);
   }
+  for (std::size_t i = 0; i < n; ++i) z.row(static_cast<Eigen::Index>(i)) /= dd[i];
+  for (std::size_t i = n; i-- > 0;) {
+    const auto r = static_cast<Eigen::Index>(i);
+    if (i + 1 < n) z.row(r) -= l1[i + 1] * z.row(r + 1);
+    if (i + 2 < n) z.row(r) -= l2[i + 2] * z.row(r + 2);
+  }
+  Eigen::MatrixXf y = z.cast<float>();
   return y;
 }
 

@@ -1,7 +1,9 @@
 #include "fapcast/synth/unit_search.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -19,7 +21,9 @@ struct Active {
   bool joined;         // arrived by a join (a new unit starts here)
 };
 
-// Deterministic order: cheaper first, then lower state id.
+// Deterministic order: cheaper first, then lower state id. Every choice the search makes (the
+// predecessor of a join, the states the cap keeps, the final state) depends only on this order,
+// never on where a state sits in a vector, so skipping work cannot change a result.
 bool better(const Active& a, const Active& b) {
   return a.cost < b.cost || (a.cost == b.cost && a.state < b.state);
 }
@@ -28,6 +32,8 @@ bool better(const Active& a, const Active& b) {
 class StepBuilder {
  public:
   explicit StepBuilder(std::size_t states) : slot_(states, kNoBack) {}
+
+  bool has(StateId j) const { return slot_[j] != kNoBack; }
 
   void offer(StateId j, double cost, std::uint32_t back, bool joined) {
     std::uint32_t& s = slot_[j];
@@ -39,15 +45,11 @@ class StepBuilder {
     }
   }
 
-  // How many offers so far cost strictly less than `bound`.
-  std::size_t count_below(double bound) const {
-    return static_cast<std::size_t>(std::count_if(
-        out_.begin(), out_.end(), [bound](const Active& a) { return a.cost < bound; }));
-  }
-
   std::vector<Active> take() {
     for (const auto& a : out_) slot_[a.state] = kNoBack;
-    return std::exchange(out_, {});
+    std::vector<Active> next;
+    next.reserve(out_.size());  // the next step is usually about as large
+    return std::exchange(out_, std::move(next));
   }
 
  private:
@@ -55,38 +57,215 @@ class StepBuilder {
   std::vector<Active> out_;
 };
 
-// Offers every state in `targets` as a join from the cheapest predecessor, counting
-// 1 + beta * C(i, j). With beta = 0 (or no features) C drops out and the cheapest actives win.
-void offer_joins(const PhoneGraph& graph, const std::vector<Active>& prev,
-                 std::span<const StateId> targets, double beta, StepBuilder& step) {
+// What the cap will keep, bounded from above while a step is built: the cap-th smallest of the
+// costs offered to distinct states so far (each an upper bound of that state's final cost, which
+// can only fall). A state offered more than this cannot be among the cap cheapest.
+class CapLimit {
+ public:
+  explicit CapLimit(std::optional<std::size_t> cap) : cap_(cap ? std::max<std::size_t>(*cap, 1) : 0) {}
+
+  void add(double cost) {
+    if (cap_ == 0) return;
+    if (heap_.size() < cap_) {
+      heap_.push_back(cost);
+      std::push_heap(heap_.begin(), heap_.end());
+    } else if (cost < heap_.front()) {
+      std::pop_heap(heap_.begin(), heap_.end());
+      heap_.back() = cost;
+      std::push_heap(heap_.begin(), heap_.end());
+    }
+  }
+
+  double limit() const {
+    return cap_ > 0 && heap_.size() == cap_ ? heap_.front() : std::numeric_limits<double>::infinity();
+  }
+
+  void clear() { heap_.clear(); }
+
+ private:
+  std::size_t cap_;
+  std::vector<double> heap_;  // max-heap of the cap smallest costs
+};
+
+// One active of the previous step as the join loop reads it; the loop reads them in ascending
+// `key`, a lower bound on what any join from it costs once the target's own part is added (see
+// offer_pruned_joins).
+struct Predecessor {
+  double key;
+  double base;           // cost + 1: a join's cost before its junction term
+  JunctionPoint point;   // on the axis of the diviseme being joined (when bounded)
+  std::uint32_t index;   // into prev
+  StateId state;
+  const float* exit;     // its exit row
+};
+
+// The two classes of a join: the one left (the parent of the entry) and the one entered.
+struct Diviseme {
+  VisemeClass from, to;
+};
+
+// Buffers the join loop reuses from step to step.
+struct JoinScratch {
+  std::vector<Predecessor> pred;
+  std::vector<double> floor;           // per target
+  std::vector<std::uint32_t> order;    // targets, the cap's worth with the lowest floor first
+};
+
+// A join's predecessor: the cheapest (cost, state), as `better` orders them.
+struct Choice {
+  double cost;
+  std::uint32_t back = kNoBack;
+  StateId state = 0;
+  // Whether (c, s) beats the choice so far (then it becomes the choice).
+  bool consider(double c, std::uint32_t a, StateId s) {
+    if (!(c < cost || (c == cost && (back == kNoBack || s < state)))) return false;
+    cost = c, back = a, state = s;
+    return true;
+  }
+};
+
+// Runs `loop.template operator()<Dims>()` with Dims = `width` when it is one of the usual row
+// widths (2k up to 64, rounded to kJunctionLanes), so the junction cost unrolls; else Dims = 0.
+template <class Loop>
+void join_with_width(Eigen::Index width, Loop&& loop) {
+  switch (width) {
+    case 8: return loop.template operator()<8>();
+    case 16: return loop.template operator()<16>();
+    case 24: return loop.template operator()<24>();
+    case 32: return loop.template operator()<32>();
+    case 40: return loop.template operator()<40>();
+    case 48: return loop.template operator()<48>();
+    case 56: return loop.template operator()<56>();
+    case 64: return loop.template operator()<64>();
+    default: return loop.template operator()<0>();
+  }
+}
+
+// The least bound that exceeds `cost` by more than double rounding of the costs could explain
+// (a key-based bound and a cost are different sums of the same terms; the rounding of the
+// expanded squares is absorbed by the points' slacks, which scale with the spreads).
+double clearly_above(double cost) { return cost + 1e-12 * (1.0 + std::abs(cost)); }
+
+// Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j).
+// The reference: every pair evaluated.
+void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
+                      std::span<const StateId> targets, double beta, StepBuilder& step) {
+  const auto& f = graph.junction();
+  const auto dims = f.entry.cols();
+  for (StateId j : targets) {
+    Choice best{std::numeric_limits<double>::infinity()};
+    for (std::uint32_t a = 0; a < prev.size(); ++a)
+      best.consider(prev[a].cost + 1.0 + beta * junction_cost(f.entry.row(j).data(), f.exit.row(prev[a].state).data(), dims),
+                    a, prev[a].state);
+    step.offer(j, best.cost, best.back, true);
+  }
+}
+
+// The same offers, skipping what cannot matter. Every skipped pair costs strictly more than the
+// join chosen, and every join not offered costs more than the cap keeps, so what survives the cap
+// is the reference's, to the bit.
+//
+// With the bound of junction_bound.hpp (when `to` names the diviseme, so that every target's
+// entry point and every predecessor's exit point lie on one axis), a join n -> j costs at least
+//   lb(n, j) = base_n + (beta / 2) ((u_j - v_n)^2 + (s_j - t_n)^2 - slack_j - slack_n).
+// Expanding the squares around the targets' mean point (u', s') and the predecessors' mean point
+// (v', t') splits it into a predecessor part and a target part:
+//   lb(n, j) >= key_n + floor_j, key_n = base_n + (beta / 2) (v_n^2 + t_n^2 - slack_n) - beta (u' v_n + s' t_n),
+//   floor_j = (beta / 2) (u_j^2 + s_j^2 - slack_j) - beta ((u_j - u') v' + (s_j - s') t')
+//             - beta (|u_j - u'| R_v + |s_j - s'| R_t),
+// with R_v, R_t the largest distances of the v_n, t_n from their means. The targets' points
+// differ little, so the last line is small: reading predecessors in ascending key, a target
+// stops at the first whose key_n + floor_j exceeds its best join (or what the cap keeps), usually
+// after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0).
+void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev,
+                        std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
+                        std::optional<std::size_t> max_active, CapLimit& cap, StepBuilder& step,
+                        JoinScratch& scratch) {
+  const auto& f = graph.junction();
+  const auto dims = f.entry.cols();
+  const auto& bound = graph.junction_bound();
+  const bool bounded = diviseme && !bound.empty();
+  // A bounded sweep reads the diviseme's entry rows and points where they lie contiguously.
+  const std::span<const JunctionPoint> entry_point = bounded ? bound.entry_points(diviseme->from, diviseme->to)
+                                                             : std::span<const JunctionPoint>{};
+  const float* entry_rows = bounded ? bound.entry_rows(diviseme->from, diviseme->to) : nullptr;
+  const double half_beta = 0.5 * beta;
+  const std::size_t preds = prev.size();
+
+  auto& p = scratch.pred;
+  p.resize(preds);
+  for (std::uint32_t a = 0; a < preds; ++a) {
+    const StateId i = prev[a].state;
+    const double base = prev[a].cost + 1.0;
+    p[a] = {base, base, bounded ? bound.exit(i, diviseme->to) : JunctionPoint{}, a, i, f.exit.row(i).data()};
+  }
+  auto& floor = scratch.floor;
+  floor.assign(targets.size(), 0.0);
+  if (bounded) {
+    double u_mean = 0.0, s_mean = 0.0, v_mean = 0.0, t_mean = 0.0;
+    for (const JunctionPoint& e : entry_point) u_mean += e.along, s_mean += e.across;
+    u_mean /= static_cast<double>(targets.size()), s_mean /= static_cast<double>(targets.size());
+    for (const Predecessor& x : p) v_mean += x.point.along, t_mean += x.point.across;
+    v_mean /= static_cast<double>(preds), t_mean /= static_cast<double>(preds);
+    double v_reach = 0.0, t_reach = 0.0;
+    for (Predecessor& x : p) {
+      const double v = x.point.along, t = x.point.across;
+      v_reach = std::max(v_reach, std::abs(v - v_mean)), t_reach = std::max(t_reach, std::abs(t - t_mean));
+      x.key = x.base + half_beta * (v * v + t * t - x.point.slack) - beta * (u_mean * v + s_mean * t);
+    }
+    for (std::size_t b = 0; b < targets.size(); ++b) {
+      const JunctionPoint& e = entry_point[b];
+      const double u = e.along, s = e.across, du = u - u_mean, ds = s - s_mean;
+      floor[b] = half_beta * (u * u + s * s - e.slack) - beta * (du * v_mean + ds * t_mean) -
+                 beta * (std::abs(du) * v_reach + std::abs(ds) * t_reach);
+    }
+  }
+  // With a cap, the targets most likely to be kept (lowest floor) go first, so that the cap's
+  // limit is tight when the others are read (order changes work, never a result).
+  auto& order = scratch.order;
+  order.resize(targets.size());
+  std::iota(order.begin(), order.end(), 0u);
+  if (bounded && max_active && *max_active < targets.size())
+    std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(*max_active), order.end(),
+                     [&](std::uint32_t x, std::uint32_t y) { return floor[x] < floor[y]; });
+  // Ascending key; ties in any order (a choice never depends on reading order, see Choice).
+  std::sort(p.begin(), p.end(), [](const Predecessor& x, const Predecessor& y) { return x.key < y.key; });
+
+  join_with_width(f.entry.cols(), [&]<Eigen::Index Dims>() {
+    for (const std::uint32_t b : order) {
+      const StateId j = targets[b];
+      const float* entry = bounded ? entry_rows + static_cast<std::ptrdiff_t>(b) * dims : f.entry.row(j).data();
+      const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
+      Choice best{cap.limit()};
+      double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this
+      for (const Predecessor& x : p) {
+        if (x.key > stop) break;
+        if (bounded && x.base + half_beta * JunctionBound::twice_cost_floor(e, x.point) > best.cost) continue;
+        if (best.consider(x.base + beta * junction_cost<Dims>(entry, x.exit, dims), x.index, x.state))
+          stop = clearly_above(best.cost) - floor[b];
+      }
+      if (best.back == kNoBack) continue;  // dearer than the cap keeps
+      const bool continued = step.has(j);  // its continuation already bounds its cost
+      step.offer(j, best.cost, best.back, true);
+      if (!continued) cap.add(best.cost);
+    }
+  });
+}
+
+// Offers the joins into `targets` (the entries of `diviseme` when set, else any states).
+// With beta = 0 (or no features) C drops out and the cheapest active wins every join.
+void offer_joins(const PhoneGraph& graph, const std::vector<Active>& prev, std::span<const StateId> targets,
+                 std::optional<Diviseme> diviseme, const SearchOptions& options, CapLimit& cap, StepBuilder& step,
+                 JoinScratch& scratch) {
   if (targets.empty() || prev.empty()) return;
-  if (beta == 0.0 || !graph.has_junction_features()) {
+  if (options.beta == 0.0 || !graph.has_junction_features()) {
     const auto best = std::min_element(prev.begin(), prev.end(), better);
     const auto back = static_cast<std::uint32_t>(best - prev.begin());
     for (StateId j : targets) step.offer(j, best->cost + 1.0, back, true);
     return;
   }
-  // C(i, j) = |entry_j - exit_i|^2 / 2 for all pairs at once: |e|^2 + |x|^2 - 2 e.x.
-  const auto& f = graph.junction();
-  const auto dims = f.entry.cols();
-  Eigen::MatrixXf exits(static_cast<Eigen::Index>(prev.size()), dims);
-  Eigen::MatrixXf entries(static_cast<Eigen::Index>(targets.size()), dims);
-  for (std::size_t a = 0; a < prev.size(); ++a) exits.row(static_cast<Eigen::Index>(a)) = f.exit.row(prev[a].state);
-  for (std::size_t b = 0; b < targets.size(); ++b) entries.row(static_cast<Eigen::Index>(b)) = f.entry.row(targets[b]);
-  Eigen::MatrixXf cross = entries * exits.transpose();  // targets x prev
-  const Eigen::VectorXf en = entries.rowwise().squaredNorm();
-  const Eigen::VectorXf ex = exits.rowwise().squaredNorm();
-  for (std::size_t b = 0; b < targets.size(); ++b) {
-    double best = std::numeric_limits<double>::infinity();
-    std::uint32_t back = 0;
-    for (std::size_t a = 0; a < prev.size(); ++a) {
-      const auto bi = static_cast<Eigen::Index>(b), ai = static_cast<Eigen::Index>(a);
-      const float c = std::max(0.0f, 0.5f * (en(bi) + ex(ai) - 2.0f * cross(bi, ai)));
-      const double cost = prev[a].cost + 1.0 + beta * c;
-      if (cost < best) best = cost, back = static_cast<std::uint32_t>(a);
-    }
-    step.offer(targets[b], best, back, true);
-  }
+  if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, step);
+  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, options.max_active, cap, step, scratch);
 }
 
 void prune(std::vector<Active>& actives, std::optional<std::size_t> cap) {
@@ -116,27 +295,26 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   prune(steps[0], options.max_active);
   result.stats.active_per_step.push_back(steps[0].size());
 
+  CapLimit cap(options.max_active);
+  JoinScratch scratch;
   for (std::size_t t = 1; t < targets.size(); ++t) {
     const auto& prev = steps[t - 1];
+    cap.clear();
     // Within a recording: the next phone, free.
     for (std::uint32_t a = 0; a < prev.size(); ++a) {
       const StateId i = prev[a].state;
-      if (graph.has_child(i) && graph.state(i + 1).viseme == targets[t])
+      if (graph.has_child(i) && graph.state(i + 1).viseme == targets[t]) {
         builder.offer(i + 1, prev[a].cost, a, false);
+        cap.add(prev[a].cost);
+      }
     }
-    // Across recordings: states whose parent looks like the phone we leave. Every join costs at
-    // least the cheapest previous cost + 1, so when the cap is already filled by continuations
-    // strictly cheaper than that, no join can survive pruning: skip them (exact, and the common
-    // case inside long units, where the junction costs dominate the search time).
-    const double join_floor =
-        std::min_element(prev.begin(), prev.end(), better)->cost + 1.0;
-    if (!options.max_active ||
-        builder.count_below(join_floor) < std::max<std::size_t>(*options.max_active, 1))
-      offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), options.beta, builder);
+    // Across recordings: states whose parent looks like the phone we leave.
+    offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), Diviseme{targets[t - 1], targets[t]}, options,
+                cap, builder, scratch);
     steps[t] = builder.take();
     if (steps[t].empty()) {  // the voice never recorded this diviseme: join anywhere that matches
       ++result.stats.hard_joins;
-      offer_joins(graph, prev, graph.with_viseme(targets[t]), options.beta, builder);
+      offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, cap, builder, scratch);
       steps[t] = builder.take();
     }
     prune(steps[t], options.max_active);

@@ -81,10 +81,12 @@ synth::SynthesisOptions options_of(const benchmark::State& state) {
   synth::SynthesisOptions o;
   o.search.beta = static_cast<double>(state.range(0)) / 100.0;
   if (state.range(1) > 0) o.search.max_active = static_cast<std::size_t>(state.range(1));
+  o.search.prune_joins = state.range(2) != 0;
   return o;
 }
 
-// Phones -> 60 fps PCA frames and tongue. Args: beta x 100, cap (0 = none).
+// Phones -> 60 fps PCA frames and tongue. Args: beta x 100, cap (0 = none), prune joins (1) or
+// evaluate every join (0: the reference search, identical results).
 void BM_Synthesize(benchmark::State& state) {
   const World& w = world();
   const auto options = options_of(state);
@@ -95,7 +97,13 @@ void BM_Synthesize(benchmark::State& state) {
   }
   report(state, s);
 }
-BENCHMARK(BM_Synthesize)->Args({0, 0})->Args({0, 16})->Args({10, 0})->Args({10, 16})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Synthesize)
+    ->ArgNames({"beta100", "cap", "prune"})
+    ->Args({0, 0, 1})->Args({0, 16, 1})
+    ->Args({10, 0, 0})->Args({10, 0, 1})
+    ->Args({10, 64, 0})->Args({10, 64, 1})  // the `say` default
+    ->Args({10, 16, 0})->Args({10, 16, 1})
+    ->Unit(benchmark::kMillisecond);
 
 // Phones -> FAP frames at 25 fps (what `say` writes, without TTS and file output).
 void BM_PhonesToFaps(benchmark::State& state) {
@@ -110,7 +118,10 @@ void BM_PhonesToFaps(benchmark::State& state) {
   }
   report(state, s);
 }
-BENCHMARK(BM_PhonesToFaps)->Args({0, 0})->Args({10, 16})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PhonesToFaps)
+    ->ArgNames({"beta100", "cap", "prune"})
+    ->Args({0, 0, 1})->Args({10, 64, 0})->Args({10, 64, 1})->Args({10, 16, 1})
+    ->Unit(benchmark::kMillisecond);
 
 // The search is over the whole utterance (Viterbi back-trace), so the first frame exists only
 // when the sentence is synthesised: time to first frame = synthesis + one frame of FAPs.
@@ -123,7 +134,10 @@ void BM_TimeToFirstFrame(benchmark::State& state) {
     benchmark::DoNotOptimize(first.data());
   }
 }
-BENCHMARK(BM_TimeToFirstFrame)->Args({0, 0})->Args({10, 16})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TimeToFirstFrame)
+    ->ArgNames({"beta100", "cap", "prune"})
+    ->Args({0, 0, 1})->Args({10, 64, 0})->Args({10, 64, 1})->Args({10, 16, 1})
+    ->Unit(benchmark::kMillisecond);
 
 // PCA -> FAP for 600 frames (10 s at 60 fps): the restricted basis against reconstructing every
 // mesh vertex and then reading the feature points.

@@ -70,25 +70,51 @@ void BM_Search(benchmark::State& state) {
       state.range(1) > 0 ? std::optional<std::size_t>(static_cast<std::size_t>(state.range(1))) : std::nullopt;
   SearchResult r;
   for (auto _ : state) {
-    r = unit_search(*w.graph, w.targets, {beta, cap});
+    r = unit_search(*w.graph, w.targets, {beta, cap, state.range(2) != 0});
     benchmark::DoNotOptimize(r.cost);
   }
   report(state, r);
 }
-// Args: beta x 100, cap (0 = none).
-BENCHMARK(BM_Search)->Args({0, 0})->Args({10, 0})->Args({10, 64})->Args({10, 16})->Unit(benchmark::kMillisecond);
+// Args: beta x 100, cap (0 = none), prune joins (1) or evaluate every join (0: the reference).
+BENCHMARK(BM_Search)
+    ->ArgNames({"beta100", "cap", "prune"})
+    ->Args({0, 0, 1})
+    ->Args({10, 0, 0})->Args({10, 0, 1})
+    ->Args({10, 64, 0})->Args({10, 64, 1})
+    ->Args({10, 16, 0})->Args({10, 16, 1})
+    ->Unit(benchmark::kMillisecond);
 
 void BM_SearchAndRender(benchmark::State& state) {
   const World& w = world();
   SearchResult r;
   for (auto _ : state) {
-    r = unit_search(*w.graph, w.targets, {0.1, 16});
+    r = unit_search(*w.graph, w.targets, {0.1, 64});
     auto y = render_units(*w.graph, w.frames, r, w.timing);
     benchmark::DoNotOptimize(y.data());
   }
   report(state, r);
 }
 BENCHMARK(BM_SearchAndRender)->Unit(benchmark::kMillisecond);
+
+// What opening a voice pays for the search. Arg 0: the graph's indices alone; 1: the junction
+// features alone (from the PCA frames); 2: both and the junction bound (every exit on every axis
+// of its class), i.e. what Voice::open does. The bound costs (2) - (1) - (0).
+void BM_GraphOpen(benchmark::State& state) {
+  const World& w = world();
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      PhoneGraph g(w.states);
+      benchmark::DoNotOptimize(g.size());
+    } else if (state.range(0) == 1) {
+      JunctionFeatures f = junction_features(w.states, w.frames);
+      benchmark::DoNotOptimize(f.entry.data());
+    } else {
+      PhoneGraph g(w.states, junction_features(w.states, w.frames));
+      benchmark::DoNotOptimize(g.size());
+    }
+  }
+}
+BENCHMARK(BM_GraphOpen)->ArgName("what")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -1,5 +1,6 @@
 // The Viterbi unit search against brute force on small random graphs, and its contracts.
 #include "fapcast/synth/unit_search.hpp"
+#include "support/synthetic_voice_graph.hpp"
 
 #include <gtest/gtest.h>
 
@@ -128,6 +129,73 @@ TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Betas, UnitSearchBruteForce, ::testing::Values(0.0, 0.05, 1.0));
+
+// The pruned join evaluation (the default) against the reference that evaluates every pair:
+// identical states, units, cost (to the bit) and active counts, on random graphs of random shape
+// and spread, with and without caps and hard joins.
+TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
+  const auto seed = test_seed();
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> classes(3, 9), k(1, 9), recordings(6, 24), phones(3, 12), tlen(1, 30);
+  const std::optional<std::size_t> caps[] = {std::nullopt, 1, 3, 16, 64};
+  const double betas[] = {0.02, 0.1, 1.0};
+  const float noises[] = {0.0f, 0.05f, 1.0f};
+  int searches = 0, hard = 0;
+  for (int graph = 0; graph < 60; ++graph) {
+    std::vector<VisemeClass> alphabet;
+    for (int c = 0, n = classes(rng); c < n; ++c) alphabet.push_back(V(c));
+    const auto voice = test::synthetic_voice_graph(static_cast<std::uint32_t>(recordings(rng)), phones(rng), 1 + graph % 3, k(rng),
+                                                   rng(), noises[graph % 3], alphabet);
+    for (int target = 0; target < 5; ++target) {
+      std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
+      for (auto& v : targets) v = alphabet[std::uniform_int_distribution<std::size_t>(0, alphabet.size() - 1)(rng)];
+      bool covered = true;
+      for (auto v : targets) covered = covered && !voice.graph->with_viseme(v).empty();
+      if (!covered) continue;
+      for (double beta : betas)
+        for (auto cap : caps) {
+          const SearchResult reference = unit_search(*voice.graph, targets, {beta, cap, false});
+          const SearchResult pruned = unit_search(*voice.graph, targets, {beta, cap, true});
+          const std::string where = "graph " + std::to_string(graph) + " target " + std::to_string(target) +
+                                    " beta " + std::to_string(beta) + " cap " + (cap ? std::to_string(*cap) : "none") +
+                                    "; reproduce with FAPCAST_SEED=" + std::to_string(seed);
+          ASSERT_EQ(pruned.cost, reference.cost) << where;
+          ASSERT_EQ(pruned.states, reference.states) << where;
+          ASSERT_EQ(pruned.units, reference.units) << where;
+          ASSERT_EQ(pruned.stats.active_per_step, reference.stats.active_per_step) << where;
+          ASSERT_EQ(pruned.stats.hard_joins, reference.stats.hard_joins) << where;
+          ++searches;
+          hard += reference.stats.hard_joins > 0;
+        }
+    }
+  }
+  EXPECT_GT(searches, 900) << "too few searches to mean anything";
+  EXPECT_GT(hard, 0) << "no search went through a hard join";
+}
+
+// The bound the pruning rests on (junction_bound.hpp) never exceeds the cost it bounds: every
+// admissible join of random graphs, at scales from 1e-6 to 1e6 and far from the origin.
+TEST(JunctionBound, NeverExceedsTheJunctionCost) {
+  std::mt19937_64 rng(test_seed());
+  int pairs = 0;
+  for (float scale : {1e-6f, 1.0f, 1e6f})
+    for (float offset : {0.0f, 1e3f})
+      for (int graph = 0; graph < 4; ++graph) {
+        auto voice = test::synthetic_voice_graph(12, 8, 1 + graph % 3, 1 + 4 * graph, rng(), 0.3f, Vs({0, 1, 2, 3}));
+        voice.frames = (voice.frames.array() * scale + offset * scale).matrix();
+        const PhoneGraph g(voice.states, junction_features(voice.states, voice.frames));
+        const auto& bound = g.junction_bound();
+        for (StateId j = 0; j < g.size(); ++j) {
+          if (!g.has_parent(j)) continue;
+          for (StateId i : g.with_viseme(g.state(j - 1).viseme)) {
+            const float floor = JunctionBound::twice_cost_floor(bound.entry(j), bound.exit(i, g.state(j).viseme));
+            ASSERT_LE(floor, 2.0f * junction_cost(g, i, j)) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
+            ++pairs;
+          }
+        }
+      }
+  EXPECT_GT(pairs, 10000);
+}
 
 TEST(UnitSearch, PrefersOneLongUnitOverPieces) {
   std::mt19937_64 rng(1);

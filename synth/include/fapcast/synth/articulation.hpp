@@ -39,8 +39,11 @@ struct Dominance {
   float theta_before_per_s;  // rate of decay before the centre (anticipation), 1/s^c
   float theta_after_per_s;   // rate of decay after the centre (carry-over), 1/s^c
   float c;                   // shape exponent, > 0 (1: exponential; 2: plateau then fall)
-  // Dominance at tau seconds from the phone centre.
-  double at(double tau_s) const;
+  // Dominance at tau seconds from the phone centre: alpha * falloff(tau_s).
+  double at(double tau_s) const { return alpha * falloff(tau_s); }
+  // exp(-theta * |tau|^c), the part that does not depend on alpha (shared by dominances that
+  // differ only in alpha, such as the tongue's tip and body).
+  double falloff(double tau_s) const;
 };
 
 // One row of the articulation table.

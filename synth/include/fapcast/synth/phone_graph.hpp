@@ -1,6 +1,7 @@
 #pragma once
 // The phone graph of the paper's section 3.7: one horizontal chain of phone states per recorded
 // utterance, indexed so that the unit search never scans the corpus.
+#include "fapcast/synth/junction_bound.hpp"
 #include "fapcast/synth/viseme.hpp"
 
 #include <Eigen/Core>
@@ -30,16 +31,41 @@ struct PhoneState {
 
 // Boundary shape of a state for the junction cost (see junction_cost): `entry` is
 // [x0, x1 - 2 x0] of its first two frames, `exit` is [2 x_-1 - x_-2, -x_-1] of its last two,
-// where x are the PCA coefficient vectors (k each, so both have 2k entries).
+// where x are the PCA coefficient vectors (k each, so both have 2k entries). One row per state,
+// row-major, zero-padded to a multiple of kJunctionLanes columns: a state's boundary is one
+// contiguous run of floats, and the padding adds nothing to any cost (zero in every row).
+inline constexpr Eigen::Index kJunctionLanes = 8;
+using JunctionRows = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 struct JunctionFeatures {
-  Eigen::MatrixXf entry;  // states x 2k
-  Eigen::MatrixXf exit;   // states x 2k
+  JunctionRows entry;  // states x (2k rounded up to kJunctionLanes)
+  JunctionRows exit;   // states x (2k rounded up to kJunctionLanes)
 };
 
 // Makes the junction features of every state from the voice's PCA frames (frames x k). A state
 // shorter than two frames borrows frames from its neighbours in the recording.
 JunctionFeatures junction_features(std::span<const PhoneState> states,
                                    const Eigen::MatrixXf& pca_frames);
+
+// C of a join from the state whose exit row is `exit` into the state whose entry row is `entry`
+// (`dims` floats each, a multiple of kJunctionLanes): half the squared distance of the rows, i.e.
+// the mean squared second difference over the junction. Summed in kJunctionLanes fixed lanes, so
+// every caller gets the same float to the bit; Dims > 0 fixes the width at compile time (the
+// search's hot loop), Dims = 0 reads it from `dims`.
+template <Eigen::Index Dims = 0>
+inline float junction_cost(const float* entry, const float* exit, Eigen::Index dims = Dims) {
+  static_assert(kJunctionLanes == 8 && Dims % kJunctionLanes == 0, "two blocks of four lanes");
+  using Four = Eigen::Array4f;
+  const Eigen::Index width = Dims > 0 ? Dims : dims;
+  Four low = Four::Zero(), high = Four::Zero();  // lanes 0-3 and 4-7
+  for (Eigen::Index d = 0; d < width; d += kJunctionLanes) {
+    const Four g0 = Eigen::Map<const Four>(entry + d) - Eigen::Map<const Four>(exit + d);
+    const Four g1 = Eigen::Map<const Four>(entry + d + 4) - Eigen::Map<const Four>(exit + d + 4);
+    low += g0 * g0;
+    high += g1 * g1;
+  }
+  const Four lane = low + high;  // lane l holds lanes l and l + 4
+  return 0.5f * ((lane[0] + lane[2]) + (lane[1] + lane[3]));
+}
 
 class PhoneGraph {
  public:
@@ -67,10 +93,13 @@ class PhoneGraph {
 
   bool has_junction_features() const { return features_.entry.rows() > 0; }
   const JunctionFeatures& junction() const { return features_; }
+  // The search's lower bound on junction costs (empty without features).
+  const JunctionBound& junction_bound() const { return bound_; }
 
  private:
   std::vector<PhoneState> states_;
   JunctionFeatures features_;
+  JunctionBound bound_;
   // CSR-style indices: by_viseme_[offsets_[v] .. offsets_[v+1]) and the same for divisemes.
   std::vector<std::uint32_t> viseme_offsets_;
   std::vector<StateId> by_viseme_;

@@ -15,6 +15,10 @@ struct SearchOptions {
   double beta = 0.0;
   // Keep at most this many active states per target phone (the cheapest); nullopt = all.
   std::optional<std::size_t> max_active;
+  // Skip the joins that provably cannot win or survive the cap (spec/search.md, "Pruning the
+  // joins"). The result is identical either way, to the bit; false evaluates every pair of
+  // active state and entry state, the reference the tests and the benchmark compare against.
+  bool prune_joins = true;
 };
 
 // A run of consecutive states of one recording that covers consecutive target phones.

@@ -81,17 +81,18 @@ std::size_t plan_intra_period(const std::vector<FapFrame>& frames, std::size_t k
   header.frame_number = static_cast<std::uint16_t>(k);
   FbaPrediction prediction;
   prediction.predictor = header.predictors;
-  detail::reconstruct(prediction, levels, first.mask, q, true);
+  const FbaCodedFaps faps(first.mask, header.ranges, q);  // the steps (the P ranges come below)
+  detail::reconstruct(prediction, levels, faps, true);
   LevelExtremes extremes;
   std::size_t end = k + 1;
   while (end < nominal_end) {
-    const detail::FbaLevels d = detail::predicted_levels(prediction, first.mask, q, frames[end]);
+    const detail::FbaLevels d = detail::predicted_levels(prediction, faps, frames[end]);
     LevelExtremes trial = extremes;
     trial.add(d);
     auto ranges = header.ranges;
     if (!detail::size_predicted_fields(trial, first.mask, q, ranges)) break;
     extremes = trial;
-    detail::reconstruct(prediction, d, first.mask, q, false);
+    detail::reconstruct(prediction, d, faps, false);
     ++end;
   }
   const bool sized = detail::size_predicted_fields(extremes, first.mask, q, header.ranges);
@@ -132,8 +133,8 @@ std::vector<std::uint8_t> encode_fba(const FapSequence& seq, const FbaEncoderOpt
     out.start_code(kFbaPlaneStartCode);
     detail::write_plane(state, seq.frames[k], &header, out);
     for (std::size_t j = k + 1; j < end; ++j) {
-      assert(detail::levels_fit(detail::predicted_levels(state.prediction, state.mask, state.fap_quant, seq.frames[j]),
-                                seq.frames[j].mask, state, false));
+      assert(seq.frames[j].mask == state.mask &&
+             detail::levels_fit(detail::predicted_levels(state.prediction, state.coded, seq.frames[j]), state.coded, false));
       detail::write_plane(state, seq.frames[j], nullptr, out);
     }
     out.align();

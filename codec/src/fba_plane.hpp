@@ -20,13 +20,11 @@ using FbaLevels = std::array<std::int32_t, kFapCount>;
 // The levels of `frame` coded as an intra plane at `fap_quant`.
 FbaLevels intra_levels(const FapFrame& frame, int fap_quant);
 // The levels of `frame` coded as a P plane: its differences to the predictions.
-FbaLevels predicted_levels(const FbaPrediction& prediction, const FapMask& mask, int fap_quant,
-                           const FapFrame& frame);
+FbaLevels predicted_levels(const FbaPrediction& prediction, const FbaCodedFaps& faps, const FapFrame& frame);
 // Moves the reconstructed values on by one plane's levels (closed loop: both sides do the same).
-void reconstruct(FbaPrediction& prediction, const FbaLevels& levels, const FapMask& mask, int fap_quant,
-                 bool intra);
-// Whether `levels` fit [-levels(min_field), levels(max_field)] for every masked FAP.
-bool levels_fit(const FbaLevels& levels, const FapMask& mask, const FbaCodingState& state, bool intra);
+void reconstruct(FbaPrediction& prediction, const FbaLevels& levels, const FbaCodedFaps& faps, bool intra);
+// Whether `levels` fit the I (or P) range of every coded FAP.
+bool levels_fit(const FbaLevels& levels, const FbaCodedFaps& faps, bool intra);
 
 // Checks what the encoder cannot code: viseme/expression fields out of their ranges, and values
 // whose intra level no 5-bit range field reaches. On error `detail` names frame and FAP.

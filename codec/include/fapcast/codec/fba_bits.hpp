@@ -94,7 +94,6 @@ class FbaBitReader {
   // of its own). Otherwise, and near the end of the data, bit by bit.
   static constexpr int kFastBits = 16;
   std::uint32_t read_bits(int count, bool allow_past_end) {
-    if (count == 0) return 0;
     const std::uint64_t at = pos_.raw_bits;
     if (at + static_cast<std::uint64_t>(count) <= size_bits_) {
       const std::uint32_t w = raw_window(at, count);
@@ -108,12 +107,17 @@ class FbaBitReader {
     }
     return get_slow(count, allow_past_end);
   }
-  // `count` (1..kFastBits) raw bits at raw bit `at`, most significant first, zeros past the end.
+  // `count` (0..kFastBits) raw bits at raw bit `at`, most significant first, zeros past the end.
   std::uint32_t raw_window(std::uint64_t at, int count) const {
     const std::uint64_t byte = at / 8;
     std::uint32_t w = 0;  // the 4 bytes from `byte`, big-endian, zeros past the end
-    for (std::uint64_t i = 0; i < 4; ++i) w = (w << 8) | (byte + i < bytes_.size() ? bytes_[byte + i] : 0u);
-    return (w << (at % 8)) >> (32 - count);
+    if (byte + 4 <= bytes_.size()) {
+      const std::uint8_t* b = bytes_.data() + byte;  // one load (compilers fuse the bytes)
+      w = std::uint32_t{b[0]} << 24 | std::uint32_t{b[1]} << 16 | std::uint32_t{b[2]} << 8 | b[3];
+    } else {
+      for (std::uint64_t i = 0; i < 4; ++i) w = (w << 8) | (byte + i < bytes_.size() ? bytes_[byte + i] : 0u);
+    }
+    return ((w << (at % 8)) >> (31 - count)) >> 1;  // two shifts: count 0 gives 0
   }
   std::uint32_t get_slow(int count, bool allow_past_end);
   int raw_bit(bool allow_past_end);

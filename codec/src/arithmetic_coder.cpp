@@ -21,8 +21,8 @@ constexpr auto kTotalReciprocals = [] {
 }();
 
 // kTailIncrements[k]: kIncrement on the first k + 1 lanes of a block, 0 on the rest.
-constexpr auto kTailIncrements = [] {
-  std::array<std::array<std::uint16_t, FrequencyModel::kLanes>, FrequencyModel::kLanes> t{};
+const auto kTailIncrements = [] {
+  std::array<FrequencyModel::Lanes, FrequencyModel::kLanes> t{};
   for (std::size_t k = 0; k < t.size(); ++k)
     for (std::size_t j = 0; j <= k; ++j) t[k][j] = FrequencyModel::kIncrement;
   return t;
@@ -61,16 +61,11 @@ void FrequencyModel::halve() {
 }
 
 void FrequencyModel::add_increment(int s) {
-  std::uint16_t* c = cumulative_.data();
-  constexpr auto lanes = static_cast<std::size_t>(kLanes);
   const auto last = static_cast<std::size_t>(s);
-  const std::size_t whole = last / lanes * lanes;
-  for (std::size_t b = 0; b < whole; b += lanes) {
-    for (std::size_t j = 0; j < lanes; ++j) c[b + j] = static_cast<std::uint16_t>(c[b + j] + kIncrement);
-  }
-  const auto& tail = kTailIncrements[last - whole];
-  for (std::size_t j = 0; j < lanes; ++j) c[whole + j] = static_cast<std::uint16_t>(c[whole + j] + tail[j]);
-  total_reciprocal_ = kTotalReciprocals[c[0]];
+  const std::size_t whole = last / kLanes * kLanes;
+  for (std::size_t b = 0; b < whole; b += kLanes) store(b, load(b) + kIncrement);
+  store(whole, load(whole) + kTailIncrements[last - whole]);
+  total_reciprocal_ = kTotalReciprocals[cumulative_[0]];
 }
 
 void ArithmeticEncoder::bit_plus_follow(int bit) {

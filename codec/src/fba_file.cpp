@@ -208,9 +208,8 @@ FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes) {
     for (;;) {
       ++run_planes;
       ++planes;
-      FapFrame frame;
       detail::PlaneInfo info;
-      e = detail::read_plane(state, in, frame, info);
+      e = detail::read_plane(state, in, frames.emplace_back(), info);  // decoded in place
       if (!e && report.frames_skipped + run_skipped + static_cast<std::uint64_t>(info.skip_frames) >
                     detail::kMaxSkipFrames + planes) {
         e = fba_errc::skip_too_long;  // more held frames than the file could justify
@@ -218,9 +217,11 @@ FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes) {
       }
       if (e) break;
       if (run_planes == 1) first = info;
-      for (int i = 0; i < info.skip_frames; ++i) frames.push_back(frames.empty() ? FapFrame{} : frames.back());  // held
+      if (info.skip_frames > 0) {  // held copies of the frame before, ahead of the new one
+        const FapFrame held = frames.size() >= 2 ? frames[frames.size() - 2] : FapFrame{};
+        frames.insert(frames.end() - 1, static_cast<std::size_t>(info.skip_frames), held);
+      }
       run_skipped += static_cast<std::uint64_t>(info.skip_frames);
-      frames.push_back(frame);
       if (in.at_end()) break;
       if (in.peek_bit() == 1) {
         in.expect_end();
@@ -252,6 +253,12 @@ FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes) {
       if (lost > 0 && affordable(lost)) lose(first_slot, lost);
     } else if (in_loss && affordable(pending_lost)) {
       lose(first_slot, pending_lost);
+    }
+    if (report.frames_decoded == 0) {
+      // The first good run says about how many frames a byte holds: room for the whole file at
+      // that rate saves growing the output (never more than the file could describe).
+      const std::uint64_t estimate = frames.size() * bytes.size() / next;
+      frames.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(estimate + estimate / 16, detail::kMaxSkipFrames + 2 * bytes.size())));
     }
     in_loss = false;
     pending_lost = 0;

@@ -13,6 +13,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 namespace fapcast::codec {
@@ -25,7 +26,10 @@ class FrequencyModel {
   static constexpr int kIncrement = 8;  // fapcast; the notes' codec adds 1
   // The table is stored in blocks of kLanes entries, zero-padded, so that searching and updating
   // run over whole blocks (one 16-byte vector each) without a scalar tail.
-  static constexpr int kLanes = 8;
+  static constexpr std::size_t kLanes = 8;
+  // kLanes 16-bit counts in one vector register (GCC and Clang vector extension: SSE2 on x86-64,
+  // NEON on ARM, scalar code elsewhere).
+  typedef std::int16_t Lanes __attribute__((vector_size(2 * kLanes)));
 
   FrequencyModel() = default;  // no symbols (size 0): a model nothing is coded with
   explicit FrequencyModel(int size) { reset(size); }
@@ -57,17 +61,24 @@ class FrequencyModel {
   // The table descends: the answer is the number of entries above target (the total always is;
   // the zero padding never is), counted block by block without branches, one vector compare each.
   int count_above(std::uint32_t target) const {
-    const auto t = static_cast<std::int16_t>(target);  // target < total <= kMaxTotal < 2^15
-    const std::uint16_t* c = cumulative_.data();
-    std::array<std::int16_t, kLanes> above{};  // per lane; each at most kCountedEntries / kLanes
-    for (std::size_t b = 0; b < cumulative_.size(); b += kLanes) {
-      for (std::size_t j = 0; j < kLanes; ++j)
-        above[j] = static_cast<std::int16_t>(above[j] + (static_cast<std::int16_t>(c[b + j]) > t ? 1 : 0));
-    }
-    int sum = 0;
-    for (const std::int16_t a : above) sum += a;
-    return sum;
+    // 0 < target + 1 <= kMaxTotal < 2^15: the comparisons are signed 16-bit ones.
+    const Lanes t = Lanes{} + static_cast<std::int16_t>(target);
+    Lanes above{};  // per lane, minus the count (a true comparison is -1); at most 256 / kLanes
+    for (std::size_t b = 0; b < cumulative_.size(); b += kLanes) above += load(b) > t;
+    // The lanes summed as two 64-bit words of four: each lane sum stays below 2^16, and the
+    // multiplication adds the four into the top 16 bits.
+    above = -above;
+    std::array<std::uint64_t, 2> words{};
+    std::memcpy(words.data(), &above, sizeof above);
+    return static_cast<int>(((words[0] + words[1]) * 0x0001000100010001u) >> 48);
   }
+  // The block of entries from `at` (a multiple of kLanes).
+  Lanes load(std::size_t at) const {
+    Lanes v;
+    std::memcpy(&v, cumulative_.data() + at, sizeof v);
+    return v;
+  }
+  void store(std::size_t at, Lanes v) { std::memcpy(cumulative_.data() + at, &v, sizeof v); }
   int search(std::uint32_t target) const;  // binary search, for large tables
   void halve();
   // Entries 0..s grow by kIncrement: whole blocks, then the block holding s through a mask.
@@ -90,12 +101,14 @@ struct ArithmeticInterval {
 // leave at once (the first two cases), then the middle case, which repeats while low's next bit
 // is 1 and high's is 0 (each step drops that bit and keeps bit 15), at once too. The middle case
 // cannot bring back a shared top bit: low's bit 15 stays 0 and high's 1.
+// (Each count runs on a 32-bit word with a 1 planted below the bits counted, so it is never 0
+// and needs no zero test.)
 constexpr ArithmeticInterval arithmetic_renormalise(std::uint32_t low, std::uint32_t high) {
-  const int same = std::countl_zero(static_cast<std::uint16_t>(low ^ high));  // 0..16
+  const int same = std::countl_zero(((low ^ high) << 16) | 0x8000u);  // 0..16
   low = (low << same) & 0xFFFFu;
   high = ((high << same) | ((1u << same) - 1)) & 0xFFFFu;
-  const int middle = std::min(std::countl_one(static_cast<std::uint16_t>(low << 1)),
-                              std::countl_zero(static_cast<std::uint16_t>((high << 1) | 1u)));  // 0..15
+  // Leading 1s of low and leading 0s of high below bit 15, 0..15 each.
+  const int middle = std::min(std::countl_zero((~low << 17) | 0x10000u), std::countl_zero((high << 17) | 0x10000u));
   return {(low << middle) & 0x7FFFu, ((high << middle) & 0x7FFFu) | 0x8000u | ((1u << middle) - 1), same + middle};
 }
 

@@ -29,8 +29,8 @@ const auto kTailIncrements = [] {
 }();
 
 std::size_t whole_blocks(std::size_t entries) {
-  constexpr auto lanes = static_cast<std::size_t>(FrequencyModel::kLanes);
-  return (entries + lanes - 1) / lanes * lanes;
+  constexpr std::size_t pair = 2 * FrequencyModel::kLanes;
+  return (entries + pair - 1) / pair * pair;
 }
 
 }  // namespace
@@ -38,8 +38,14 @@ std::size_t whole_blocks(std::size_t entries) {
 void FrequencyModel::reset(int size) {
   assert(size >= 1 && size <= kMaxSymbols);
   size_ = size;
-  cumulative_.assign(whole_blocks(static_cast<std::size_t>(size) + 1), 0);
-  for (int i = 0; i <= size; ++i) cumulative_[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>(size - i);
+  cumulative_.resize(whole_blocks(static_cast<std::size_t>(size) + 1));
+  // Entry i is size - i (every count 1), the padding 0: a block at a time.
+  static_assert(kLanes == 8, "the lane offsets below");
+  const Lanes first = static_cast<std::int16_t>(size) - Lanes{0, 1, 2, 3, 4, 5, 6, 7};
+  for (std::size_t b = 0; b < cumulative_.size(); b += kLanes) {
+    const Lanes v = first - static_cast<std::int16_t>(b);
+    store(b, v & (v > 0));
+  }
   total_reciprocal_ = kTotalReciprocals[cumulative_[0]];
 }
 

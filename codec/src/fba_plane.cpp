@@ -131,12 +131,12 @@ void read_segments(FbaCodingState& s, bool intra, FbaBitReader& in, FapFrame& ou
     s.expression = out.expression;
   }
   if (s.coded.empty()) return;
-  FbaLevels levels{};
   ArithmeticDecoder ad(in);
-  for (const FbaCodedFap& f : s.coded) levels[f.index] = ad.decode(m.fap[f.index]) + (intra ? f.intra_min : f.predicted_min);
+  for (const FbaCodedFap& f : s.coded) {
+    reconstruct(s.prediction, f, ad.decode(m.fap[f.index]) + (intra ? f.intra_min : f.predicted_min), intra);
+    out.values[f.index] = s.prediction.r1[f.index];
+  }
   ad.finish();
-  reconstruct(s.prediction, levels, s.coded, intra);
-  for (const FbaCodedFap& f : s.coded) out.values[f.index] = s.prediction.r1[f.index];
 }
 
 }  // namespace
@@ -161,18 +161,20 @@ FbaLevels predicted_levels(const FbaPrediction& p, const FbaCodedFaps& faps, con
   return levels;
 }
 
+void reconstruct(FbaPrediction& p, const FbaCodedFap& f, std::int32_t level, bool intra) {
+  const std::size_t i = f.index;
+  // 64-bit, then saturated: a hostile stream may pile up P steps; an encoder's never do.
+  const std::int64_t delta = std::int64_t{level} * f.step;
+  const std::int64_t value = intra ? delta : fba_predict(p.predictor[i], p.r1[i], p.r2[i], p.r3[i]) + delta;
+  const auto r = static_cast<std::int32_t>(
+      std::clamp<std::int64_t>(value, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
+  p.r3[i] = intra ? r : p.r2[i];
+  p.r2[i] = intra ? r : p.r1[i];
+  p.r1[i] = r;
+}
+
 void reconstruct(FbaPrediction& p, const FbaLevels& levels, const FbaCodedFaps& faps, bool intra) {
-  for (const FbaCodedFap& f : faps) {
-    const std::size_t i = f.index;
-    // 64-bit, then saturated: a hostile stream may pile up P steps; an encoder's never do.
-    const std::int64_t delta = std::int64_t{levels[i]} * f.step;
-    const std::int64_t value = intra ? delta : fba_predict(p.predictor[i], p.r1[i], p.r2[i], p.r3[i]) + delta;
-    const auto r = static_cast<std::int32_t>(
-        std::clamp<std::int64_t>(value, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
-    p.r3[i] = intra ? r : p.r2[i];
-    p.r2[i] = intra ? r : p.r1[i];
-    p.r1[i] = r;
-  }
+  for (const FbaCodedFap& f : faps) reconstruct(p, f, levels[f.index], intra);
 }
 
 bool levels_fit(const FbaLevels& levels, const FbaCodedFaps& faps, bool intra) {

@@ -21,8 +21,10 @@ using FbaLevels = std::array<std::int32_t, kFapCount>;
 FbaLevels intra_levels(const FapFrame& frame, int fap_quant);
 // The levels of `frame` coded as a P plane: its differences to the predictions.
 FbaLevels predicted_levels(const FbaPrediction& prediction, const FbaCodedFaps& faps, const FapFrame& frame);
-// Moves the reconstructed values on by one plane's levels (closed loop: both sides do the same).
+// Moves the reconstructed values on by one plane's levels (closed loop: both sides do the same),
+// or one FAP's.
 void reconstruct(FbaPrediction& prediction, const FbaLevels& levels, const FbaCodedFaps& faps, bool intra);
+void reconstruct(FbaPrediction& prediction, const FbaCodedFap& fap, std::int32_t level, bool intra);
 // Whether `levels` fit the I (or P) range of every coded FAP.
 bool levels_fit(const FbaLevels& levels, const FbaCodedFaps& faps, bool intra);
 

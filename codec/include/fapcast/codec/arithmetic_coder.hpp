@@ -24,8 +24,9 @@ class FrequencyModel {
   static constexpr int kMaxSymbols = 4096;      // > 2*1860+1, the widest FAP range
   static constexpr std::uint16_t kMaxTotal = 16383;
   static constexpr int kIncrement = 8;  // fapcast; the notes' codec adds 1
-  // The table is stored in blocks of kLanes entries, zero-padded, so that searching and updating
-  // run over whole blocks (one 16-byte vector each) without a scalar tail.
+  // The table is stored in blocks of kLanes entries (one 16-byte vector each), zero-padded to an
+  // even number of blocks, so that searching and updating run over whole blocks without a scalar
+  // tail.
   static constexpr std::size_t kLanes = 8;
   // kLanes 16-bit counts in one vector register (GCC and Clang vector extension: SSE2 on x86-64,
   // NEON on ARM, scalar code elsewhere).
@@ -63,14 +64,21 @@ class FrequencyModel {
   int count_above(std::uint32_t target) const {
     // 0 < target + 1 <= kMaxTotal < 2^15: the comparisons are signed 16-bit ones.
     const Lanes t = Lanes{} + static_cast<std::int16_t>(target);
-    Lanes above{};  // per lane, minus the count (a true comparison is -1); at most 256 / kLanes
-    for (std::size_t b = 0; b < cumulative_.size(); b += kLanes) above += load(b) > t;
-    // The lanes summed as two 64-bit words of four: each lane sum stays below 2^16, and the
+    // Two blocks a step, into two sums (two short dependency chains instead of one long one).
+    Lanes above{}, above2{};  // per lane, minus the count (a true comparison is -1); at most 256 / kLanes
+    for (std::size_t b = 0; b < cumulative_.size(); b += 2 * kLanes) {
+      above += load(b) > t;
+      above2 += load(b + kLanes) > t;
+    }
+    above += above2;
+    // The lanes summed as 64-bit words of four: each lane sum stays below 2^16, and the
     // multiplication adds the four into the top 16 bits.
     above = -above;
-    std::array<std::uint64_t, 2> words{};
+    std::array<std::uint64_t, kLanes / 4> words{};
     std::memcpy(words.data(), &above, sizeof above);
-    return static_cast<int>(((words[0] + words[1]) * 0x0001000100010001u) >> 48);
+    std::uint64_t sum = 0;
+    for (const std::uint64_t w : words) sum += w;
+    return static_cast<int>((sum * 0x0001000100010001u) >> 48);
   }
   // The block of entries from `at` (a multiple of kLanes).
   Lanes load(std::size_t at) const {

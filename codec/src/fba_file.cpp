@@ -7,6 +7,8 @@
 #include <bit>
 #include <cassert>
 #include <limits>
+#include <optional>
+#include <vector>
 
 namespace fapcast::codec {
 namespace {
@@ -23,39 +25,72 @@ void check(const FapFrame& frame, int fap_quant, std::uint64_t index) {
   if (auto e = detail::check_codable(frame, fap_quant, index, detail)) refuse(e, detail);
 }
 
+// log2(x) in 1/256 bit for x >= 1, interpolated linearly between powers of two (at most 0.09
+// bit low; integers only, so every platform chooses alike).
+std::int64_t log2_q8(std::uint32_t x) {
+  const int e = std::bit_width(x) - 1;
+  return std::int64_t{e} * 256 + ((std::int64_t{x} - (std::int64_t{1} << e)) * 256 >> e);
+}
+
+// About the bits the P levels `levels` of one FAP cost: the smallest P range fields covering
+// them, and the adaptive model over that range coding them one after another (in 1/256 bit).
+// Stops counting past `enough`; nullopt when no 5-bit field covers them.
+std::optional<std::int64_t> predicted_cost(const std::vector<std::int32_t>& levels, int q, std::int64_t enough) {
+  std::int32_t lo = 0, hi = 0;
+  for (const std::int32_t l : levels) {
+    lo = std::min(lo, l);
+    hi = std::max(hi, l);
+  }
+  const auto min_field = fba_range_field(-std::int64_t{lo}, q), max_field = fba_range_field(hi, q);
+  if (!min_field || !max_field) return std::nullopt;
+  const int offset = fba_range_levels(*min_field, q);
+  FrequencyModel model(offset + fba_range_levels(*max_field, q) + 1);
+  std::int64_t cost = 0;
+  for (std::size_t j = 0; j < levels.size() && cost < enough; ++j) {
+    const int s = levels[j] + offset;
+    cost += log2_q8(model.total()) - log2_q8(model.cumulative(s) - model.cumulative(s + 1));
+    model.update(s);
+  }
+  return cost;
+}
+
 // fapcast: the predictor of each FAP for the P planes of frames [k + 1, end), chosen by coding
-// them closed loop with every predictor and counting about 2 bits per binary digit of a level.
-// All 0 (no predictor fields sent) unless the choice saves more bits than the fields cost.
+// them closed loop with every predictor and costing the levels as the adaptive model would
+// (predicted_cost). All 0 (no predictor fields sent) unless the choice saves more than the
+// fields cost.
 std::array<std::uint8_t, kFapCount> choose_predictors(const std::vector<FapFrame>& frames, std::size_t k,
                                                       std::size_t end, const FapMask& mask, int q) {
   std::array<std::uint8_t, kFapCount> best{};
-  std::int64_t saved = 0, fields = 1;
+  std::int64_t saved = 0, fields = 256;  // 1/256 bit: the is_predictor flag, then 5 bits a FAP
+  std::vector<std::int32_t> levels;
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
     if (!mask.test(n)) continue;
-    fields += 5;
+    fields += 5 * 256;
     const std::size_t i = static_cast<std::size_t>(n - 1);
     const int step = fba_step(n, q);
-    std::int64_t plain = 0, best_bits = 0;
+    constexpr std::int64_t kUncodable = std::numeric_limits<std::int64_t>::max();
+    std::int64_t plain = 0, best_cost = kUncodable;
     for (int predictor = 0; predictor <= kMaxPredictor; ++predictor) {
       const std::int32_t first = fba_quantise(frames[k].values[i], step) * step;
       std::int32_t r1 = first, r2 = first, r3 = first;
-      std::int64_t bits = 0;
-      for (std::size_t j = k + 1; j < end && (predictor == 0 || bits < best_bits); ++j) {
+      levels.clear();
+      for (std::size_t j = k + 1; j < end; ++j) {
         const std::int32_t p = fba_predict(predictor, r1, r2, r3);
         const std::int32_t level = fba_quantise(std::int64_t{frames[j].values[i]} - p, step);
-        bits += 1 + 2 * static_cast<std::int64_t>(std::bit_width(static_cast<std::uint32_t>(level < 0 ? -level : level)));
+        levels.push_back(level);
         r3 = r2;
         r2 = r1;
         r1 = static_cast<std::int32_t>(std::clamp<std::int64_t>(std::int64_t{p} + std::int64_t{level} * step, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
       }
+      const std::int64_t cost = predicted_cost(levels, q, best_cost).value_or(kUncodable);
       if (predictor == 0) {
-        plain = best_bits = bits;
-      } else if (bits < best_bits) {
-        best_bits = bits;
+        plain = best_cost = cost;
+      } else if (cost < best_cost) {
+        best_cost = cost;
         best[i] = static_cast<std::uint8_t>(predictor);
       }
     }
-    saved += plain - best_bits;
+    saved += std::min(plain - best_cost, std::int64_t{1} << 40);  // plain may be uncodable (the period is cut then)
   }
   if (saved <= fields) best = {};
   return best;
@@ -142,6 +177,12 @@ std::vector<std::uint8_t> encode_fba(const FapSequence& seq, const FbaEncoderOpt
   }
   out.start_code(kFbaEndCode);
   return std::move(out.bytes());
+}
+
+FbaEncoderOptions fba_archive_options(int fap_quant, FrameRate rate) {
+  const std::uint64_t frames = rate.valid() ? std::uint64_t{kFbaArchiveIntraSeconds} * rate.numerator / rate.denominator : 1;
+  const auto period = static_cast<int>(std::clamp<std::uint64_t>(frames, 1, std::numeric_limits<int>::max()));
+  return {.fap_quant = fap_quant, .intra_period = period, .choose_predictors = true};
 }
 
 std::string FbaDecodeError::message() const {

@@ -161,18 +161,6 @@ FbaLevels predicted_levels(const FbaPrediction& p, const FbaCodedFaps& faps, con
   return levels;
 }
 
-void reconstruct(FbaPrediction& p, const FbaCodedFap& f, std::int32_t level, bool intra) {
-  const std::size_t i = f.index;
-  // 64-bit, then saturated: a hostile stream may pile up P steps; an encoder's never do.
-  const std::int64_t delta = std::int64_t{level} * f.step;
-  const std::int64_t value = intra ? delta : fba_predict(p.predictor[i], p.r1[i], p.r2[i], p.r3[i]) + delta;
-  const auto r = static_cast<std::int32_t>(
-      std::clamp<std::int64_t>(value, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
-  p.r3[i] = intra ? r : p.r2[i];
-  p.r2[i] = intra ? r : p.r1[i];
-  p.r1[i] = r;
-}
-
 void reconstruct(FbaPrediction& p, const FbaLevels& levels, const FbaCodedFaps& faps, bool intra) {
   for (const FbaCodedFap& f : faps) reconstruct(p, f, levels[f.index], intra);
 }

@@ -65,7 +65,7 @@ class FrequencyModel {
     // 0 < target + 1 <= kMaxTotal < 2^15: the comparisons are signed 16-bit ones.
     const Lanes t = Lanes{} + static_cast<std::int16_t>(target);
     // Two blocks a step, into two sums (two short dependency chains instead of one long one).
-    Lanes above{}, above2{};  // per lane, minus the count (a true comparison is -1); at most 256 / kLanes
+    Lanes above{}, above2{};  // per lane, minus the count (a true comparison is -1), at most 16 each
     for (std::size_t b = 0; b < cumulative_.size(); b += 2 * kLanes) {
       above += load(b) > t;
       above2 += load(b + kLanes) > t;
@@ -92,7 +92,7 @@ class FrequencyModel {
   // Entries 0..s grow by kIncrement: whole blocks, then the block holding s through a mask.
   void add_increment(int s);
 
-  std::vector<std::uint16_t> cumulative_;  // size+1 entries, descending, last 0; zeros to a whole block
+  std::vector<std::uint16_t> cumulative_;  // size+1 entries, descending, last 0; zeros to a pair of blocks
   int size_ = 0;
   ExactReciprocal total_reciprocal_;  // of cumulative_[0]
 };

@@ -1,4 +1,4 @@
-// `fapcast encode IN.fap -o OUT.fba [--quant q] [--iperiod n]` and
+// `fapcast encode IN.fap -o OUT.fba [--quant q] [--iperiod n | --archive]` and
 // `fapcast decode IN.fba -o OUT.fap`: the binary MPEG-4 FBA stream (spec/fba.md).
 // Argument parsing only; coding is codec::encode_fba / codec::decode_fba.
 #include "command.hpp"
@@ -21,6 +21,7 @@ struct EncodeArgs {
   std::string in, out;
   int quant = codec::FbaEncoderOptions{}.fap_quant;
   int iperiod = codec::FbaEncoderOptions{}.intra_period;
+  bool archive = false;
 };
 
 struct DecodeArgs {
@@ -32,7 +33,9 @@ void encode(const EncodeArgs& a) {
   for (const auto& w : r.info.warnings) std::cerr << "fapcast: warning: " << w << "\n";
   std::vector<std::uint8_t> bytes;
   try {
-    bytes = codec::encode_fba(r.sequence, {a.quant, a.iperiod});
+    const codec::FbaEncoderOptions options =
+        a.archive ? codec::fba_archive_options(a.quant, r.sequence.rate) : codec::FbaEncoderOptions{a.quant, a.iperiod};
+    bytes = codec::encode_fba(r.sequence, options);
   } catch (const codec::FbaEncodeError& e) {
     throw std::runtime_error(a.in + ": " + e.what());
   }
@@ -65,8 +68,12 @@ const tools::Registration reg{"45-fba", [](CLI::App& app) {
   e->add_option("-o,--output", enc->out, "output .fba file")->required();
   e->add_option("--quant", enc->quant, "fap_quant 0 (lossless) .. 31; step = QP x quant")
       ->check(CLI::Range(0, 31))->capture_default_str();
-  e->add_option("--iperiod", enc->iperiod, "an intra frame at least every this many frames")
-      ->check(CLI::Range(1, 1 << 20))->capture_default_str();
+  auto* iperiod = e->add_option("--iperiod", enc->iperiod, "an intra frame at least every this many frames")
+                      ->check(CLI::Range(1, 1 << 20))->capture_default_str();
+  e->add_flag("--archive", enc->archive,
+              "archival preset: an intra frame every " + std::to_string(codec::kFbaArchiveIntraSeconds) +
+                  " s (about a third smaller; a corrupt byte or a seek costs up to that long)")
+      ->excludes(iperiod);
   e->callback([enc] { encode(*enc); });
 
   auto dec = std::make_shared<DecodeArgs>();

@@ -63,23 +63,25 @@ std::optional<FbaRateFields> fba_rate_fields(FrameRate rate) {
   return std::nullopt;
 }
 
-namespace {
-
-int symbols(int min_field, int max_field, int fap_quant) {
-  return fba_range_levels(min_field, fap_quant) + fba_range_levels(max_field, fap_quant) + 1;
+FbaCodedFaps::FbaCodedFaps(const FapMask& mask, const std::array<FbaRangeFields, kFapCount>& ranges, int fap_quant) {
+  for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
+    if (!mask.test(fap)) continue;
+    const auto i = static_cast<std::size_t>(fap - 1);
+    const FbaRangeFields& r = ranges[i];
+    faps_[static_cast<std::size_t>(count_++)] = {static_cast<std::uint8_t>(i), fba_step(fap, fap_quant),
+                                                 -fba_range_levels(r.i_min, fap_quant), fba_range_levels(r.i_max, fap_quant),
+                                                 -fba_range_levels(r.p_min, fap_quant), fba_range_levels(r.p_max, fap_quant)};
+  }
 }
 
-void reset_models(FbaModels& m, const FapMask& mask, const std::array<FbaRangeFields, kFapCount>& ranges,
-                  int fap_quant, bool intra) {
+namespace {
+
+void reset_models(FbaModels& m, const FapMask& mask, const FbaCodedFaps& coded, bool intra) {
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
-    auto& model = m.fap[static_cast<std::size_t>(fap - 1)];
-    if (!mask.test(fap)) {
-      model = FrequencyModel{};
-      continue;
-    }
-    const FbaRangeFields& r = ranges[static_cast<std::size_t>(fap - 1)];
-    model.reset(intra ? symbols(r.i_min, r.i_max, fap_quant) : symbols(r.p_min, r.p_max, fap_quant));
+    if (!mask.test(fap)) m.fap[static_cast<std::size_t>(fap - 1)] = FrequencyModel{};
   }
+  for (const FbaCodedFap& f : coded)
+    m.fap[f.index].reset(intra ? f.intra_max - f.intra_min + 1 : f.predicted_max - f.predicted_min + 1);
   m.viseme_select1.reset(15);
   m.viseme_select2.reset(15);
   m.viseme_blend.reset(64);
@@ -99,7 +101,7 @@ struct Fnv {
   }
   void add(const FrequencyModel& m) {
     add(static_cast<std::uint64_t>(m.size()));
-    for (int i = 0; i <= m.size(); ++i) add(m.cumulative(i));
+    for (int i = 0; i <= m.size() && m.size() > 0; ++i) add(m.cumulative(i));  // size 0: an unused model
   }
   void add(const FbaModels& m) {
     for (const auto& f : m.fap) add(f);
@@ -125,8 +127,9 @@ void FbaCodingState::begin_intra(int new_fap_quant, const FapMask& new_mask,
       prediction.predictor[static_cast<std::size_t>(fap - 1)] = 0;
     }
   }
-  reset_models(intra, mask, ranges, fap_quant, true);
-  reset_models(predicted, mask, ranges, fap_quant, false);
+  coded = FbaCodedFaps(mask, ranges, fap_quant);
+  reset_models(intra, mask, coded, true);
+  reset_models(predicted, mask, coded, false);
 }
 
 std::uint64_t FbaCodingState::checksum() const {

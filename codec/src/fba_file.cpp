@@ -7,6 +7,8 @@
 #include <bit>
 #include <cassert>
 #include <limits>
+#include <optional>
+#include <vector>
 
 namespace fapcast::codec {
 namespace {
@@ -23,39 +25,72 @@ void check(const FapFrame& frame, int fap_quant, std::uint64_t index) {
   if (auto e = detail::check_codable(frame, fap_quant, index, detail)) refuse(e, detail);
 }
 
+// log2(x) in 1/256 bit for x >= 1, interpolated linearly between powers of two (at most 0.09
+// bit low; integers only, so every platform chooses alike).
+std::int64_t log2_q8(std::uint32_t x) {
+  const int e = std::bit_width(x) - 1;
+  return std::int64_t{e} * 256 + ((std::int64_t{x} - (std::int64_t{1} << e)) * 256 >> e);
+}
+
+// About the bits the P levels `levels` of one FAP cost: the smallest P range fields covering
+// them, and the adaptive model over that range coding them one after another (in 1/256 bit).
+// Stops counting past `enough`; nullopt when no 5-bit field covers them.
+std::optional<std::int64_t> predicted_cost(const std::vector<std::int32_t>& levels, int q, std::int64_t enough) {
+  std::int32_t lo = 0, hi = 0;
+  for (const std::int32_t l : levels) {
+    lo = std::min(lo, l);
+    hi = std::max(hi, l);
+  }
+  const auto min_field = fba_range_field(-std::int64_t{lo}, q), max_field = fba_range_field(hi, q);
+  if (!min_field || !max_field) return std::nullopt;
+  const int offset = fba_range_levels(*min_field, q);
+  FrequencyModel model(offset + fba_range_levels(*max_field, q) + 1);
+  std::int64_t cost = 0;
+  for (std::size_t j = 0; j < levels.size() && cost < enough; ++j) {
+    const int s = levels[j] + offset;
+    cost += log2_q8(model.total()) - log2_q8(model.cumulative(s) - model.cumulative(s + 1));
+    model.update(s);
+  }
+  return cost;
+}
+
 // fapcast: the predictor of each FAP for the P planes of frames [k + 1, end), chosen by coding
-// them closed loop with every predictor and counting about 2 bits per binary digit of a level.
-// All 0 (no predictor fields sent) unless the choice saves more bits than the fields cost.
+// them closed loop with every predictor and costing the levels as the adaptive model would
+// (predicted_cost). All 0 (no predictor fields sent) unless the choice saves more than the
+// fields cost.
 std::array<std::uint8_t, kFapCount> choose_predictors(const std::vector<FapFrame>& frames, std::size_t k,
                                                       std::size_t end, const FapMask& mask, int q) {
   std::array<std::uint8_t, kFapCount> best{};
-  std::int64_t saved = 0, fields = 1;
+  std::int64_t saved = 0, fields = 256;  // 1/256 bit: the is_predictor flag, then 5 bits a FAP
+  std::vector<std::int32_t> levels;
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
     if (!mask.test(n)) continue;
-    fields += 5;
+    fields += 5 * 256;
     const std::size_t i = static_cast<std::size_t>(n - 1);
     const int step = fba_step(n, q);
-    std::int64_t plain = 0, best_bits = 0;
+    constexpr std::int64_t kUncodable = std::numeric_limits<std::int64_t>::max();
+    std::int64_t plain = 0, best_cost = kUncodable;
     for (int predictor = 0; predictor <= kMaxPredictor; ++predictor) {
       const std::int32_t first = fba_quantise(frames[k].values[i], step) * step;
       std::int32_t r1 = first, r2 = first, r3 = first;
-      std::int64_t bits = 0;
-      for (std::size_t j = k + 1; j < end && (predictor == 0 || bits < best_bits); ++j) {
+      levels.clear();
+      for (std::size_t j = k + 1; j < end; ++j) {
         const std::int32_t p = fba_predict(predictor, r1, r2, r3);
         const std::int32_t level = fba_quantise(std::int64_t{frames[j].values[i]} - p, step);
-        bits += 1 + 2 * static_cast<std::int64_t>(std::bit_width(static_cast<std::uint32_t>(level < 0 ? -level : level)));
+        levels.push_back(level);
         r3 = r2;
         r2 = r1;
         r1 = static_cast<std::int32_t>(std::clamp<std::int64_t>(std::int64_t{p} + std::int64_t{level} * step, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
       }
+      const std::int64_t cost = predicted_cost(levels, q, best_cost).value_or(kUncodable);
       if (predictor == 0) {
-        plain = best_bits = bits;
-      } else if (bits < best_bits) {
-        best_bits = bits;
+        plain = best_cost = cost;
+      } else if (cost < best_cost) {
+        best_cost = cost;
         best[i] = static_cast<std::uint8_t>(predictor);
       }
     }
-    saved += plain - best_bits;
+    saved += std::min(plain - best_cost, std::int64_t{1} << 40);  // plain may be uncodable (the period is cut then)
   }
   if (saved <= fields) best = {};
   return best;
@@ -81,17 +116,18 @@ std::size_t plan_intra_period(const std::vector<FapFrame>& frames, std::size_t k
   header.frame_number = static_cast<std::uint16_t>(k);
   FbaPrediction prediction;
   prediction.predictor = header.predictors;
-  detail::reconstruct(prediction, levels, first.mask, q, true);
+  const FbaCodedFaps faps(first.mask, header.ranges, q);  // the steps (the P ranges come below)
+  detail::reconstruct(prediction, levels, faps, true);
   LevelExtremes extremes;
   std::size_t end = k + 1;
   while (end < nominal_end) {
-    const detail::FbaLevels d = detail::predicted_levels(prediction, first.mask, q, frames[end]);
+    const detail::FbaLevels d = detail::predicted_levels(prediction, faps, frames[end]);
     LevelExtremes trial = extremes;
     trial.add(d);
     auto ranges = header.ranges;
     if (!detail::size_predicted_fields(trial, first.mask, q, ranges)) break;
     extremes = trial;
-    detail::reconstruct(prediction, d, first.mask, q, false);
+    detail::reconstruct(prediction, d, faps, false);
     ++end;
   }
   const bool sized = detail::size_predicted_fields(extremes, first.mask, q, header.ranges);
@@ -132,8 +168,8 @@ std::vector<std::uint8_t> encode_fba(const FapSequence& seq, const FbaEncoderOpt
     out.start_code(kFbaPlaneStartCode);
     detail::write_plane(state, seq.frames[k], &header, out);
     for (std::size_t j = k + 1; j < end; ++j) {
-      assert(detail::levels_fit(detail::predicted_levels(state.prediction, state.mask, state.fap_quant, seq.frames[j]),
-                                seq.frames[j].mask, state, false));
+      assert(seq.frames[j].mask == state.mask &&
+             detail::levels_fit(detail::predicted_levels(state.prediction, state.coded, seq.frames[j]), state.coded, false));
       detail::write_plane(state, seq.frames[j], nullptr, out);
     }
     out.align();
@@ -141,6 +177,12 @@ std::vector<std::uint8_t> encode_fba(const FapSequence& seq, const FbaEncoderOpt
   }
   out.start_code(kFbaEndCode);
   return std::move(out.bytes());
+}
+
+FbaEncoderOptions fba_archive_options(int fap_quant, FrameRate rate) {
+  const std::uint64_t frames = rate.valid() ? std::uint64_t{kFbaArchiveIntraSeconds} * rate.numerator / rate.denominator : 1;
+  const auto period = static_cast<int>(std::clamp<std::uint64_t>(frames, 1, std::numeric_limits<int>::max()));
+  return {.fap_quant = fap_quant, .intra_period = period, .choose_predictors = true};
 }
 
 std::string FbaDecodeError::message() const {
@@ -207,9 +249,8 @@ FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes) {
     for (;;) {
       ++run_planes;
       ++planes;
-      FapFrame frame;
       detail::PlaneInfo info;
-      e = detail::read_plane(state, in, frame, info);
+      e = detail::read_plane(state, in, frames.emplace_back(), info);  // decoded in place
       if (!e && report.frames_skipped + run_skipped + static_cast<std::uint64_t>(info.skip_frames) >
                     detail::kMaxSkipFrames + planes) {
         e = fba_errc::skip_too_long;  // more held frames than the file could justify
@@ -217,9 +258,11 @@ FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes) {
       }
       if (e) break;
       if (run_planes == 1) first = info;
-      for (int i = 0; i < info.skip_frames; ++i) frames.push_back(frames.empty() ? FapFrame{} : frames.back());  // held
+      if (info.skip_frames > 0) {  // held copies of the frame before, ahead of the new one
+        const FapFrame held = frames.size() >= 2 ? frames[frames.size() - 2] : FapFrame{};
+        frames.insert(frames.end() - 1, static_cast<std::size_t>(info.skip_frames), held);
+      }
       run_skipped += static_cast<std::uint64_t>(info.skip_frames);
-      frames.push_back(frame);
       if (in.at_end()) break;
       if (in.peek_bit() == 1) {
         in.expect_end();
@@ -251,6 +294,12 @@ FbaDecodeResult decode_fba(std::span<const std::uint8_t> bytes) {
       if (lost > 0 && affordable(lost)) lose(first_slot, lost);
     } else if (in_loss && affordable(pending_lost)) {
       lose(first_slot, pending_lost);
+    }
+    if (report.frames_decoded == 0) {
+      // The first good run says about how many frames a byte holds: room for the whole file at
+      // that rate saves growing the output (never more than the file could describe).
+      const std::uint64_t estimate = frames.size() * bytes.size() / next;
+      frames.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(estimate + estimate / 16, detail::kMaxSkipFrames + 2 * bytes.size())));
     }
     in_loss = false;
     pending_lost = 0;

@@ -15,10 +15,6 @@ constexpr int kMarkerEvery = 4;  // a marker bit before every 4th range field of
 
 std::size_t at(int fap) { return static_cast<std::size_t>(fap - 1); }
 
-int symbol_offset(const FbaRangeFields& r, bool intra, int fap_quant) {
-  return fba_range_levels(intra ? r.i_min : r.p_min, fap_quant);
-}
-
 // --- plane header -----------------------------------------------------------------------------
 
 void write_group_masks(const FapMask& mask, FbaBitWriter& out) {
@@ -101,17 +97,13 @@ void write_segments(FbaCodingState& s, const FapFrame& frame, bool intra, FbaBit
     out.put_bit(frame.expression.def);
     s.expression = frame.expression;
   }
-  const FbaLevels levels =
-      intra ? intra_levels(frame, s.fap_quant) : predicted_levels(s.prediction, s.mask, s.fap_quant, frame);
-  bool any = false;
-  ArithmeticEncoder ac(out);
-  for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
-    if (!s.mask.test(n)) continue;
-    ac.encode(levels[at(n)] + symbol_offset(s.ranges[at(n)], intra, s.fap_quant), m.fap[at(n)]);
-    any = true;
+  const FbaLevels levels = intra ? intra_levels(frame, s.fap_quant) : predicted_levels(s.prediction, s.coded, frame);
+  if (!s.coded.empty()) {
+    ArithmeticEncoder ac(out);
+    for (const FbaCodedFap& f : s.coded) ac.encode(levels[f.index] - (intra ? f.intra_min : f.predicted_min), m.fap[f.index]);
+    ac.flush();
   }
-  if (any) ac.flush();
-  reconstruct(s.prediction, levels, s.mask, s.fap_quant, intra);
+  reconstruct(s.prediction, levels, s.coded, intra);
 }
 
 void read_segments(FbaCodingState& s, bool intra, FbaBitReader& in, FapFrame& out) {
@@ -138,19 +130,13 @@ void read_segments(FbaCodingState& s, bool intra, FbaBitReader& in, FapFrame& ou
     out.expression.def = in.get_bit() == 1;
     s.expression = out.expression;
   }
-  bool any = false;
-  for (int n = kFirstLowLevelFap; n <= kFapCount && !any; ++n) any = s.mask.test(n);
-  if (!any) return;
-  FbaLevels levels{};
+  if (s.coded.empty()) return;
   ArithmeticDecoder ad(in);
-  for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
-    if (s.mask.test(n)) levels[at(n)] = ad.decode(m.fap[at(n)]) - symbol_offset(s.ranges[at(n)], intra, s.fap_quant);
+  for (const FbaCodedFap& f : s.coded) {
+    reconstruct(s.prediction, f, ad.decode(m.fap[f.index]) + (intra ? f.intra_min : f.predicted_min), intra);
+    out.values[f.index] = s.prediction.r1[f.index];
   }
   ad.finish();
-  reconstruct(s.prediction, levels, s.mask, s.fap_quant, intra);
-  for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
-    if (s.mask.test(n)) out.values[at(n)] = s.prediction.r1[at(n)];
-  }
 }
 
 }  // namespace
@@ -165,39 +151,24 @@ FbaLevels intra_levels(const FapFrame& frame, int fap_quant) {
   return levels;
 }
 
-FbaLevels predicted_levels(const FbaPrediction& p, const FapMask& mask, int fap_quant, const FapFrame& frame) {
+FbaLevels predicted_levels(const FbaPrediction& p, const FbaCodedFaps& faps, const FapFrame& frame) {
   FbaLevels levels{};
-  for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
-    if (!mask.test(n) || !frame.mask.test(n)) continue;
-    const std::size_t i = at(n);
+  for (const FbaCodedFap& f : faps) {
+    const std::size_t i = f.index;
     const std::int64_t error = std::int64_t{frame.values[i]} - fba_predict(p.predictor[i], p.r1[i], p.r2[i], p.r3[i]);
-    levels[i] = fba_quantise(error, fba_step(n, fap_quant));
+    levels[i] = fba_quantise(error, f.step);
   }
   return levels;
 }
 
-void reconstruct(FbaPrediction& p, const FbaLevels& levels, const FapMask& mask, int fap_quant, bool intra) {
-  for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
-    if (!mask.test(n)) continue;
-    const std::size_t i = at(n);
-    // 64-bit, then saturated: a hostile stream may pile up P steps; an encoder's never do.
-    const std::int64_t delta = std::int64_t{levels[i]} * fba_step(n, fap_quant);
-    const std::int64_t value = intra ? delta : fba_predict(p.predictor[i], p.r1[i], p.r2[i], p.r3[i]) + delta;
-    const auto r = static_cast<std::int32_t>(
-        std::clamp<std::int64_t>(value, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
-    p.r3[i] = intra ? r : p.r2[i];
-    p.r2[i] = intra ? r : p.r1[i];
-    p.r1[i] = r;
-  }
+void reconstruct(FbaPrediction& p, const FbaLevels& levels, const FbaCodedFaps& faps, bool intra) {
+  for (const FbaCodedFap& f : faps) reconstruct(p, f, levels[f.index], intra);
 }
 
-bool levels_fit(const FbaLevels& levels, const FapMask& mask, const FbaCodingState& state, bool intra) {
-  for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
-    if (!mask.test(n)) continue;
-    const FbaRangeFields& r = state.ranges[at(n)];
-    const int lo = -fba_range_levels(intra ? r.i_min : r.p_min, state.fap_quant);
-    const int hi = fba_range_levels(intra ? r.i_max : r.p_max, state.fap_quant);
-    if (levels[at(n)] < lo || levels[at(n)] > hi) return false;
+bool levels_fit(const FbaLevels& levels, const FbaCodedFaps& faps, bool intra) {
+  for (const FbaCodedFap& f : faps) {
+    const std::int32_t level = levels[f.index];
+    if (level < (intra ? f.intra_min : f.predicted_min) || level > (intra ? f.intra_max : f.predicted_max)) return false;
   }
   return true;
 }

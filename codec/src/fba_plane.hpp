@@ -4,8 +4,10 @@
 #include "fapcast/codec/fba_bits.hpp"
 #include "fapcast/codec/fba_coding_state.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string>
 #include <system_error>
@@ -20,13 +22,23 @@ using FbaLevels = std::array<std::int32_t, kFapCount>;
 // The levels of `frame` coded as an intra plane at `fap_quant`.
 FbaLevels intra_levels(const FapFrame& frame, int fap_quant);
 // The levels of `frame` coded as a P plane: its differences to the predictions.
-FbaLevels predicted_levels(const FbaPrediction& prediction, const FapMask& mask, int fap_quant,
-                           const FapFrame& frame);
-// Moves the reconstructed values on by one plane's levels (closed loop: both sides do the same).
-void reconstruct(FbaPrediction& prediction, const FbaLevels& levels, const FapMask& mask, int fap_quant,
-                 bool intra);
-// Whether `levels` fit [-levels(min_field), levels(max_field)] for every masked FAP.
-bool levels_fit(const FbaLevels& levels, const FapMask& mask, const FbaCodingState& state, bool intra);
+FbaLevels predicted_levels(const FbaPrediction& prediction, const FbaCodedFaps& faps, const FapFrame& frame);
+// Moves the reconstructed values on by one plane's levels (closed loop: both sides do the same),
+// or one FAP's.
+void reconstruct(FbaPrediction& prediction, const FbaLevels& levels, const FbaCodedFaps& faps, bool intra);
+inline void reconstruct(FbaPrediction& p, const FbaCodedFap& f, std::int32_t level, bool intra) {
+  const std::size_t i = f.index;
+  // 64-bit, then saturated: a hostile stream may pile up P steps; an encoder's never do.
+  const std::int64_t delta = std::int64_t{level} * f.step;
+  const std::int64_t value = intra ? delta : fba_predict(p.predictor[i], p.r1[i], p.r2[i], p.r3[i]) + delta;
+  const auto r = static_cast<std::int32_t>(
+      std::clamp<std::int64_t>(value, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
+  p.r3[i] = intra ? r : p.r2[i];
+  p.r2[i] = intra ? r : p.r1[i];
+  p.r1[i] = r;
+}
+// Whether `levels` fit the I (or P) range of every coded FAP.
+bool levels_fit(const FbaLevels& levels, const FbaCodedFaps& faps, bool intra);
 
 // Checks what the encoder cannot code: viseme/expression fields out of their ranges, and values
 // whose intra level no 5-bit range field reaches. On error `detail` names frame and FAP.

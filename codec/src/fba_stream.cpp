@@ -41,8 +41,8 @@ std::error_code FbaFrameEncoder::encode(const FapFrame& frame, FbaAccessUnit& ou
   bool intra = force_intra || !c.have_intra || !(frame.mask == c.mask) ||
                s.since_intra >= static_cast<std::uint64_t>(o.intra_period);
   if (!intra) {
-    const auto levels = detail::predicted_levels(c.prediction, c.mask, c.fap_quant, frame);
-    intra = !detail::levels_fit(levels, frame.mask, c, false);  // left the P range
+    const auto levels = detail::predicted_levels(c.prediction, c.coded, frame);
+    intra = !detail::levels_fit(levels, c.coded, false);  // left the P range
   }
   FbaBitWriter writer;
   if (intra) {

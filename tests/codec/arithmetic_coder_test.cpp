@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 namespace fapcast::codec {
@@ -70,6 +71,66 @@ TEST(FbaArithmeticCoder, ModelsHalveAtTheTotalLimitAndStayUsable) {
   FbaBitReader r(w.bytes());
   ArithmeticDecoder ad(r);
   for (int i = 0; i < 100; ++i) ASSERT_EQ(ad.decode(d), i % 3);
+}
+
+// The reciprocal division is exact where the coder uses it (numerators length * count below
+// 2^30, divisors the totals 1..16383) and beyond: every divisor up to 2^16 at the numerators
+// where a floor changes (k*d - 1, k*d), at both ends of the 32-bit range, and random pairs.
+TEST(ExactReciprocal, DividesExactlyAtEveryFloorStep) {
+  const std::uint64_t seed = test::fba_seed();
+  SCOPED_TRACE(test::reproduce(seed, "ExactReciprocal.*"));
+  std::mt19937_64 rng(seed);
+  for (std::uint32_t d = 1; d <= 65536; ++d) {
+    const ExactReciprocal r(d);
+    for (const std::uint32_t n : {0u, 1u, d - 1, d, d + 1, 2 * d - 1, 2 * d, (1u << 30) - 1, 1u << 30, 0xFFFFFFFFu})
+      ASSERT_EQ(r.divide(n), n / d) << n << " / " << d;
+    for (int i = 0; i < 8; ++i) {
+      const std::uint64_t k = rng() % (0xFFFFFFFFull / d) + 1;  // k*d <= 2^32 - 1
+      const auto n = static_cast<std::uint32_t>(k * d);
+      ASSERT_EQ(r.divide(n), k) << n << " / " << d;
+      ASSERT_EQ(r.divide(n - 1), k - 1) << n - 1 << " / " << d;
+    }
+  }
+  for (int i = 0; i < 200000; ++i) {
+    const auto d = static_cast<std::uint32_t>(rng() % ExactReciprocal::kMaxDivisor) + 1;
+    const auto n = static_cast<std::uint32_t>(rng());
+    ASSERT_EQ(ExactReciprocal(d).divide(n), n / d) << n << " / " << d;
+  }
+}
+
+// The closed-form renormalisation against the rule it replaces (spec/fba.md §7, one shift at a
+// time), for every interval low <= high whose ends lie on a grid and for random ones.
+TEST(FbaArithmeticCoder, RenormalisationInOneStepMatchesTheShiftByShiftRule) {
+  const auto one_at_a_time = [](std::uint32_t low, std::uint32_t high) {
+    ArithmeticInterval r{low, high, 0};
+    for (;;) {
+      if (r.high < 32768) {
+      } else if (r.low >= 32768) {
+        r.low -= 32768;
+        r.high -= 32768;
+      } else if (r.low >= 16384 && r.high < 49152) {
+        r.low -= 16384;
+        r.high -= 16384;
+      } else {
+        return r;
+      }
+      r.low = 2 * r.low;
+      r.high = 2 * r.high + 1;
+      ++r.shifts;
+    }
+  };
+  const auto check = [&](std::uint32_t low, std::uint32_t high) {
+    ASSERT_EQ(arithmetic_renormalise(low, high), one_at_a_time(low, high)) << "low " << low << " high " << high;
+  };
+  for (std::uint32_t low = 0; low < 65536; low += 61)
+    for (std::uint32_t high = low; high < 65536; high += 59) check(low, high);
+  std::mt19937_64 rng(test::fba_seed());
+  for (int i = 0; i < 200000; ++i) {
+    const auto a = static_cast<std::uint32_t>(rng() % 65536), b = static_cast<std::uint32_t>(rng() % 65536);
+    const std::uint32_t width = static_cast<std::uint32_t>(rng() % 64);  // narrow intervals: long shift runs
+    check(std::min(a, b), std::max(a, b));
+    check(a, std::min(a + width, 65535u));
+  }
 }
 
 TEST(FbaBits, ReaderGivesZerosPastTheEndAndTheErrorSticks) {

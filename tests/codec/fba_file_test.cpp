@@ -233,6 +233,36 @@ TEST(FbaFile, ResynchronisesAfterCorruptionAndCountsLostFrames) {
   }
 }
 
+// The archival preset: an intra plane (a run, a place to enter and resume) every 20 s of frames,
+// the guarantees unchanged, and corruption costing that run only.
+TEST(FbaFile, ArchivePresetPutsAnIntraPlaneEveryTwentySeconds) {
+  EXPECT_EQ(fba_archive_options(2, {25, 1}).intra_period, 500);
+  EXPECT_EQ(fba_archive_options(2, {30000, 1001}).intra_period, 599);  // 29.97 fps, rounded down
+  EXPECT_EQ(fba_archive_options(2, {1, 60}).intra_period, 1);          // one frame a minute
+  EXPECT_EQ(fba_archive_options(3, {25, 1}).fap_quant, 3);
+  std::mt19937_64 rng(fba_seed());
+  const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 1200, 600));
+  const FbaEncoderOptions archive = fba_archive_options(2, seq.rate);
+  const auto bytes = encode_fba(seq, archive);
+  ASSERT_EQ(run_first_frames(bytes), (std::vector<std::size_t>{0, 500, 1000}));
+  EXPECT_LT(bytes.size(), encode_fba(seq, {.fap_quant = 2}).size());
+  const auto result = decode_fba(bytes);
+  ASSERT_TRUE(result.report.ok());
+  ASSERT_EQ(result.sequence.frames.size(), seq.frames.size());
+  for (std::size_t k = 0; k < seq.frames.size(); ++k) {
+    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
+      if (!seq.frames[k].mask.test(n)) continue;
+      ASSERT_LE(std::abs(result.sequence.frames[k].value(n) - seq.frames[k].value(n)), fba_step(n, 2) / 2) << k << " " << n;
+    }
+  }
+  auto corrupt = bytes;
+  const auto runs = run_offsets(bytes);
+  corrupt[(runs[1] + runs[2]) / 2] ^= 0x5A;
+  const auto damaged = decode_fba(corrupt);
+  EXPECT_EQ(damaged.report.frames_lost, 500u);  // the run of frames 500..999, no more
+  EXPECT_EQ(damaged.sequence.frames[1000], result.sequence.frames[1000]);
+}
+
 // The frame-at-a-time coder's units, back to back, are a file too (one plane per run).
 TEST(FbaFile, AccessUnitsBackToBackDecodeAsAFile) {
   std::mt19937_64 rng(fba_seed());

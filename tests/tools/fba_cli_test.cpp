@@ -83,7 +83,7 @@ TEST(FbaCliErrors, BadStreamIsReportedWithByteOffsetAndRule) {
   const fs::path bad = fs::path(FAPCAST_TEST_DATA) / "fba" / "bad" / "bad.004.bad-start-code.fba";
   const auto r = run_command(fapcast("decode " + bad.string() + " -o " + dir + "/x.fap"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("byte 397: bad-start-code"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("byte 390: bad-start-code"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("frames lost"), std::string::npos) << r.err;
 }
 
@@ -104,11 +104,31 @@ TEST(FbaCliErrors, QuantOutOfRangeIsAUsageError) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
 }
 
+TEST(FbaCliErrors, ArchiveAndIperiodTogetherIsAUsageError) {
+  const auto r = run_command(fapcast("encode x.fap -o y.fba --archive --iperiod 10"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+}
+
 }  // namespace
 }  // namespace fapcast::test
 
 namespace fapcast::test {
 namespace {
+
+TEST(FbaCliArchive, ArchivePresetIsSmallerAndDecodesWithinHalfAStep) {
+  const std::string dir = make_temp_dir("fba-cli-archive");
+  const std::string in = (fs::path(FAPCAST_TEST_DATA) / "xface" / "joy.fap").string();
+  ASSERT_EQ(run_command(fapcast("encode " + in + " -o " + dir + "/default.fba --quant 2")).exit_code, 0);
+  const auto enc = run_command(fapcast("encode " + in + " -o " + dir + "/archive.fba --quant 2 --archive"));
+  ASSERT_EQ(enc.exit_code, 0) << enc.err;
+  EXPECT_LT(fs::file_size(dir + "/archive.fba"), fs::file_size(dir + "/default.fba"));
+  ASSERT_EQ(run_command(fapcast("decode " + dir + "/archive.fba -o " + dir + "/back.fap")).exit_code, 0);
+  const codec::FapSequence a = read_fap(in), b = read_fap(dir + "/back.fap");
+  ASSERT_EQ(a.frames.size(), b.frames.size());
+  for (std::size_t k = 0; k < a.frames.size(); ++k)
+    for (int n = codec::kFirstLowLevelFap; n <= codec::kFapCount; ++n)
+      ASSERT_LE(2 * std::abs(a.frames[k].value(n) - b.frames[k].value(n)), codec::fba_step(n, 2)) << k << " " << n;
+}
 
 TEST(FbaCliInfo, FapInfoReadsFbaToo) {
   const std::string dir = make_temp_dir("fba-cli-info");

@@ -91,18 +91,22 @@ class FbaBitReader {
  private:
   // Up to kFastBits bits at once when no stuffed bit can fall among them: fewer than 22 zeros
   // from the run so far to the window's first 1 (a window of <= 16 bits holds no 22-zero run
-  // of its own). Otherwise, and near the end of the data, bit by bit.
+  // of its own). Otherwise, and in the last 3 bytes of the data, bit by bit.
   static constexpr int kFastBits = 16;
   std::uint32_t read_bits(int count, bool allow_past_end) {
-    if (count == 0) return 0;
     const std::uint64_t at = pos_.raw_bits;
-    if (at + static_cast<std::uint64_t>(count) <= size_bits_) {
-      const std::uint32_t w = raw_window(at, count);
-      const int width = std::bit_width(w);
-      if (pos_.zero_run + (count - width) < kStuffAfterZeros) {
+    const std::uint64_t byte = at / 8;
+    if (byte + 4 <= bytes_.size()) {  // the 32 bits from `byte` hold the window (at % 8 + count <= 23)
+      const std::uint8_t* b = bytes_.data() + byte;  // one load (compilers fuse the bytes)
+      const std::uint32_t u = (std::uint32_t{b[0]} << 24 | std::uint32_t{b[1]} << 16 | std::uint32_t{b[2]} << 8 | b[3])
+                              << (at % 8);
+      const std::uint32_t w = (u >> (31 - count)) >> 1;  // two shifts: count 0 gives 0
+      const int leading_zeros = std::min(std::countl_zero(u | 1u), count);
+      if (pos_.zero_run + leading_zeros < kStuffAfterZeros) {
         pos_.raw_bits = at + static_cast<std::uint64_t>(count);
         payload_bits_ += static_cast<std::uint64_t>(count);
-        pos_.zero_run = w == 0 ? pos_.zero_run + count : std::countr_zero(w);
+        // The zeros after the window's last 1, plus the run before it when the window is all 0.
+        pos_.zero_run = std::countr_zero(w | (1u << count)) + (w == 0 ? pos_.zero_run : 0);
         return w;
       }
     }

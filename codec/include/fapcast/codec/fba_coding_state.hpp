@@ -68,6 +68,32 @@ struct FbaPrediction {
   bool operator==(const FbaPrediction&) const = default;
 };
 
+// A masked low-level FAP as the planes of one intra period code it. Derived from the intra
+// header in force (mask, ranges, fap_quant), so that per-plane loops visit only coded FAPs and
+// divide nothing. Symbol = level - min of the range in use.
+struct FbaCodedFap {
+  std::uint8_t index = 0;                             // n - 1 for FAP n (3..68)
+  std::int32_t step = 1;                              // fba_step(n, fap_quant), FAPU per level
+  std::int32_t intra_min = 0, intra_max = 0;          // the I range, levels: [-levels(i_min), levels(i_max)]
+  std::int32_t predicted_min = 0, predicted_max = 0;  // the P range, levels
+  bool operator==(const FbaCodedFap&) const = default;
+};
+
+// The masked FAPs 3..68 of an intra header, in FAP order (the order planes code them).
+class FbaCodedFaps {
+ public:
+  FbaCodedFaps() = default;
+  FbaCodedFaps(const FapMask& mask, const std::array<FbaRangeFields, kFapCount>& ranges, int fap_quant);
+  const FbaCodedFap* begin() const { return faps_.data(); }
+  const FbaCodedFap* end() const { return faps_.data() + count_; }
+  bool empty() const { return count_ == 0; }
+  bool operator==(const FbaCodedFaps&) const = default;
+
+ private:
+  std::array<FbaCodedFap, kFapCount> faps_{};
+  int count_ = 0;
+};
+
 // One set of models: one per low-level FAP, and the viseme and expression fields.
 struct FbaModels {
   std::array<FrequencyModel, kFapCount> fap;  // fap[n-1] for FAP n (3..68)
@@ -82,6 +108,7 @@ struct FbaCodingState {
   int fap_quant = 0;
   FapMask mask;
   std::array<FbaRangeFields, kFapCount> ranges{};
+  FbaCodedFaps coded;        // mask, ranges and fap_quant as the planes use them
   FbaPrediction prediction;  // prediction.r1: what the decoder shows, FAPU
   VisemeField viseme;
   ExpressionField expression;

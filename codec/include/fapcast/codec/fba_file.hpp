@@ -26,6 +26,16 @@ class FbaEncodeError : public std::system_error {
 // cannot code.
 std::vector<std::uint8_t> encode_fba(const FapSequence& seq, const FbaEncoderOptions& options);
 
+// fapcast's archival preset (`fapcast encode --archive`): an intra plane every 20 seconds
+// instead of every second: longer-lived P models and fewer intra headers make files markedly
+// smaller (figures in spec/fba.md §9). What it costs: a decoder that enters at a start code, or resumes after corruption, waits up to 20 s for
+// the next intra plane (a corrupt byte loses up to 20 s), and seeking decodes up to 20 s of frames
+// (about 0.5 ms at 25 fps).
+inline constexpr std::uint32_t kFbaArchiveIntraSeconds = 20;
+// The archival options for a sequence at `rate`: intra period kFbaArchiveIntraSeconds of frames
+// (at least 1), predictors chosen.
+FbaEncoderOptions fba_archive_options(int fap_quant, FrameRate rate);
+
 // One refusal met while decoding: where (byte offset in the file) and why.
 struct FbaDecodeError {
   std::uint64_t byte_offset = 0;

@@ -1,5 +1,6 @@
 #include "fapcast/synth/marker_resample.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -23,8 +24,9 @@ MarkerSet resample_markers(const MarkerSet& markers, std::int32_t rate_hz) {
       fraction = static_cast<double>(numerator % rate_hz) / rate_hz;
     } else {
       const double u = static_cast<double>(k) * input_hz / rate_hz;
-      i = static_cast<Eigen::Index>(std::floor(u));
-      fraction = u - static_cast<double>(i);
+      i = static_cast<Eigen::Index>(std::floor(u + 1e-9));  // within rounding of a frame: that frame
+      fraction = std::max(0.0, u - static_cast<double>(i));
+      if (fraction < 1e-9) fraction = 0;
     }
   };
   Eigen::Index out_frames = 0;
@@ -32,7 +34,8 @@ MarkerSet resample_markers(const MarkerSet& markers, std::int32_t rate_hz) {
     if (whole_rate) {
       out_frames = static_cast<Eigen::Index>((static_cast<std::int64_t>(in_frames - 1) * rate_hz) / in_rate) + 1;
     } else {
-      out_frames = static_cast<Eigen::Index>(std::floor(static_cast<double>(in_frames - 1) * rate_hz / input_hz)) + 1;
+      // A last frame within rounding of the grid still counts (59.94 x 1001 / 1000 ...).
+      out_frames = static_cast<Eigen::Index>(std::floor(static_cast<double>(in_frames - 1) * rate_hz / input_hz + 1e-9)) + 1;
     }
   }
   MarkerSet out = MarkerSet::zeros(out_frames, m);

@@ -282,7 +282,9 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
   if (!(rate >= kMinCaptureFramesPerSecond))
     refuse(u.markers, "corpus-frame-rate", captured.rate_field + " is " + detail::shortest_decimal(rate) + " Hz; the voice build resamples takes of " +
                                                detail::shortest_decimal(kMinCaptureFramesPerSecond) + " Hz or more to 60, not slower ones");
-  const MarkerSet set = rate == kVoiceFramesPerSecond ? std::move(captured.set) : resample_markers(captured.set, kVoiceFramesPerSecond);
+  // A rate within float precision of 60 (C3D's float32, a CSV rate derived from its times) is 60.
+  const bool on_grid = std::abs(rate - kVoiceFramesPerSecond) <= 1e-6 * kVoiceFramesPerSecond;
+  const MarkerSet set = on_grid ? std::move(captured.set) : resample_markers(captured.set, kVoiceFramesPerSecond);
   const auto sites = marker_sites();
   const Eigen::Index frames = set.frame_count();
   MarkerFrames& m = take.markers;

@@ -14,7 +14,8 @@ namespace fapcast::synth {
 // `markers` on a grid of `rate_hz` frames per second (1 to 100000), covering the input's time
 // span [0, (F - 1) / input rate]: floor((F - 1) x rate_hz / input rate) + 1 frames (0 for an
 // empty input). Labels carry; first_frame becomes 1. For a whole-number input rate the source
-// position k x input / rate_hz is computed in integers, so it is exact; otherwise in doubles.
+// position k x input / rate_hz is computed in integers, so it is exact; otherwise in doubles,
+// a position within 1e-9 frames of an input frame taken as that frame (and counted as inside).
 // Throws std::invalid_argument for a rate out of range, a non-positive or non-finite input rate,
 // or an inconsistent set.
 MarkerSet resample_markers(const MarkerSet& markers, std::int32_t rate_hz);

@@ -229,7 +229,8 @@ AlignedPhones read_alignment(const fs::path& file) {
 void refuse_ambiguous(const std::vector<fs::path>& files, const char* what) {
   std::string names;
   for (const fs::path& f : files) names += (names.empty() ? "" : " and ") + f.filename().string();
-  refuse(files.front(), "corpus-ambiguous", std::string("two ") + what + " for utterance \"" + files.front().stem().string() +
+  const std::string count = files.size() == 2 ? "two" : std::to_string(files.size());
+  refuse(files.front(), "corpus-ambiguous", count + " " + what + " for utterance \"" + files.front().stem().string() +
                                                 "\": " + names + " (keep one, or list the pair in manifest.json)");
 }
 

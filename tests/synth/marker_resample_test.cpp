@@ -56,7 +56,9 @@ TEST(MarkerResample, AMissingNeighbourMakesTheSampleMissing) {
   for (Eigen::Index k = 0; k < 7; ++k) {
     EXPECT_EQ(out.missing(k, 0), k == 2) << k;  // source 3.33: frames 3 and 4
     EXPECT_EQ(out.missing(k, 1), k == 4) << k;  // frame 3 is source 5 exactly: copied, present
-    if (out.missing(k, 0)) EXPECT_EQ(out.position(k, 0), Eigen::Vector3d::Zero());
+    if (out.missing(k, 0)) {
+      EXPECT_EQ(out.position(k, 0), Eigen::Vector3d::Zero());
+    }
   }
 }
 

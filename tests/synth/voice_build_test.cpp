@@ -337,7 +337,9 @@ TEST(VoiceCorpusBadCorpora, AreRefusedWithTheGoldenMessages) {
     const std::string prefix = (root / "").string();
     if (message.rfind(prefix, 0) == 0) message = message.substr(prefix.size());
     regenerated += message + "\n";
-    if (!regenerate) EXPECT_EQ(message, golden[name]) << name;
+    if (!regenerate) {
+      EXPECT_EQ(message, golden[name]) << name;
+    }
   }
   if (regenerate) {
     std::ofstream(root / "EXPECTED.txt") << "# Golden refusals of the named bad corpora (regenerate: FAPCAST_REGENERATE=1 "

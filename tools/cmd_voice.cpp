@@ -49,8 +49,8 @@ const fapcast::tools::Registration build_reg{"60-voice-build", [](CLI::App& app)
   auto args = std::make_shared<Args>();
   auto* cmd = fapcast::tools::command_group(app, "voice", kVoiceGroupHelp)
                   ->add_subcommand("build",
-                                   "Build a voice from a corpus directory (manifest.json, or *.c3d with "
-                                   "*.TextGrid): prototypes, RBF retargeting onto the ICT face, PCA, phone graph");
+                                   "Build a voice from a corpus directory (manifest.json, or markers *.c3d, *.trc or "
+                                   "*.csv, each with a *.TextGrid or *.lab of the same stem): prototypes, RBF retargeting onto the ICT face, PCA, phone graph");
   cmd->add_option("corpus", args->corpus, "Corpus directory")->required();
   cmd->add_option("-o,--output", args->output, "Voice file to write (.fapv)")->required();
   cmd->add_option("--pca", args->pca, "PCA route: exact (the RBF map's affine image) or em (EM-PCA, minutes)")

@@ -92,6 +92,7 @@ LabFile read_lab(std::string_view bytes, const std::string& source, std::optiona
     }
     lab.segments.push_back(std::move(segment));
     lab.scores.push_back(score);
+    lab.lines.push_back(line.number);
     if (auto p = order_problem(lab.segments, lab.segments.size() - 1)) fail(line.number, "lab-interval-order", *p);
   }
   return lab;

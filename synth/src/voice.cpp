@@ -115,7 +115,16 @@ Voice& Voice::operator=(Voice&&) noexcept = default;
 Voice::~Voice() = default;
 
 Voice Voice::open(const std::filesystem::path& path) {
-  VoiceFileView view = open_voice(path);  // container, sections, shapes, provenance
+  return from_view(open_voice(path));  // container, sections, shapes, provenance
+}
+
+Voice Voice::over_bytes(std::span<const std::byte> bytes, std::string source) {
+  VoiceFileView view = VoiceFileView::over_bytes(bytes, std::move(source));
+  check_voice_sections(view);
+  return from_view(std::move(view));
+}
+
+Voice Voice::from_view(VoiceFileView view) {
   VoiceProvenance provenance = view.provenance();
   const Eigen::Index d = static_cast<Eigen::Index>(view.require(vs::kPcaMean).cols);
   if (d % 3 != 0) refuse(view, vs::kPcaMean, "section-shape", "D = " + std::to_string(d) + " is not 3 x vertices");

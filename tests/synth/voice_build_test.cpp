@@ -6,10 +6,15 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <fstream>
 #include <set>
+#include <sstream>
 
+#include "support/corpus_conversion.hpp"
 #include "fapcast/synth/input_error.hpp"
+#include "fapcast/synth/lab_file.hpp"
+#include "fapcast/synth/textgrid.hpp"
 #include "fapcast/synth/marker_map.hpp"
 #include "fapcast/synth/preprocessing.hpp"
 #include "fapcast/synth/reference_talker.hpp"
@@ -212,6 +217,136 @@ TEST_F(VoiceBuild, RefusesBadCorporaNamingFileAndRule) {
     EXPECT_NE(message.find("voice-prototypes: "), std::string::npos) << message;
     fs::remove_all(dir);
   }
+}
+
+// The same SYNTHETIC takes delivered as TRC or marker CSV with HTK/MOCHA .lab alignments build
+// the same voice, byte for byte, as the C3D + TextGrid original (the writers spell the C3D's
+// float samples and the TextGrid's times exactly, so nothing is lost in the conversion).
+TEST_F(VoiceBuild, TrcAndCsvWithLabBuildTheSameVoiceAsC3dWithTextGrid) {
+  for (const test::MarkerFormat format : {test::MarkerFormat::trc, test::MarkerFormat::csv}) {
+    const std::string ext = test::extension_of(format).substr(1);
+    const fs::path dir = fs::temp_directory_path() / ("fapcast_voice_" + ext + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    test::convert_corpus(*corpus_, dir, format, test::AlignmentFormat::lab);
+    ASSERT_TRUE(fs::exists(dir / ("utt0001." + ext)));
+    ASSERT_TRUE(fs::exists(dir / "utt0001.lab"));
+    EXPECT_EQ(build_voice(dir, options()).bytes, built().bytes) << ext << " + lab";
+    fs::remove_all(dir);
+  }
+}
+
+bool same_take(const CorpusTake& a, const CorpusTake& b) {
+  const Eigen::MatrixXd& x = a.markers.positions_cm;
+  const Eigen::MatrixXd& y = b.markers.positions_cm;
+  return a.phones == b.phones && a.markers.labels == b.markers.labels && x.rows() == y.rows() && x.cols() == y.cols() &&
+         ((x.array() == y.array()) || (x.array().isNaN() && y.array().isNaN())).all() &&
+         std::equal(a.spans.begin(), a.spans.end(), b.spans.begin(), b.spans.end(),
+                    [](const FrameSpan& p, const FrameSpan& q) { return p.first == q.first && p.count == q.count; });
+}
+
+// A 120 fps TRC (every other frame the original, the ones between interpolated) is resampled to
+// the original 60 fps takes exactly; without a manifest, pairing by stem finds the same takes.
+TEST_F(VoiceBuild, A120FpsTrcIsResampledToTheOriginalTakes) {
+  const fs::path dir = fs::temp_directory_path() / ("fapcast_voice_trc120_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  test::convert_corpus(*corpus_, dir, test::MarkerFormat::trc, test::AlignmentFormat::lab, 2);
+  const CorpusListing original = list_corpus(*corpus_);
+  for (const bool with_manifest : {true, false}) {
+    if (!with_manifest) fs::remove(dir / "manifest.json");
+    const CorpusListing listing = list_corpus(dir);
+    ASSERT_EQ(listing.utterances.size(), original.utterances.size());
+    for (std::size_t u = 0; u < listing.utterances.size(); ++u) {
+      EXPECT_EQ(listing.utterances[u].id, original.utterances[u].id);
+      const CorpusTake take = read_corpus_take(listing, u);
+      EXPECT_EQ(take.capture_frame_rate_hz, 120);
+      EXPECT_TRUE(same_take(take, read_corpus_take(original, u))) << listing.utterances[u].id;
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// TIMIT labels in a .lab (lower case, stops split into closure + release, h# for silence) give
+// the same phone states as the ARPAbet TextGrid they were made from.
+TEST_F(VoiceBuild, TimitLabelsWithClosuresGiveTheSamePhoneStates) {
+  const fs::path dir = fs::temp_directory_path() / ("fapcast_voice_timit_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  test::convert_corpus(*corpus_, dir, test::MarkerFormat::csv, test::AlignmentFormat::lab);
+  const CorpusListing original = list_corpus(*corpus_);
+  std::size_t closures = 0;
+  for (const CorpusUtterance& u : original.utterances) {
+    const Alignment grid = read_textgrid(transport::read_file(u.alignment), u.alignment.string());
+    LabFile lab;
+    lab.unit = LabTimeUnit::seconds;
+    for (const Interval& iv : grid.find("phones")->intervals) {
+      std::string label;
+      for (char c : iv.label)
+        if (!std::isdigit(static_cast<unsigned char>(c))) label += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      if (label.empty() || label == "sil") label = "h#";
+      if (label.size() == 1 && std::string("bdgptk").find(label[0]) != std::string::npos) {
+        const double mid = (iv.start_s + iv.end_s) / 2;
+        lab.segments.push_back({iv.start_s, mid, label + "cl"});
+        lab.segments.push_back({mid, iv.end_s, label});
+        ++closures;
+      } else {
+        lab.segments.push_back({iv.start_s, iv.end_s, label});
+      }
+    }
+    transport::write_file_atomically(dir / (u.id + ".lab"), write_lab(lab));
+  }
+  EXPECT_GT(closures, 10u);
+  std::string manifest = transport::read_file(dir / "manifest.json");
+  manifest.insert(1, "\"phone_set\": \"timit\", ");
+  transport::write_file_atomically(dir / "manifest.json", manifest);
+  const CorpusListing listing = list_corpus(dir);
+  EXPECT_EQ(listing.phone_set, CorpusPhoneSet::timit);
+  for (std::size_t u = 0; u < listing.utterances.size(); ++u) {
+    const CorpusTake take = read_corpus_take(listing, u);
+    const CorpusTake want = read_corpus_take(original, u);
+    EXPECT_EQ(take.phones, want.phones) << listing.utterances[u].id;
+    EXPECT_TRUE(same_take(take, want)) << listing.utterances[u].id;
+  }
+  fs::remove_all(dir);
+}
+
+// Named bad corpora (tests/data/corpus/bad-corpora/bad.NNN.<rule>/, made by
+// make_bad_corpora.py): each is refused with its rule, and the message is the golden one.
+TEST(VoiceCorpusBadCorpora, AreRefusedWithTheGoldenMessages) {
+  const fs::path root = fs::path(FAPCAST_TEST_DATA) / "corpus" / "bad-corpora";
+  std::map<std::string, std::string> golden;
+  {
+    std::istringstream lines(transport::read_file(root / "EXPECTED.txt"));
+    for (std::string line; std::getline(lines, line);)
+      if (!line.empty() && line[0] != '#') golden[line.substr(0, line.find('/'))] = line;
+  }
+  const bool regenerate = std::getenv("FAPCAST_REGENERATE") != nullptr;
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(root))
+    if (e.is_directory()) names.insert(e.path().filename().string());
+  ASSERT_GE(names.size(), 11u);
+  std::string regenerated;
+  for (const std::string& name : names) {
+    std::string message = "accepted";
+    try {
+      const CorpusListing listing = list_corpus(root / name);
+      for (std::size_t u = 0; u < listing.utterances.size(); ++u) (void)read_corpus_take(listing, u);
+    } catch (const InputError& e) {
+      message = e.what();
+      const std::string rule = name.substr(8);  // bad.NNN.<rule>
+      EXPECT_EQ(e.rule(), rule) << message;
+    }
+    const std::string prefix = (root / "").string();
+    if (message.rfind(prefix, 0) == 0) message = message.substr(prefix.size());
+    regenerated += message + "\n";
+    if (!regenerate) {
+      EXPECT_EQ(message, golden[name]) << name;
+    }
+  }
+  if (regenerate) {
+    std::ofstream(root / "EXPECTED.txt") << "# Golden refusals of the named bad corpora (regenerate: FAPCAST_REGENERATE=1 "
+                                            "fapcast_synth_tests --gtest_filter=*BadCorpora*)\n"
+                                         << regenerated;
+  }
+  EXPECT_EQ(golden.size(), names.size());
 }
 
 }  // namespace

@@ -188,3 +188,37 @@ TEST(Voice, RefusesTheContainersBadVoices) {
 
 }  // namespace
 }  // namespace fapcast::synth
+
+namespace fapcast::synth {
+namespace {
+
+// Voice::over_bytes runs open's checks on memory: it accepts the tiny voice (and the voice_open
+// fuzz target's seed, which is that voice with face maps) and refuses what open refuses.
+TEST(Voice, OverBytesChecksWhatOpenChecks) {
+  test::TinyVoice tiny;
+  tiny.face_maps = RowMajorMatrixXf::Identity(3, 9);
+  const std::string bytes = tiny.bytes();
+  const std::filesystem::path seed =
+      std::filesystem::path(FAPCAST_SOURCE_DIR) / "tests" / "fuzz" / "corpus" / "voice_open_fuzz" / "tiny-with-fmap.fapv";
+  if (std::getenv("FAPCAST_REGENERATE")) transport::write_file_atomically(seed, bytes);
+  for (const std::string& b : {bytes, transport::read_file(seed)}) {
+    std::vector<std::uint64_t> aligned(b.size() / 8 + 1);
+    std::memcpy(aligned.data(), b.data(), b.size());
+    const Voice voice = Voice::over_bytes({reinterpret_cast<const std::byte*>(aligned.data()), b.size()}, "<memory>");
+    EXPECT_EQ(voice.component_count(), 1);
+    ASSERT_TRUE(voice.face_maps().has_value());
+    EXPECT_EQ(voice.face_maps()->cols(), 9);
+  }
+  const std::string bad = transport::read_file(kBad / "bad.010.non-finite.FMAP.fapv");
+  std::vector<std::uint64_t> aligned(bad.size() / 8 + 1);
+  std::memcpy(aligned.data(), bad.data(), bad.size());
+  try {
+    (void)Voice::over_bytes({reinterpret_cast<const std::byte*>(aligned.data()), bad.size()}, "bad.fapv");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.rule(), "non-finite") << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace fapcast::synth

@@ -1,12 +1,14 @@
 // `fapcast voice build`, `voice info` and `eval retarget` end to end on a small SYNTHETIC
 // reference corpus, and their refusals of bad input.
 #include "support/bad_inputs.hpp"
+#include "support/corpus_conversion.hpp"
 #include "support/run_command.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
+#include "fapcast/synth/voice.hpp"
 #include "fapcast/transport/file_io.hpp"
 
 namespace fapcast::test {
@@ -59,6 +61,18 @@ TEST_F(VoiceCli, SameCorpusAndEpochGiveTheSameBytes) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;  // -q
   EXPECT_EQ(slurp(again), slurp(voice()));
+  // The same takes as TRC markers with .lab alignments (listed by manifest.json, which keeps the
+  // SYNTHETIC mark neither format carries): the same voice but for the provenance's corpus path.
+  const std::string trc = *dir_ + "/trc-lab";
+  convert_corpus(corpus(), trc, MarkerFormat::trc, AlignmentFormat::lab);
+  const auto t = run_command(fapcast("voice build -q " + trc + " -o " + *dir_ + "/trc.fapv"));
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  const synth::Voice from_c3d = synth::Voice::open(voice());
+  const synth::Voice from_trc = synth::Voice::open(*dir_ + "/trc.fapv");
+  EXPECT_EQ(from_trc.frame_coefficients(), from_c3d.frame_coefficients());
+  EXPECT_EQ(from_trc.pca_components(), from_c3d.pca_components());
+  EXPECT_EQ(from_trc.graph().size(), from_c3d.graph().size());
+  EXPECT_TRUE(from_trc.provenance().synthetic);
 }
 
 TEST_F(VoiceCli, EvalRetargetPrintsTheLipMeasures) {
@@ -83,6 +97,13 @@ TEST(VoiceCliBadInput, ExitsOneAndNamesTheProblem) {
   r = run_command(fapcast("voice build -q " + dir + " -o " + dir + "/x.fapv"));  // empty directory
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("corpus-empty"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/x.fapv"));
+  // One stem, two marker formats: refused naming both files (tests/data/corpus/bad-corpora).
+  const std::string ambiguous = std::string(FAPCAST_TEST_DATA) + "/corpus/bad-corpora/bad.001.corpus-ambiguous";
+  r = run_command(fapcast("voice build -q " + ambiguous + " -o " + dir + "/x.fapv"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("u1.c3d: corpus-ambiguous: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("u1.c3d and u1.trc"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/x.fapv"));
   // A truncated voice (the container's named example) and a missing one.
   const std::string cut = std::string(FAPCAST_TEST_DATA) + "/voice/bad/bad.005.truncated.fapv";

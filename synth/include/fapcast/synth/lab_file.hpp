@@ -4,6 +4,7 @@
 // as decimal seconds. The reader detects which: every time an integer -> HTK, otherwise seconds.
 #include "fapcast/synth/label_tier.hpp"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,7 +21,12 @@ struct LabFile {
   LabTimeUnit unit = LabTimeUnit::htk_100ns;
   std::vector<Interval> segments;             // seconds; sorted, non-overlapping, may be empty
   std::vector<std::optional<double>> scores;  // one per segment: HTK's optional 4th column
-  bool operator==(const LabFile&) const = default;
+  // One per segment as read: its 1-based line in the file, for messages (the writer ignores it,
+  // and equality does not compare it).
+  std::vector<std::uint64_t> lines;
+  bool operator==(const LabFile& other) const {
+    return unit == other.unit && segments == other.segments && scores == other.scores;
+  }
 };
 
 // Parses a .lab file. `unit` forces the time unit; nullopt detects it (see above). Blank lines

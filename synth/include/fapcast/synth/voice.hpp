@@ -40,6 +40,9 @@ class Voice {  // move-only
   // the provenance, the feature points (FPNT) and the phone graph (GRPH). InputError on any bad
   // file; std::runtime_error when it cannot be opened.
   static Voice open(const std::filesystem::path& path);
+  // The same checks on bytes the caller keeps alive for the voice's lifetime (8-byte aligned, as
+  // VoiceFileView::over_bytes wants); `source` names them in errors. For tests and fuzzing.
+  static Voice over_bytes(std::span<const std::byte> bytes, std::string source);
 
   Voice(Voice&&) noexcept;
   Voice& operator=(Voice&&) noexcept;
@@ -73,6 +76,8 @@ class Voice {  // move-only
   const VoiceFileView& file() const { return view_; }
 
  private:
+  // The voice-level checks (FPNT, GRPH, RPAR, FMAP ...) on a verified container.
+  static Voice from_view(VoiceFileView view);
   Voice(VoiceFileView view, VoiceProvenance provenance, std::vector<VoiceFeaturePoint> feature_points,
         std::vector<VoiceRigidMarker> rigid_markers, Eigen::MatrixXf frame_coefficients, PhoneGraph graph,
         std::vector<Phone> phones, std::vector<FrameSpan> utterances, RbfMap map);

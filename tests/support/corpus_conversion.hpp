@@ -1,0 +1,92 @@
+#pragma once
+// Rewrites a corpus as the reference talker writes it (manifest.json, C3D markers, TextGrid
+// alignments) in the other formats capture studios deliver: markers as TRC or marker CSV,
+// alignments as .lab (the "phones" tier; unlabelled intervals as "sil"), optionally at a higher
+// frame rate (each frame interval split into `upsample` linear steps, so resampling back to
+// 60 fps gives the original frames exactly). The manifest's file names and frame rates follow.
+// For the voice-build tests and the corpus-reading benchmark; SYNTHETIC data stays labelled so.
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "fapcast/synth/c3d.hpp"
+#include "fapcast/synth/lab_file.hpp"
+#include "fapcast/synth/marker_csv.hpp"
+#include "fapcast/synth/textgrid.hpp"
+#include "fapcast/synth/trc.hpp"
+#include "fapcast/transport/file_io.hpp"
+
+namespace fapcast::test {
+
+enum class MarkerFormat { c3d, trc, csv };
+enum class AlignmentFormat { textgrid, lab };
+
+inline std::string extension_of(MarkerFormat f) { return f == MarkerFormat::c3d ? ".c3d" : f == MarkerFormat::trc ? ".trc" : ".csv"; }
+
+// `set` with `factor` - 1 linearly interpolated frames between each pair (missing if either is).
+inline synth::MarkerSet upsampled(const synth::MarkerSet& set, int factor) {
+  if (factor == 1 || set.frame_count() == 0) return set;
+  const Eigen::Index frames = (set.frame_count() - 1) * factor + 1;
+  synth::MarkerSet out = synth::MarkerSet::zeros(frames, set.marker_count());
+  out.labels = set.labels;
+  out.frame_rate_hz = set.frame_rate_hz * factor;
+  for (Eigen::Index k = 0; k < frames; ++k) {
+    const Eigen::Index i = k / factor;
+    const double t = static_cast<double>(k % factor) / factor;
+    for (Eigen::Index m = 0; m < set.marker_count(); ++m) {
+      if (t == 0) {
+        out.missing(k, m) = set.missing(i, m);
+        out.set_position(k, m, set.position(i, m));
+      } else if (set.missing(i, m) || set.missing(i + 1, m)) {
+        out.missing(k, m) = true;
+      } else {
+        out.set_position(k, m, (1 - t) * set.position(i, m) + t * set.position(i + 1, m));
+      }
+    }
+  }
+  return out;
+}
+
+// Writes the converted corpus of `from` into `to` (created); returns nothing, throws on trouble.
+inline void convert_corpus(const std::filesystem::path& from, const std::filesystem::path& to, MarkerFormat markers,
+                           AlignmentFormat alignment, int upsample = 1) {
+  namespace fs = std::filesystem;
+  fs::create_directories(to);
+  nlohmann::json manifest = nlohmann::json::parse(transport::read_file(from / "manifest.json"));
+  const double rate = 60.0 * upsample;
+  manifest["frame_rate_hz"] = rate;
+  for (nlohmann::json& u : manifest["utterances"]) {
+    const std::string id = u["id"];
+    const std::string c3d_name = u["files"]["markers"];
+    const std::string grid_name = u["files"]["alignment"];
+    const synth::C3dFile c3d = synth::read_c3d(transport::read_file(from / c3d_name), c3d_name);
+    const synth::MarkerSet set = upsampled(c3d.markers, upsample);
+    const std::string marker_name = id + extension_of(markers);
+    transport::write_file_atomically(to / marker_name, markers == MarkerFormat::c3d   ? synth::write_c3d(set, {synth::c3d_synthetic_parameter()})
+                                                       : markers == MarkerFormat::trc ? synth::write_trc(set, marker_name)
+                                                                                      : synth::write_marker_csv(set));
+    std::string alignment_name = grid_name;
+    if (alignment == AlignmentFormat::lab) {
+      const synth::Alignment grid = synth::read_textgrid(transport::read_file(from / grid_name), grid_name);
+      const synth::LabelTier* phones = grid.find("phones");
+      if (phones == nullptr) throw std::runtime_error(grid_name + ": no phones tier");
+      synth::LabFile lab;
+      lab.unit = synth::LabTimeUnit::seconds;
+      for (synth::Interval iv : phones->intervals) {
+        if (iv.label.empty()) iv.label = "sil";
+        lab.segments.push_back(iv);
+      }
+      alignment_name = id + ".lab";
+      transport::write_file_atomically(to / alignment_name, synth::write_lab(lab));
+    } else {
+      fs::copy_file(from / grid_name, to / grid_name, fs::copy_options::overwrite_existing);
+    }
+    u["files"] = {{"markers", marker_name}, {"alignment", alignment_name}};
+    u["frame_rate_hz"] = rate;
+  }
+  transport::write_file_atomically(to / "manifest.json", manifest.dump(2) + "\n");
+}
+
+}  // namespace fapcast::test

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -21,7 +22,24 @@ Eigen::Index of(VisemeClass v) { return static_cast<Eigen::Index>(v); }
 struct JunctionBound::Lazy {
   std::once_flag once;
   DivisemePoints points;
+  std::atomic<std::size_t> computed{0};  // exit points computed per call so far
+  std::atomic<bool> tabled{false};
+  std::once_flag table_once;
+  std::vector<JunctionPoint> exit;       // every state of class `from`, in with_viseme order
 };
+
+namespace {
+
+// A row relative to c_a on the unit axis q: along = (row - c_a) . q, across = |r - along q|.
+JunctionPoint point_on_axis(const float* row, const Eigen::Ref<const Eigen::RowVectorXd>& centre,
+                            const Eigen::Ref<const Eigen::RowVectorXd>& axis, double slack_per_spread) {
+  const auto r = Eigen::Map<const Eigen::RowVectorXf>(row, centre.size()).cast<double>() - centre;  // no allocation
+  const double spread = r.squaredNorm(), along = r.dot(axis);
+  return {static_cast<float>(along), static_cast<float>(std::sqrt(std::max(0.0, spread - along * along))),
+          static_cast<float>(slack_per_spread * spread)};
+}
+
+}  // namespace
 
 JunctionBound::Shared::~Shared() = default;
 
@@ -73,27 +91,39 @@ const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass
     const Eigen::Index dims = f.entry.cols();
     const auto centre = s.centre.row(of(from));
     const auto axis = s.axis.row(of(from) * kClasses + of(to));
-    Eigen::RowVectorXd r(dims);
-    // A row relative to c_a, on the axis: along = r . q, across = |r - along q|.
-    auto point = [&](const float* row) {
-      r = Eigen::Map<const Eigen::RowVectorXf>(row, dims).cast<double>() - centre;
-      const double spread = r.squaredNorm(), along = r.dot(axis);
-      return JunctionPoint{static_cast<float>(along), static_cast<float>(std::sqrt(std::max(0.0, spread - along * along))),
-                           static_cast<float>(s.slack_per_spread * spread)};
-    };
     DivisemePoints& p = lazy.points;
     const auto entries = graph.entries(from, to);
     p.entry.resize(entries.size());
     p.entry_rows.resize(static_cast<Eigen::Index>(entries.size()), dims);
     for (std::size_t m = 0; m < entries.size(); ++m) {
-      p.entry[m] = point(f.entry.row(entries[m]).data());
+      p.entry[m] = point_on_axis(f.entry.row(entries[m]).data(), centre, axis, s.slack_per_spread);
       p.entry_rows.row(static_cast<Eigen::Index>(m)) = f.entry.row(entries[m]);
     }
-    const auto members = graph.with_viseme(from);
-    p.exit.resize(members.size());
-    for (std::size_t m = 0; m < members.size(); ++m) p.exit[m] = point(f.exit.row(members[m]).data());
   });
   return lazy.points;
+}
+
+void JunctionBound::exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to,
+                          std::span<const std::uint32_t> states, std::span<JunctionPoint> out) const {
+  const Shared& s = *shared_;
+  Lazy& lazy = s.divisemes[static_cast<std::size_t>(of(from) * kClasses + of(to))];
+  const auto& f = graph.junction();
+  const auto centre = s.centre.row(of(from));
+  const auto axis = s.axis.row(of(from) * kClasses + of(to));
+  const auto members = graph.with_viseme(from);
+  if (!lazy.tabled.load(std::memory_order_acquire) &&
+      lazy.computed.fetch_add(states.size(), std::memory_order_relaxed) < members.size()) {
+    for (std::size_t m = 0; m < states.size(); ++m)
+      out[m] = point_on_axis(f.exit.row(states[m]).data(), centre, axis, s.slack_per_spread);
+    return;
+  }
+  std::call_once(lazy.table_once, [&] {
+    lazy.exit.resize(members.size());
+    for (std::size_t m = 0; m < members.size(); ++m)
+      lazy.exit[m] = point_on_axis(f.exit.row(members[m]).data(), centre, axis, s.slack_per_spread);
+    lazy.tabled.store(true, std::memory_order_release);
+  });
+  for (std::size_t m = 0; m < states.size(); ++m) out[m] = lazy.exit[s.rank[states[m]]];
 }
 
 }  // namespace fapcast::synth

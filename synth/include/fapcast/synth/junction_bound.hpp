@@ -36,14 +36,11 @@ struct JunctionPoint {
   float slack = 0.0f;
 };
 
-// The points of one diviseme a b.
+// The entries of one diviseme a b in the order of PhoneGraph::entries(a, b): their points and
+// their entry rows, each contiguous (the search reads a diviseme's entries in one sweep).
 struct DivisemePoints {
-  // The entries of the diviseme in the order of PhoneGraph::entries(a, b): their points and their
-  // entry rows, each contiguous (the search reads a diviseme's entries in one sweep).
   std::vector<JunctionPoint> entry;
   Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> entry_rows;
-  // Every state of class a leaving towards b, in the order of PhoneGraph::with_viseme(a).
-  std::vector<JunctionPoint> exit;
 };
 
 class JunctionBound {
@@ -55,12 +52,17 @@ class JunctionBound {
 
   bool empty() const { return !shared_; }
 
-  // The points of diviseme (from, to), computed on the first call (safe from several threads)
-  // from `graph`, which must be the graph this bound was made from.
+  // The entry points of diviseme (from, to), computed on the first call (safe from several
+  // threads) from `graph`, which must be the graph this bound was made from.
   const DivisemePoints& points(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const;
 
-  // State i's exit point in `points` (i of the diviseme's class `from`).
-  JunctionPoint exit(const DivisemePoints& points, std::uint32_t i) const { return points.exit[shared_->rank[i]]; }
+  // The exit points of `states` (all of class `from`) on the axis of diviseme (from, to), into
+  // `out`. Computed per call until the diviseme has computed as many as its class has states;
+  // then every exit of the class is tabled once (safe from several threads) and read from there:
+  // a one-sentence search pays for its predecessors only, a long-running process for each
+  // point once. Either way the same values.
+  void exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to, std::span<const std::uint32_t> states,
+             std::span<JunctionPoint> out) const;
 
   // A lower bound on 2 C(i, j) for exit point x and entry point e of the same diviseme; may be
   // negative (then it bounds nothing).

@@ -5,8 +5,10 @@
 #include <Eigen/Core>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
+#include <mutex>
 
 namespace fapcast::synth {
 namespace {
@@ -15,88 +17,113 @@ constexpr auto kClasses = static_cast<Eigen::Index>(kVisemeClassCount);
 
 Eigen::Index of(VisemeClass v) { return static_cast<Eigen::Index>(v); }
 
-using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+}  // namespace
+
+struct JunctionBound::Lazy {
+  std::once_flag once;
+  DivisemePoints points;
+  std::atomic<std::size_t> computed{0};  // exit points computed per call so far
+  std::atomic<bool> tabled{false};
+  std::once_flag table_once;
+  std::vector<JunctionPoint> exit;       // every state of class `from`, in with_viseme order
+};
+
+namespace {
+
+// A row relative to c_a on the unit axis q: along = (row - c_a) . q, across = |r - along q|.
+JunctionPoint point_on_axis(const float* row, const Eigen::Ref<const Eigen::RowVectorXd>& centre,
+                            const Eigen::Ref<const Eigen::RowVectorXd>& axis, double slack_per_spread) {
+  const auto r = Eigen::Map<const Eigen::RowVectorXf>(row, centre.size()).cast<double>() - centre;  // no allocation
+  const double spread = r.squaredNorm(), along = r.dot(axis);
+  return {static_cast<float>(along), static_cast<float>(std::sqrt(std::max(0.0, spread - along * along))),
+          static_cast<float>(slack_per_spread * spread)};
+}
 
 }  // namespace
 
-JunctionBound::JunctionBound(const PhoneGraph& graph) {
+JunctionBound::Shared::~Shared() = default;
+
+JunctionBound::JunctionBound(const PhoneGraph& graph) : shared_(std::make_shared<Shared>()) {
   const auto& f = graph.junction();
   const auto n = static_cast<Eigen::Index>(graph.size());
   const Eigen::Index dims = f.entry.cols();
+  Shared& s = *shared_;
   // The float cost sums `dims` squares (relative error below dims eps of 2C <= 2 (E + X), with E
   // and X the two spreads below); the stored floats and the bound's float arithmetic add a few eps
   // of E + X. 32 (dims + 8) eps of each spread is far above both and far below any decision.
-  const double slack_per_spread = 32.0 * static_cast<double>(dims + 8) * std::numeric_limits<float>::epsilon();
-  auto state_class = [&](Eigen::Index i) { return of(graph.state(static_cast<StateId>(i)).viseme); };
+  s.slack_per_spread = 32.0 * static_cast<double>(dims + 8) * std::numeric_limits<float>::epsilon();
 
   // c_a: the mean exit row of class a.
-  Rows centre = Rows::Zero(kClasses, dims);
-  Eigen::VectorXd count = Eigen::VectorXd::Zero(kClasses);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    centre.row(state_class(i)) += f.exit.row(i).cast<double>();
-    count(state_class(i)) += 1.0;
+  s.centre = Rows::Zero(kClasses, dims);
+  for (Eigen::Index a = 0; a < kClasses; ++a) {
+    const auto members = graph.with_viseme(static_cast<VisemeClass>(a));
+    for (StateId i : members) s.centre.row(a) += f.exit.row(i).cast<double>();
+    if (!members.empty()) s.centre.row(a) /= static_cast<double>(members.size());
   }
-  for (Eigen::Index c = 0; c < kClasses; ++c)
-    if (count(c) > 0) centre.row(c) /= count(c);
+  s.rank.resize(static_cast<std::size_t>(n));
+  for (Eigen::Index a = 0; a < kClasses; ++a) {
+    const auto members = graph.with_viseme(static_cast<VisemeClass>(a));
+    for (std::size_t m = 0; m < members.size(); ++m) s.rank[members[m]] = static_cast<std::uint32_t>(m);
+  }
 
   // q_ab: from c_a towards the mean entry row of diviseme a b, unit length (zero when the two
   // coincide or the diviseme was never recorded: the bound stays valid, only weaker).
-  Rows axis = Rows::Zero(kClasses * kClasses, dims);
+  s.axis = Rows::Zero(kClasses * kClasses, dims);
+  Eigen::RowVectorXd towards(dims);
   for (Eigen::Index a = 0; a < kClasses; ++a)
     for (Eigen::Index b = 0; b < kClasses; ++b) {
       const auto entries = graph.entries(static_cast<VisemeClass>(a), static_cast<VisemeClass>(b));
       if (entries.empty()) continue;
-      Eigen::RowVectorXd towards = -centre.row(a);
-      for (StateId j : entries) towards += f.entry.row(j).cast<double>() / static_cast<double>(entries.size());
+      towards.setZero();
+      for (StateId j : entries) towards += f.entry.row(j).cast<double>();
+      towards = towards / static_cast<double>(entries.size()) - s.centre.row(a);
       const double norm = towards.norm();
-      if (norm > 0.0 && std::isfinite(norm)) axis.row(a * kClasses + b) = towards / norm;
+      if (norm > 0.0 && std::isfinite(norm)) s.axis.row(a * kClasses + b) = towards / norm;
     }
+  s.divisemes = std::make_unique<Lazy[]>(kVisemeClassCount * kVisemeClassCount);
+}
 
-  auto on_axis = [](double spread, double along) {
-    return OnAxis{static_cast<float>(along), static_cast<float>(std::sqrt(std::max(0.0, spread - along * along)))};
-  };
-  entry_.assign(static_cast<std::size_t>(n), {});
-  for (Eigen::Index j = 0; j < n; ++j) {
-    if (!graph.has_parent(static_cast<StateId>(j))) continue;
-    const Eigen::Index a = state_class(j - 1);
-    const Eigen::RowVectorXd r = f.entry.row(j).cast<double>() - centre.row(a);
-    const double spread = r.squaredNorm();
-    const OnAxis p = on_axis(spread, r.dot(axis.row(a * kClasses + state_class(j))));
-    entry_[static_cast<std::size_t>(j)] = {p.along, p.across, static_cast<float>(slack_per_spread * spread)};
-  }
-  offset_.assign(kVisemeClassCount * kVisemeClassCount + 1, 0);
-  for (std::size_t d = 0; d < kVisemeClassCount * kVisemeClassCount; ++d)
-    offset_[d + 1] = offset_[d] + graph.entries(static_cast<VisemeClass>(d / kVisemeClassCount),
-                                                static_cast<VisemeClass>(d % kVisemeClassCount)).size();
-  entry_by_diviseme_.resize(offset_.back());
-  entry_rows_.resize(static_cast<Eigen::Index>(offset_.back()), dims);
-  for (std::size_t d = 0; d < kVisemeClassCount * kVisemeClassCount; ++d) {
-    const auto entries = graph.entries(static_cast<VisemeClass>(d / kVisemeClassCount),
-                                       static_cast<VisemeClass>(d % kVisemeClassCount));
+const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const {
+  Lazy& lazy = shared_->divisemes[static_cast<std::size_t>(of(from) * kClasses + of(to))];
+  std::call_once(lazy.once, [&] {
+    const Shared& s = *shared_;
+    const auto& f = graph.junction();
+    const Eigen::Index dims = f.entry.cols();
+    const auto centre = s.centre.row(of(from));
+    const auto axis = s.axis.row(of(from) * kClasses + of(to));
+    DivisemePoints& p = lazy.points;
+    const auto entries = graph.entries(from, to);
+    p.entry.resize(entries.size());
+    p.entry_rows.resize(static_cast<Eigen::Index>(entries.size()), dims);
     for (std::size_t m = 0; m < entries.size(); ++m) {
-      entry_by_diviseme_[offset_[d] + m] = entry_[entries[m]];
-      entry_rows_.row(static_cast<Eigen::Index>(offset_[d] + m)) = f.entry.row(entries[m]);
+      p.entry[m] = point_on_axis(f.entry.row(entries[m]).data(), centre, axis, s.slack_per_spread);
+      p.entry_rows.row(static_cast<Eigen::Index>(m)) = f.entry.row(entries[m]);
     }
+  });
+  return lazy.points;
+}
+
+void JunctionBound::exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to,
+                          std::span<const std::uint32_t> states, std::span<JunctionPoint> out) const {
+  const Shared& s = *shared_;
+  Lazy& lazy = s.divisemes[static_cast<std::size_t>(of(from) * kClasses + of(to))];
+  const auto& f = graph.junction();
+  const auto centre = s.centre.row(of(from));
+  const auto axis = s.axis.row(of(from) * kClasses + of(to));
+  const auto members = graph.with_viseme(from);
+  if (!lazy.tabled.load(std::memory_order_acquire) &&
+      lazy.computed.fetch_add(states.size(), std::memory_order_relaxed) < members.size()) {
+    for (std::size_t m = 0; m < states.size(); ++m)
+      out[m] = point_on_axis(f.exit.row(states[m]).data(), centre, axis, s.slack_per_spread);
+    return;
   }
-  // Every exit on every axis of its class: one product per class, (states of a) x (axes of a).
-  exit_.resize(static_cast<std::size_t>(n * kClasses));
-  exit_slack_.resize(static_cast<std::size_t>(n));
-  for (Eigen::Index a = 0; a < kClasses; ++a) {
-    const auto members = graph.with_viseme(static_cast<VisemeClass>(a));
-    if (members.empty()) continue;
-    Rows r(static_cast<Eigen::Index>(members.size()), dims);
+  std::call_once(lazy.table_once, [&] {
+    lazy.exit.resize(members.size());
     for (std::size_t m = 0; m < members.size(); ++m)
-      r.row(static_cast<Eigen::Index>(m)) = f.exit.row(members[m]).cast<double>() - centre.row(a);
-    const Eigen::MatrixXd along = r * axis.middleRows(a * kClasses, kClasses).transpose();  // members x classes
-    for (std::size_t m = 0; m < members.size(); ++m) {
-      const auto row = static_cast<Eigen::Index>(m);
-      const double spread = r.row(row).squaredNorm();
-      exit_slack_[members[m]] = static_cast<float>(slack_per_spread * spread);
-      for (Eigen::Index b = 0; b < kClasses; ++b)
-        exit_[static_cast<std::size_t>(members[m]) * kVisemeClassCount + static_cast<std::size_t>(b)] =
-            on_axis(spread, along(row, b));
-    }
-  }
+      lazy.exit[m] = point_on_axis(f.exit.row(members[m]).data(), centre, axis, s.slack_per_spread);
+    lazy.tabled.store(true, std::memory_order_release);
+  });
+  for (std::size_t m = 0; m < states.size(); ++m) out[m] = lazy.exit[s.rank[states[m]]];
 }
 
 }  // namespace fapcast::synth

@@ -107,6 +107,8 @@ struct Diviseme {
 // Buffers the join loop reuses from step to step.
 struct JoinScratch {
   std::vector<Predecessor> pred;
+  std::vector<StateId> pred_state;     // the predecessors' states, in prev order
+  std::vector<JunctionPoint> pred_point;  // and their exit points on the diviseme's axis
   std::vector<double> floor;           // per target
   std::vector<std::uint32_t> order;    // targets, the cap's worth with the lowest floor first
 };
@@ -186,18 +188,24 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
   const auto& bound = graph.junction_bound();
   const bool bounded = diviseme && !bound.empty();
   // A bounded sweep reads the diviseme's entry rows and points where they lie contiguously.
-  const std::span<const JunctionPoint> entry_point = bounded ? bound.entry_points(diviseme->from, diviseme->to)
-                                                             : std::span<const JunctionPoint>{};
-  const float* entry_rows = bounded ? bound.entry_rows(diviseme->from, diviseme->to) : nullptr;
+  const DivisemePoints* points = bounded ? &bound.points(graph, diviseme->from, diviseme->to) : nullptr;
+  const std::span<const JunctionPoint> entry_point = bounded ? std::span(points->entry) : std::span<const JunctionPoint>{};
+  const float* entry_rows = bounded ? points->entry_rows.data() : nullptr;
   const double half_beta = 0.5 * beta;
   const std::size_t preds = prev.size();
 
   auto& p = scratch.pred;
   p.resize(preds);
+  scratch.pred_point.assign(preds, JunctionPoint{});
+  if (bounded) {
+    scratch.pred_state.resize(preds);
+    for (std::uint32_t a = 0; a < preds; ++a) scratch.pred_state[a] = prev[a].state;
+    bound.exits(graph, diviseme->from, diviseme->to, scratch.pred_state, scratch.pred_point);
+  }
   for (std::uint32_t a = 0; a < preds; ++a) {
     const StateId i = prev[a].state;
     const double base = prev[a].cost + 1.0;
-    p[a] = {base, base, bounded ? bound.exit(i, diviseme->to) : JunctionPoint{}, a, i, f.exit.row(i).data()};
+    p[a] = {base, base, scratch.pred_point[a], a, i, f.exit.row(i).data()};
   }
   auto& floor = scratch.floor;
   floor.assign(targets.size(), 0.0);

@@ -97,8 +97,9 @@ void BM_SearchAndRender(benchmark::State& state) {
 BENCHMARK(BM_SearchAndRender)->Unit(benchmark::kMillisecond);
 
 // What opening a voice pays for the search. Arg 0: the graph's indices alone; 1: the junction
-// features alone (from the PCA frames); 2: both and the junction bound (every exit on every axis
-// of its class), i.e. what Voice::open does. The bound costs (2) - (1) - (0).
+// features alone (from the PCA frames); 2: both and the junction bound's centres and axes (its
+// points are made per diviseme on first use), i.e. what Voice::open does. The bound costs
+// (2) - (1) - (0).
 void BM_GraphOpen(benchmark::State& state) {
   const World& w = world();
   for (auto _ : state) {
@@ -115,6 +116,21 @@ void BM_GraphOpen(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_GraphOpen)->ArgName("what")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+
+// A one-sentence `fapcast say`: open the graph, then one 10 s search at the default (beta 0.1,
+// cap 64), which makes the bound's points of the divisemes it joins into. Arg: prune joins (1)
+// or evaluate every join (0: the reference, which never makes the points).
+void BM_OpenAndSearchOnce(benchmark::State& state) {
+  const World& w = world();
+  SearchResult r;
+  for (auto _ : state) {
+    PhoneGraph g(w.states, junction_features(w.states, w.frames));
+    r = unit_search(g, w.targets, {0.1, 64, state.range(0) != 0});
+    benchmark::DoNotOptimize(r.cost);
+  }
+  report(state, r);
+}
+BENCHMARK(BM_OpenAndSearchOnce)->ArgName("prune")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

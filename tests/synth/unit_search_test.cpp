@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <functional>
 #include <limits>
@@ -187,8 +188,16 @@ TEST(JunctionBound, NeverExceedsTheJunctionCost) {
         const auto& bound = g.junction_bound();
         for (StateId j = 0; j < g.size(); ++j) {
           if (!g.has_parent(j)) continue;
-          for (StateId i : g.with_viseme(g.state(j - 1).viseme)) {
-            const float floor = JunctionBound::twice_cost_floor(bound.entry(j), bound.exit(i, g.state(j).viseme));
+          const VisemeClass from = g.state(j - 1).viseme, to = g.state(j).viseme;
+          const DivisemePoints& points = bound.points(g, from, to);
+          const auto entries = g.entries(from, to);
+          const auto m = static_cast<std::size_t>(std::find(entries.begin(), entries.end(), j) - entries.begin());
+          ASSERT_LT(m, entries.size());
+          for (StateId i : g.with_viseme(from)) {
+            // Computed per call at first, then from the diviseme's table (the same values).
+            JunctionPoint exit;
+            bound.exits(g, from, to, std::span(&i, 1), std::span(&exit, 1));
+            const float floor = JunctionBound::twice_cost_floor(points.entry[m], exit);
             ASSERT_LE(floor, 2.0f * junction_cost(g, i, j)) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
             ++pairs;
           }

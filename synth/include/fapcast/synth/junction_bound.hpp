@@ -11,11 +11,16 @@
 // with s_j = |r_j|, t_i = |r_i| (reverse triangle inequality). The bound is tight where the
 // classes differ along q_ab (the usual case: an /m/ exit against an /aa/ entry) and never
 // exceeds the cost.
+//
+// Opening a voice computes only the centres and axes (O(states x 2k)); the points of a diviseme
+// are computed the first time a search joins into it (O((states of a + entries of a b) x 2k)), so
+// a one-sentence synthesis pays for the few divisemes it uses, not for all of them.
 #include "fapcast/synth/viseme.hpp"
 
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -31,35 +36,33 @@ struct JunctionPoint {
   float slack = 0.0f;
 };
 
+// The entries of one diviseme a b in the order of PhoneGraph::entries(a, b): their points and
+// their entry rows, each contiguous (the search reads a diviseme's entries in one sweep).
+struct DivisemePoints {
+  std::vector<JunctionPoint> entry;
+  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> entry_rows;
+};
+
 class JunctionBound {
  public:
   JunctionBound() = default;  // no junction features: no bound (empty())
-  // O(states x 2k). The graph must have junction features.
-  // O(states x classes x 2k) once: every state's exit point on the axis of each of its divisemes
-  // is computed here (in double), so that the search only reads them.
+  // O(states x 2k): the class centres and the diviseme axes. The graph must have junction
+  // features.
   explicit JunctionBound(const PhoneGraph& graph);
 
-  bool empty() const { return entry_.empty(); }
+  bool empty() const { return !shared_; }
 
-  // State j as the entry of its own diviseme (class of its parent, class of j); j must have a
-  // parent. Precomputed.
-  const JunctionPoint& entry(std::uint32_t j) const { return entry_[j]; }
+  // The entry points of diviseme (from, to), computed on the first call (safe from several
+  // threads) from `graph`, which must be the graph this bound was made from.
+  const DivisemePoints& points(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const;
 
-  // The entries of diviseme (from, to) in the order of PhoneGraph::entries(from, to): their points
-  // and their entry rows, each contiguous (the search reads a diviseme's entries in one sweep).
-  std::span<const JunctionPoint> entry_points(VisemeClass from, VisemeClass to) const {
-    const auto d = diviseme(from, to);
-    return std::span(entry_by_diviseme_).subspan(offset_[d], offset_[d + 1] - offset_[d]);
-  }
-  const float* entry_rows(VisemeClass from, VisemeClass to) const {
-    return entry_rows_.data() + static_cast<std::ptrdiff_t>(offset_[diviseme(from, to)]) * entry_rows_.cols();
-  }
-
-  // State i leaving a unit towards class `to`, on the axis of diviseme (class(i), to).
-  JunctionPoint exit(std::uint32_t i, VisemeClass to) const {
-    const auto& p = exit_[static_cast<std::size_t>(i) * kVisemeClassCount + static_cast<std::size_t>(to)];
-    return {p.along, p.across, exit_slack_[i]};
-  }
+  // The exit points of `states` (all of class `from`) on the axis of diviseme (from, to), into
+  // `out`. Computed per call until the diviseme has computed as many as its class has states;
+  // then every exit of the class is tabled once (safe from several threads) and read from there:
+  // a one-sentence search pays for its predecessors only, a long-running process for each
+  // point once. Either way the same values.
+  void exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to, std::span<const std::uint32_t> states,
+             std::span<JunctionPoint> out) const;
 
   // A lower bound on 2 C(i, j) for exit point x and entry point e of the same diviseme; may be
   // negative (then it bounds nothing).
@@ -69,19 +72,18 @@ class JunctionBound {
   }
 
  private:
-  struct OnAxis {
-    float along, across;
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+  struct Lazy;
+  struct Shared {
+    Rows centre;                       // c_a, per class
+    Rows axis;                         // q_ab, per diviseme (zero when not recorded)
+    double slack_per_spread = 0.0;
+    std::vector<std::uint32_t> rank;   // a state's index in PhoneGraph::with_viseme(its class)
+    std::unique_ptr<Lazy[]> divisemes; // per diviseme, filled on first use
+    ~Shared();
   };
-  static std::size_t diviseme(VisemeClass from, VisemeClass to) {
-    return static_cast<std::size_t>(from) * kVisemeClassCount + static_cast<std::size_t>(to);
-  }
-  std::vector<JunctionPoint> entry_;  // per state (zero for states without a parent)
-  // The same points and the entry rows again, grouped by diviseme: [offset_[d], offset_[d + 1]).
-  std::vector<std::size_t> offset_;
-  std::vector<JunctionPoint> entry_by_diviseme_;
-  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> entry_rows_;
-  std::vector<OnAxis> exit_;          // per state and class `to`
-  std::vector<float> exit_slack_;     // per state
+  // Shared by copies of the graph (the points depend only on the features, which copies share).
+  std::shared_ptr<Shared> shared_;
 };
 
 }  // namespace fapcast::synth

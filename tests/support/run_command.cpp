@@ -10,14 +10,40 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
+#include <utility>
+#include <vector>
 
 namespace fapcast::test {
 
 namespace fs = std::filesystem;
 
+namespace {
+// The directories make_temp_dir handed out, removed when the test process exits: /tmp is not
+// cleaned on the machines CI runs on, and a suite run leaves hundreds of them otherwise.
+class TempDirs {
+ public:
+  ~TempDirs() {
+    for (const auto& dir : dirs_) {
+      std::error_code ignored;  // a test may have removed it already
+      fs::remove_all(dir, ignored);
+    }
+  }
+  void add(std::string dir) { dirs_.push_back(std::move(dir)); }
+
+ private:
+  std::vector<std::string> dirs_;
+};
+TempDirs& temp_dirs() {
+  static TempDirs dirs;
+  return dirs;
+}
+}  // namespace
+
 std::string make_temp_dir(const std::string& tag) {
   std::string pattern = (fs::temp_directory_path() / ("fapcast-" + tag + "-XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+  temp_dirs().add(pattern);
   return pattern;
 }
 

@@ -105,6 +105,28 @@ BENCHMARK(BM_Synthesize)
     ->Args({10, 16, 0})->Args({10, 16, 1})
     ->Unit(benchmark::kMillisecond);
 
+// The unit search alone of BM_Synthesize: the same graph and the same 114 target classes (read
+// off the states its search chose, so after any substitution).
+void BM_SearchOnly(benchmark::State& state) {
+  const World& w = world();
+  const auto options = options_of(state);
+  const auto track = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+  std::vector<synth::VisemeClass> targets;
+  for (const synth::StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
+  synth::SynthesizedTrack s;
+  for (auto _ : state) {
+    s.search = synth::unit_search(*w.voice.graph, targets, options.search);
+    benchmark::DoNotOptimize(s.search.cost);
+  }
+  s.timeline = track.timeline;
+  report(state, s);
+}
+BENCHMARK(BM_SearchOnly)
+    ->ArgNames({"beta100", "cap", "prune"})
+    ->Args({0, 0, 1})->Args({10, 0, 0})->Args({10, 0, 1})
+    ->Args({10, 64, 0})->Args({10, 64, 1})->Args({10, 16, 1})
+    ->Unit(benchmark::kMillisecond);
+
 // Phones -> FAP frames at 25 fps (what `say` writes, without TTS and file output).
 void BM_PhonesToFaps(benchmark::State& state) {
   const World& w = world();

@@ -98,7 +98,10 @@ const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass
     for (std::size_t m = 0; m < entries.size(); ++m) {
       p.entry[m] = point_on_axis(f.entry.row(entries[m]).data(), centre, axis, s.slack_per_spread);
       p.entry_rows.row(static_cast<Eigen::Index>(m)) = f.entry.row(entries[m]);
+      p.along_mean += p.entry[m].along, p.across_mean += p.entry[m].across;
     }
+    if (!entries.empty())
+      p.along_mean /= static_cast<double>(entries.size()), p.across_mean /= static_cast<double>(entries.size());
   });
   return lazy.points;
 }

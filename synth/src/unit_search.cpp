@@ -33,23 +33,23 @@ class StepBuilder {
  public:
   explicit StepBuilder(std::size_t states) : slot_(states, kNoBack) {}
 
-  bool has(StateId j) const { return slot_[j] != kNoBack; }
-
-  void offer(StateId j, double cost, std::uint32_t back, bool joined) {
+  // Offers j at `cost` (kept when cheaper than its offer so far); true when j is new to the step.
+  bool offer(StateId j, double cost, std::uint32_t back, bool joined) {
     std::uint32_t& s = slot_[j];
     if (s == kNoBack) {
       s = static_cast<std::uint32_t>(out_.size());
       out_.push_back({j, cost, back, joined});
-    } else if (cost < out_[s].cost) {
-      out_[s] = {j, cost, back, joined};
+      return true;
     }
+    if (cost < out_[s].cost) out_[s] = {j, cost, back, joined};
+    return false;
   }
 
-  std::vector<Active> take() {
+  bool empty() const { return out_.empty(); }
+  // Ends the step: its actives, to prune and copy out; clear them before the next offer.
+  std::vector<Active>& finish() {
     for (const auto& a : out_) slot_[a.state] = kNoBack;
-    std::vector<Active> next;
-    next.reserve(out_.size());  // the next step is usually about as large
-    return std::exchange(out_, std::move(next));
+    return out_;
   }
 
  private:
@@ -66,13 +66,11 @@ class CapLimit {
 
   void add(double cost) {
     if (cap_ == 0) return;
-    if (heap_.size() < cap_) {
+    if (heap_.size() < cap_) {  // no limit until the cap's worth; then one O(cap) heap
       heap_.push_back(cost);
-      std::push_heap(heap_.begin(), heap_.end());
+      if (heap_.size() == cap_) std::make_heap(heap_.begin(), heap_.end());
     } else if (cost < heap_.front()) {
-      std::pop_heap(heap_.begin(), heap_.end());
-      heap_.back() = cost;
-      std::push_heap(heap_.begin(), heap_.end());
+      replace_largest(cost);
     }
   }
 
@@ -83,6 +81,19 @@ class CapLimit {
   void clear() { heap_.clear(); }
 
  private:
+  // Puts `cost` in place of the heap's largest and sifts it down (half of a pop and a push).
+  void replace_largest(double cost) {
+    const std::size_t n = heap_.size();
+    std::size_t at = 0;
+    for (std::size_t child = 1; child < n; child = 2 * at + 1) {
+      if (child + 1 < n && heap_[child] < heap_[child + 1]) ++child;
+      if (!(cost < heap_[child])) break;
+      heap_[at] = heap_[child];
+      at = child;
+    }
+    heap_[at] = cost;
+  }
+
   std::size_t cap_;
   std::vector<double> heap_;  // max-heap of the cap smallest costs
 };
@@ -106,7 +117,8 @@ struct Diviseme {
 
 // Buffers the join loop reuses from step to step.
 struct JoinScratch {
-  std::vector<Predecessor> pred;
+  std::vector<Predecessor> pred;       // in ascending key
+  std::vector<std::pair<double, std::uint32_t>> by_key;  // (key, index into prev), to sort
   std::vector<StateId> pred_state;     // the predecessors' states, in prev order
   std::vector<JunctionPoint> pred_point;  // and their exit points on the diviseme's axis
   std::vector<double> floor;           // per target
@@ -150,7 +162,7 @@ double clearly_above(double cost) { return cost + 1e-12 * (1.0 + std::abs(cost))
 
 // Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j).
 // The reference: every pair evaluated.
-void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
+void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
                       std::span<const StateId> targets, double beta, StepBuilder& step) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
@@ -179,7 +191,7 @@ void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
 // differ little, so the last line is small: reading predecessors in ascending key, a target
 // stops at the first whose key_n + floor_j exceeds its best join (or what the cap keeps), usually
 // after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0).
-void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev,
+void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
                         std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
                         std::optional<std::size_t> max_active, CapLimit& cap, StepBuilder& step,
                         JoinScratch& scratch) {
@@ -194,39 +206,44 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
   const double half_beta = 0.5 * beta;
   const std::size_t preds = prev.size();
 
-  auto& p = scratch.pred;
-  p.resize(preds);
-  scratch.pred_point.assign(preds, JunctionPoint{});
-  if (bounded) {
-    scratch.pred_state.resize(preds);
-    for (std::uint32_t a = 0; a < preds; ++a) scratch.pred_state[a] = prev[a].state;
-    bound.exits(graph, diviseme->from, diviseme->to, scratch.pred_state, scratch.pred_point);
-  }
-  for (std::uint32_t a = 0; a < preds; ++a) {
-    const StateId i = prev[a].state;
-    const double base = prev[a].cost + 1.0;
-    p[a] = {base, base, scratch.pred_point[a], a, i, f.exit.row(i).data()};
-  }
+  auto& point = scratch.pred_point;
+  auto& by_key = scratch.by_key;
+  by_key.resize(preds);
   auto& floor = scratch.floor;
   floor.assign(targets.size(), 0.0);
   if (bounded) {
-    double u_mean = 0.0, s_mean = 0.0, v_mean = 0.0, t_mean = 0.0;
-    for (const JunctionPoint& e : entry_point) u_mean += e.along, s_mean += e.across;
-    u_mean /= static_cast<double>(targets.size()), s_mean /= static_cast<double>(targets.size());
-    for (const Predecessor& x : p) v_mean += x.point.along, t_mean += x.point.across;
+    scratch.pred_state.resize(preds);
+    point.resize(preds);
+    for (std::uint32_t a = 0; a < preds; ++a) scratch.pred_state[a] = prev[a].state;
+    bound.exits(graph, diviseme->from, diviseme->to, scratch.pred_state, point);
+    const double u_mean = points->along_mean, s_mean = points->across_mean;
+    double v_mean = 0.0, t_mean = 0.0;
+    for (const JunctionPoint& x : point) v_mean += x.along, t_mean += x.across;
     v_mean /= static_cast<double>(preds), t_mean /= static_cast<double>(preds);
     double v_reach = 0.0, t_reach = 0.0;
-    for (Predecessor& x : p) {
-      const double v = x.point.along, t = x.point.across;
+    for (std::uint32_t a = 0; a < preds; ++a) {
+      const double v = point[a].along, t = point[a].across;
       v_reach = std::max(v_reach, std::abs(v - v_mean)), t_reach = std::max(t_reach, std::abs(t - t_mean));
-      x.key = x.base + half_beta * (v * v + t * t - x.point.slack) - beta * (u_mean * v + s_mean * t);
+      by_key[a] = {prev[a].cost + 1.0 + half_beta * (v * v + t * t - point[a].slack) - beta * (u_mean * v + s_mean * t), a};
     }
     for (std::size_t b = 0; b < targets.size(); ++b) {
       const JunctionPoint& e = entry_point[b];
       const double u = e.along, s = e.across, du = u - u_mean, ds = s - s_mean;
-      floor[b] = half_beta * (u * u + s * s - e.slack) - beta * (du * v_mean + ds * t_mean) -
-                 beta * (std::abs(du) * v_reach + std::abs(ds) * t_reach);
+      floor[b] = half_beta * (u * u + s * s - e.slack) -
+                 beta * (du * v_mean + ds * t_mean + std::abs(du) * v_reach + std::abs(ds) * t_reach);
     }
+  } else {
+    point.assign(preds, JunctionPoint{});
+    for (std::uint32_t a = 0; a < preds; ++a) by_key[a] = {prev[a].cost + 1.0, a};
+  }
+  // Ascending key; ties in any order (a choice never depends on reading order, see Choice).
+  std::sort(by_key.begin(), by_key.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  auto& p = scratch.pred;
+  p.resize(preds);
+  for (std::size_t r = 0; r < preds; ++r) {
+    const auto [key, a] = by_key[r];
+    const StateId i = prev[a].state;
+    p[r] = {key, prev[a].cost + 1.0, point[a], a, i, f.exit.row(i).data()};
   }
   // With a cap, the targets most likely to be kept (lowest floor) go first, so that the cap's
   // limit is tight when the others are read (order changes work, never a result).
@@ -236,8 +253,6 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
   if (bounded && max_active && *max_active < targets.size())
     std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(*max_active), order.end(),
                      [&](std::uint32_t x, std::uint32_t y) { return floor[x] < floor[y]; });
-  // Ascending key; ties in any order (a choice never depends on reading order, see Choice).
-  std::sort(p.begin(), p.end(), [](const Predecessor& x, const Predecessor& y) { return x.key < y.key; });
 
   join_with_width(f.entry.cols(), [&]<Eigen::Index Dims>() {
     for (const std::uint32_t b : order) {
@@ -253,16 +268,15 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
           stop = clearly_above(best.cost) - floor[b];
       }
       if (best.back == kNoBack) continue;  // dearer than the cap keeps
-      const bool continued = step.has(j);  // its continuation already bounds its cost
-      step.offer(j, best.cost, best.back, true);
-      if (!continued) cap.add(best.cost);
+      // A state already offered (by its continuation) is already bounded in the cap.
+      if (step.offer(j, best.cost, best.back, true)) cap.add(best.cost);
     }
   });
 }
 
 // Offers the joins into `targets` (the entries of `diviseme` when set, else any states).
 // With beta = 0 (or no features) C drops out and the cheapest active wins every join.
-void offer_joins(const PhoneGraph& graph, const std::vector<Active>& prev, std::span<const StateId> targets,
+void offer_joins(const PhoneGraph& graph, std::span<const Active> prev, std::span<const StateId> targets,
                  std::optional<Diviseme> diviseme, const SearchOptions& options, CapLimit& cap, StepBuilder& step,
                  JoinScratch& scratch) {
   if (targets.empty() || prev.empty()) return;
@@ -276,11 +290,15 @@ void offer_joins(const PhoneGraph& graph, const std::vector<Active>& prev, std::
   offer_pruned_joins(graph, prev, targets, diviseme, options.beta, options.max_active, cap, step, scratch);
 }
 
-void prune(std::vector<Active>& actives, std::optional<std::size_t> cap) {
+// Keeps the cap's worth of cheapest actives. `limit` is at least the cap-th smallest cost (see
+// CapLimit): whatever costs more is dropped before the selection.
+void prune(std::vector<Active>& actives, std::optional<std::size_t> cap, double limit) {
   if (!cap || actives.size() <= *cap) return;
-  const auto keep = static_cast<std::ptrdiff_t>(std::max<std::size_t>(*cap, 1));
-  std::nth_element(actives.begin(), actives.begin() + keep - 1, actives.end(), better);
-  actives.resize(static_cast<std::size_t>(keep));
+  const auto keep = std::max<std::size_t>(*cap, 1);
+  std::erase_if(actives, [limit](const Active& a) { return a.cost > limit; });
+  if (actives.size() <= keep) return;
+  std::nth_element(actives.begin(), actives.begin() + static_cast<std::ptrdiff_t>(keep) - 1, actives.end(), better);
+  actives.resize(keep);
 }
 
 }  // namespace
@@ -296,17 +314,29 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
                                   std::string(viseme_class_name(targets[t])) + " (target phone " +
                                   std::to_string(t) + ")");
 
-  std::vector<std::vector<Active>> steps(targets.size());
+  // The actives of every step, one after the other: step t is trail[begin[t], begin[t + 1]).
+  std::vector<Active> trail;
+  std::vector<std::size_t> begin{0};
+  if (options.max_active) trail.reserve(targets.size() * std::max<std::size_t>(*options.max_active, 1));
   StepBuilder builder(graph.size());
-  for (StateId j : graph.with_viseme(targets[0])) builder.offer(j, 1.0, kNoBack, true);
-  steps[0] = builder.take();
-  prune(steps[0], options.max_active);
-  result.stats.active_per_step.push_back(steps[0].size());
-
   CapLimit cap(options.max_active);
+  const auto close_step = [&] {
+    auto& actives = builder.finish();
+    // The reference path does without the cap's limit (prune's selection alone keeps the same).
+    prune(actives, options.max_active, options.prune_joins ? cap.limit() : std::numeric_limits<double>::infinity());
+    trail.insert(trail.end(), actives.begin(), actives.end());
+    begin.push_back(trail.size());
+    result.stats.active_per_step.push_back(actives.size());
+    actives.clear();
+  };
+  const auto step = [&](std::size_t t) { return std::span(trail).subspan(begin[t], begin[t + 1] - begin[t]); };
+  result.stats.active_per_step.reserve(targets.size());
+  for (StateId j : graph.with_viseme(targets[0])) builder.offer(j, 1.0, kNoBack, true);
+  close_step();
+
   JoinScratch scratch;
   for (std::size_t t = 1; t < targets.size(); ++t) {
-    const auto& prev = steps[t - 1];
+    const auto prev = step(t - 1);
     cap.clear();
     // Within a recording: the next phone, free.
     for (std::uint32_t a = 0; a < prev.size(); ++a) {
@@ -319,26 +349,24 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
     // Across recordings: states whose parent looks like the phone we leave.
     offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), Diviseme{targets[t - 1], targets[t]}, options,
                 cap, builder, scratch);
-    steps[t] = builder.take();
-    if (steps[t].empty()) {  // the voice never recorded this diviseme: join anywhere that matches
+    if (builder.empty()) {  // the voice never recorded this diviseme: join anywhere that matches
       ++result.stats.hard_joins;
       offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, cap, builder, scratch);
-      steps[t] = builder.take();
     }
-    prune(steps[t], options.max_active);
-    result.stats.active_per_step.push_back(steps[t].size());
+    close_step();
   }
 
   // Back-trace from the cheapest final state.
-  const auto& last = steps.back();
+  const auto last = step(targets.size() - 1);
   std::uint32_t a = static_cast<std::uint32_t>(std::min_element(last.begin(), last.end(), better) - last.begin());
   result.cost = last[a].cost;
   result.states.resize(targets.size());
   std::vector<bool> joined(targets.size());
   for (std::size_t t = targets.size(); t-- > 0;) {
-    result.states[t] = steps[t][a].state;
-    joined[t] = steps[t][a].joined;
-    a = steps[t][a].back;
+    const Active& at = step(t)[a];
+    result.states[t] = at.state;
+    joined[t] = at.joined;
+    a = at.back;
   }
   for (std::size_t t = 0; t < targets.size(); ++t) {
     if (joined[t]) result.units.push_back({result.states[t], t, 0});

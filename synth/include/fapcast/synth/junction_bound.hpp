@@ -41,6 +41,7 @@ struct JunctionPoint {
 struct DivisemePoints {
   std::vector<JunctionPoint> entry;
   Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> entry_rows;
+  double along_mean = 0.0, across_mean = 0.0;  // the entries' mean point (u', s')
 };
 
 class JunctionBound {

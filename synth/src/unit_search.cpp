@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -33,6 +32,8 @@ class StepBuilder {
  public:
   explicit StepBuilder(std::size_t states) : slot_(states, kNoBack) {}
 
+  bool has(StateId j) const { return slot_[j] != kNoBack; }
+
   // Offers j at `cost` (kept when cheaper than its offer so far); true when j is new to the step.
   bool offer(StateId j, double cost, std::uint32_t back, bool joined) {
     std::uint32_t& s = slot_[j];
@@ -57,45 +58,38 @@ class StepBuilder {
   std::vector<Active> out_;
 };
 
-// What the cap will keep, bounded from above while a step is built: the cap-th smallest of the
-// costs offered to distinct states so far (each an upper bound of that state's final cost, which
-// can only fall). A state offered more than this cannot be among the cap cheapest.
+// What the cap will keep, bounded from above: the cap-th smallest of costs that each bound the
+// final cost of a distinct state of the step from above (an offer's cost: a state's cost can only
+// fall). A state whose cost exceeds this has the cap's worth of states strictly cheaper, so it
+// cannot be kept.
 class CapLimit {
  public:
   explicit CapLimit(std::optional<std::size_t> cap) : cap_(cap ? std::max<std::size_t>(*cap, 1) : 0) {}
 
   void add(double cost) {
     if (cap_ == 0) return;
-    if (heap_.size() < cap_) {  // no limit until the cap's worth; then one O(cap) heap
-      heap_.push_back(cost);
-      if (heap_.size() == cap_) std::make_heap(heap_.begin(), heap_.end());
-    } else if (cost < heap_.front()) {
-      replace_largest(cost);
+    costs_.push_back(cost);
+    selected_ = false;
+  }
+
+  // The cap-th smallest so far (infinity with fewer, or without a cap): one selection per call
+  // after an add, the rest dropped (no later add can make them the cap-th smallest again).
+  double limit() {
+    if (cap_ == 0 || costs_.size() < cap_) return std::numeric_limits<double>::infinity();
+    if (!selected_) {
+      std::nth_element(costs_.begin(), costs_.begin() + static_cast<std::ptrdiff_t>(cap_ - 1), costs_.end());
+      costs_.resize(cap_);
+      selected_ = true;
     }
+    return costs_[cap_ - 1];
   }
 
-  double limit() const {
-    return cap_ > 0 && heap_.size() == cap_ ? heap_.front() : std::numeric_limits<double>::infinity();
-  }
-
-  void clear() { heap_.clear(); }
+  void clear() { costs_.clear(); }
 
  private:
-  // Puts `cost` in place of the heap's largest and sifts it down (half of a pop and a push).
-  void replace_largest(double cost) {
-    const std::size_t n = heap_.size();
-    std::size_t at = 0;
-    for (std::size_t child = 1; child < n; child = 2 * at + 1) {
-      if (child + 1 < n && heap_[child] < heap_[child + 1]) ++child;
-      if (!(cost < heap_[child])) break;
-      heap_[at] = heap_[child];
-      at = child;
-    }
-    heap_[at] = cost;
-  }
-
   std::size_t cap_;
-  std::vector<double> heap_;  // max-heap of the cap smallest costs
+  std::vector<double> costs_;  // after a selection, the cap smallest with the largest last
+  bool selected_ = false;
 };
 
 // One active of the previous step as the join loop reads it; the loop reads them in ascending
@@ -122,7 +116,7 @@ struct JoinScratch {
   std::vector<StateId> pred_state;     // the predecessors' states, in prev order
   std::vector<JunctionPoint> pred_point;  // and their exit points on the diviseme's axis
   std::vector<double> floor;           // per target
-  std::vector<std::uint32_t> order;    // targets, the cap's worth with the lowest floor first
+  std::vector<double> lead_cost;       // per target: its join from the predecessor of least key
 };
 
 // A join's predecessor: the cheapest (cost, state), as `better` orders them.
@@ -193,8 +187,7 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
 // after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0).
 void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
                         std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
-                        std::optional<std::size_t> max_active, CapLimit& cap, StepBuilder& step,
-                        JoinScratch& scratch) {
+                        CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
   const auto& bound = graph.junction_bound();
@@ -245,31 +238,37 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
     const StateId i = prev[a].state;
     p[r] = {key, prev[a].cost + 1.0, point[a], a, i, f.exit.row(i).data()};
   }
-  // With a cap, the targets most likely to be kept (lowest floor) go first, so that the cap's
-  // limit is tight when the others are read (order changes work, never a result).
-  auto& order = scratch.order;
-  order.resize(targets.size());
-  std::iota(order.begin(), order.end(), 0u);
-  if (bounded && max_active && *max_active < targets.size())
-    std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(*max_active), order.end(),
-                     [&](std::uint32_t x, std::uint32_t y) { return floor[x] < floor[y]; });
 
-  join_with_width(f.entry.cols(), [&]<Eigen::Index Dims>() {
-    for (const std::uint32_t b : order) {
-      const StateId j = targets[b];
-      const float* entry = bounded ? entry_rows + static_cast<std::ptrdiff_t>(b) * dims : f.entry.row(j).data();
+  // 1. Every target's join from the predecessor of least key (the one that most often wins):
+  //    the cap's limit follows from these costs before any target is searched further.
+  const auto entry_row = [&](std::size_t b) {
+    return bounded ? entry_rows + static_cast<std::ptrdiff_t>(b) * dims : f.entry.row(targets[b]).data();
+  };
+  const Predecessor lead = p.front();
+  auto& lead_cost = scratch.lead_cost;
+  lead_cost.resize(targets.size());
+  join_with_width(dims, [&]<Eigen::Index Dims>() {
+    for (std::size_t b = 0; b < targets.size(); ++b)
+      lead_cost[b] = lead.base + beta * junction_cost<Dims>(entry_row(b), lead.exit, dims);
+  });
+  for (std::size_t b = 0; b < targets.size(); ++b)
+    if (!step.has(targets[b])) cap.add(lead_cost[b]);  // an offered state's cost is in already
+  const double limit = cap.limit();
+
+  // 2. The other predecessors, in ascending key, as long as one might beat the best so far.
+  join_with_width(dims, [&]<Eigen::Index Dims>() {
+    for (std::size_t b = 0; b < targets.size(); ++b) {
+      const float* entry = entry_row(b);
       const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
-      Choice best{cap.limit()};
+      Choice best{limit};
+      best.consider(lead_cost[b], lead.index, lead.state);
       double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this
-      for (const Predecessor& x : p) {
-        if (x.key > stop) break;
-        if (bounded && x.base + half_beta * JunctionBound::twice_cost_floor(e, x.point) > best.cost) continue;
-        if (best.consider(x.base + beta * junction_cost<Dims>(entry, x.exit, dims), x.index, x.state))
+      for (auto x = p.begin() + 1; x != p.end() && x->key <= stop; ++x) {
+        if (bounded && x->base + half_beta * JunctionBound::twice_cost_floor(e, x->point) > best.cost) continue;
+        if (best.consider(x->base + beta * junction_cost<Dims>(entry, x->exit, dims), x->index, x->state))
           stop = clearly_above(best.cost) - floor[b];
       }
-      if (best.back == kNoBack) continue;  // dearer than the cap keeps
-      // A state already offered (by its continuation) is already bounded in the cap.
-      if (step.offer(j, best.cost, best.back, true)) cap.add(best.cost);
+      if (best.back != kNoBack) step.offer(targets[b], best.cost, best.back, true);  // else dearer than the cap keeps
     }
   });
 }
@@ -287,7 +286,7 @@ void offer_joins(const PhoneGraph& graph, std::span<const Active> prev, std::spa
     return;
   }
   if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, step);
-  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, options.max_active, cap, step, scratch);
+  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, cap, step, scratch);
 }
 
 // Keeps the cap's worth of cheapest actives. `limit` is at least the cap-th smallest cost (see

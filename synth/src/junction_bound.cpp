@@ -28,6 +28,12 @@ struct JunctionBound::Lazy {
   std::vector<JunctionPoint> exit;       // every state of class `from`, in with_viseme order
 };
 
+struct JunctionBound::ClassSketches {
+  std::once_flag once;
+  std::vector<std::int16_t> rows;  // every exit of the class, in with_viseme order
+  std::vector<float> error;
+};
+
 namespace {
 
 // A row relative to c_a on the unit axis q: along = (row - c_a) . q, across = |r - along q|.
@@ -81,6 +87,11 @@ JunctionBound::JunctionBound(const PhoneGraph& graph) : shared_(std::make_shared
       if (norm > 0.0 && std::isfinite(norm)) s.axis.row(a * kClasses + b) = towards / norm;
     }
   s.divisemes = std::make_unique<Lazy[]>(kVisemeClassCount * kVisemeClassCount);
+  s.sketched = dims > 0 && dims <= kSketchMaxDims;
+  if (s.sketched) {
+    s.grid = synth::sketch_grid(f);
+    s.sketches = std::make_unique<ClassSketches[]>(kVisemeClassCount);
+  }
 }
 
 const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const {
@@ -102,6 +113,13 @@ const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass
     }
     if (!entries.empty())
       p.along_mean /= static_cast<double>(entries.size()), p.across_mean /= static_cast<double>(entries.size());
+    if (s.sketched) {
+      p.entry_sketch.resize(entries.size() * static_cast<std::size_t>(dims));
+      p.entry_sketch_error.resize(entries.size());
+      for (std::size_t m = 0; m < entries.size(); ++m)
+        p.entry_sketch_error[m] =
+            sketch_row(f.entry.row(entries[m]).data(), dims, s.grid, p.entry_sketch.data() + m * static_cast<std::size_t>(dims));
+    }
   });
   return lazy.points;
 }
@@ -127,6 +145,25 @@ void JunctionBound::exits(const PhoneGraph& graph, VisemeClass from, VisemeClass
     lazy.tabled.store(true, std::memory_order_release);
   });
   for (std::size_t m = 0; m < states.size(); ++m) out[m] = lazy.exit[s.rank[states[m]]];
+}
+
+void JunctionBound::exit_sketches(const PhoneGraph& graph, VisemeClass from, std::span<const std::uint32_t> states,
+                                  std::span<SketchRef> out) const {
+  const Shared& s = *shared_;
+  ClassSketches& table = s.sketches[static_cast<std::size_t>(of(from))];
+  const auto& f = graph.junction();
+  const auto dims = static_cast<std::size_t>(f.exit.cols());
+  std::call_once(table.once, [&] {
+    const auto members = graph.with_viseme(from);
+    table.rows.resize(members.size() * dims);
+    table.error.resize(members.size());
+    for (std::size_t m = 0; m < members.size(); ++m)
+      table.error[m] = sketch_row(f.exit.row(members[m]).data(), f.exit.cols(), s.grid, table.rows.data() + m * dims);
+  });
+  for (std::size_t m = 0; m < states.size(); ++m) {
+    const std::uint32_t r = s.rank[states[m]];
+    out[m] = {table.rows.data() + r * dims, table.error[r]};
+  }
 }
 
 }  // namespace fapcast::synth

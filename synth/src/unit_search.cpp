@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -99,6 +100,7 @@ struct Predecessor {
   double key;
   double base;           // cost + 1: a join's cost before its junction term
   JunctionPoint point;   // on the axis of the diviseme being joined (when bounded)
+  SketchRef sketch;      // its exit sketch (when bounded and sketched)
   std::uint32_t index;   // into prev
   StateId state;
   const float* exit;     // its exit row
@@ -115,6 +117,7 @@ struct JoinScratch {
   std::vector<std::pair<double, std::uint32_t>> by_key;  // (key, index into prev), to sort
   std::vector<StateId> pred_state;     // the predecessors' states, in prev order
   std::vector<JunctionPoint> pred_point;  // and their exit points on the diviseme's axis
+  std::vector<SketchRef> pred_sketch;     // and their exit sketches
   std::vector<double> floor;           // per target
   std::vector<double> lead_cost;       // per target: its join from the predecessor of least key
 };
@@ -192,11 +195,13 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
   const auto dims = f.entry.cols();
   const auto& bound = graph.junction_bound();
   const bool bounded = diviseme && !bound.empty();
+  const bool sketched = bounded && bound.sketched();
   // A bounded sweep reads the diviseme's entry rows and points where they lie contiguously.
   const DivisemePoints* points = bounded ? &bound.points(graph, diviseme->from, diviseme->to) : nullptr;
   const std::span<const JunctionPoint> entry_point = bounded ? std::span(points->entry) : std::span<const JunctionPoint>{};
   const float* entry_rows = bounded ? points->entry_rows.data() : nullptr;
   const double half_beta = 0.5 * beta;
+  const double grid_step = sketched ? bound.sketch_grid().step : 0.0;
   const std::size_t preds = prev.size();
 
   auto& point = scratch.pred_point;
@@ -209,6 +214,8 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
     point.resize(preds);
     for (std::uint32_t a = 0; a < preds; ++a) scratch.pred_state[a] = prev[a].state;
     bound.exits(graph, diviseme->from, diviseme->to, scratch.pred_state, point);
+    scratch.pred_sketch.assign(preds, SketchRef{});
+    if (sketched) bound.exit_sketches(graph, diviseme->from, scratch.pred_state, scratch.pred_sketch);
     const double u_mean = points->along_mean, s_mean = points->across_mean;
     double v_mean = 0.0, t_mean = 0.0;
     for (const JunctionPoint& x : point) v_mean += x.along, t_mean += x.across;
@@ -227,24 +234,23 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
     }
   } else {
     point.assign(preds, JunctionPoint{});
+    scratch.pred_sketch.assign(preds, SketchRef{});
     for (std::uint32_t a = 0; a < preds; ++a) by_key[a] = {prev[a].cost + 1.0, a};
   }
-  // Ascending key; ties in any order (a choice never depends on reading order, see Choice).
-  std::sort(by_key.begin(), by_key.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  auto& p = scratch.pred;
-  p.resize(preds);
-  for (std::size_t r = 0; r < preds; ++r) {
-    const auto [key, a] = by_key[r];
+  const auto predecessor = [&](std::pair<double, std::uint32_t> by) {
+    const auto [key, a] = by;
     const StateId i = prev[a].state;
-    p[r] = {key, prev[a].cost + 1.0, point[a], a, i, f.exit.row(i).data()};
-  }
+    return Predecessor{key, prev[a].cost + 1.0, point[a], scratch.pred_sketch[a], a, i, f.exit.row(i).data()};
+  };
 
   // 1. Every target's join from the predecessor of least key (the one that most often wins):
   //    the cap's limit follows from these costs before any target is searched further.
   const auto entry_row = [&](std::size_t b) {
     return bounded ? entry_rows + static_cast<std::ptrdiff_t>(b) * dims : f.entry.row(targets[b]).data();
   };
-  const Predecessor lead = p.front();
+  const auto by_key_less = [](const auto& x, const auto& y) { return x.first < y.first; };
+  std::iter_swap(by_key.begin(), std::min_element(by_key.begin(), by_key.end(), by_key_less));
+  const Predecessor lead = predecessor(by_key.front());
   auto& lead_cost = scratch.lead_cost;
   lead_cost.resize(targets.size());
   join_with_width(dims, [&]<Eigen::Index Dims>() {
@@ -254,17 +260,38 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
   for (std::size_t b = 0; b < targets.size(); ++b)
     if (!step.has(targets[b])) cap.add(lead_cost[b]);  // an offered state's cost is in already
   const double limit = cap.limit();
+  // The others in ascending key (ties in any order: a choice never depends on reading order, see
+  // Choice), as far as any target could read: its best starts at most at its lead cost.
+  double reach = -std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < targets.size(); ++b)
+    reach = std::max(reach, clearly_above(std::min(limit, lead_cost[b])) - floor[b]);
+  const auto readable = std::partition(by_key.begin() + 1, by_key.end(), [reach](const auto& x) { return x.first <= reach; });
+  std::sort(by_key.begin() + 1, readable, by_key_less);
+  auto& p = scratch.pred;
+  p.clear();
+  std::transform(by_key.begin() + 1, readable, std::back_inserter(p), predecessor);
 
   // 2. The other predecessors, in ascending key, as long as one might beat the best so far.
   join_with_width(dims, [&]<Eigen::Index Dims>() {
     for (std::size_t b = 0; b < targets.size(); ++b) {
       const float* entry = entry_row(b);
       const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
+      const std::int16_t* sketch = sketched ? points->entry_sketch.data() + static_cast<std::ptrdiff_t>(b) * dims : nullptr;
+      const double sketch_error = sketched ? points->entry_sketch_error[b] : 0.0;
       Choice best{limit};
       best.consider(lead_cost[b], lead.index, lead.state);
       double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this
-      for (auto x = p.begin() + 1; x != p.end() && x->key <= stop; ++x) {
+      for (auto x = p.begin(); x != p.end() && x->key <= stop; ++x) {
+#ifdef POINT_TOO
         if (bounded && x->base + half_beta * JunctionBound::twice_cost_floor(e, x->point) > best.cost) continue;
+#endif
+        if (sketched) {
+          const double floor = sketch_cost_floor(sketch_distance2<Dims>(sketch, x->sketch.values, dims),
+                                                 sketch_error + x->sketch.error, grid_step);
+          if (x->base + beta * floor > best.cost) continue;
+        } else if (bounded && x->base + half_beta * JunctionBound::twice_cost_floor(e, x->point) > best.cost) {
+          continue;
+        }
         if (best.consider(x->base + beta * junction_cost<Dims>(entry, x->exit, dims), x->index, x->state))
           stop = clearly_above(best.cost) - floor[b];
       }

@@ -15,6 +15,7 @@
 // Opening a voice computes only the centres and axes (O(states x 2k)); the points of a diviseme
 // are computed the first time a search joins into it (O((states of a + entries of a b) x 2k)), so
 // a one-sentence synthesis pays for the few divisemes it uses, not for all of them.
+#include "fapcast/synth/junction_sketch.hpp"
 #include "fapcast/synth/viseme.hpp"
 
 #include <Eigen/Core>
@@ -42,6 +43,16 @@ struct DivisemePoints {
   std::vector<JunctionPoint> entry;
   Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> entry_rows;
   double along_mean = 0.0, across_mean = 0.0;  // the entries' mean point (u', s')
+  // The entries' sketches (junction_sketch.hpp), entry_rows.cols() values each, and their
+  // rounding norms; empty when the bound has no sketch grid.
+  std::vector<std::int16_t> entry_sketch;
+  std::vector<float> entry_sketch_error;
+};
+
+// A state's exit sketch: its values and rounding norm.
+struct SketchRef {
+  const std::int16_t* values = nullptr;
+  float error = 0.0f;
 };
 
 class JunctionBound {
@@ -65,6 +76,15 @@ class JunctionBound {
   void exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to, std::span<const std::uint32_t> states,
              std::span<JunctionPoint> out) const;
 
+  // Whether the points come with sketches (junction_sketch.hpp): rows of at most kSketchMaxDims.
+  bool sketched() const { return shared_ && shared_->sketched; }
+  const SketchGrid& sketch_grid() const { return shared_->grid; }
+
+  // The exit sketches of `states` (all of class `from`), into `out`, pointing into a table of
+  // every exit of the class made on the first call (safe from several threads).
+  void exit_sketches(const PhoneGraph& graph, VisemeClass from, std::span<const std::uint32_t> states,
+                     std::span<SketchRef> out) const;
+
   // A lower bound on 2 C(i, j) for exit point x and entry point e of the same diviseme; may be
   // negative (then it bounds nothing).
   static float twice_cost_floor(const JunctionPoint& e, const JunctionPoint& x) {
@@ -75,12 +95,16 @@ class JunctionBound {
  private:
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   struct Lazy;
+  struct ClassSketches;
   struct Shared {
     Rows centre;                       // c_a, per class
     Rows axis;                         // q_ab, per diviseme (zero when not recorded)
     double slack_per_spread = 0.0;
     std::vector<std::uint32_t> rank;   // a state's index in PhoneGraph::with_viseme(its class)
     std::unique_ptr<Lazy[]> divisemes; // per diviseme, filled on first use
+    bool sketched = false;
+    SketchGrid grid;
+    std::unique_ptr<ClassSketches[]> sketches;  // per class (of the exits), filled on first use
     ~Shared();
   };
   // Shared by copies of the graph (the points depend only on the features, which copies share).

@@ -28,35 +28,37 @@ bool better(const Active& a, const Active& b) {
   return a.cost < b.cost || (a.cost == b.cost && a.state < b.state);
 }
 
-// The actives of one step, at most one entry per state, with O(1) lookup by state.
+// The actives of one step, at most one per state: the continuations (distinct states), then the
+// joins into one ascending list of distinct targets (PhoneGraph::entries or with_viseme), merged
+// with the continuations among them. No per-state table: a step touches few states of many.
 class StepBuilder {
  public:
-  explicit StepBuilder(std::size_t states) : slot_(states, kNoBack) {}
+  // A state not in the step yet.
+  void add(StateId j, double cost, std::uint32_t back, bool joined) { out_.push_back({j, cost, back, joined}); }
 
-  bool has(StateId j) const { return slot_[j] != kNoBack; }
-
-  // Offers j at `cost` (kept when cheaper than its offer so far); true when j is new to the step.
-  bool offer(StateId j, double cost, std::uint32_t back, bool joined) {
-    std::uint32_t& s = slot_[j];
-    if (s == kNoBack) {
-      s = static_cast<std::uint32_t>(out_.size());
-      out_.push_back({j, cost, back, joined});
-      return true;
+  // Starts the joins into `targets` (ascending): finds the states already in the step among them.
+  void begin_joins(std::span<const StateId> targets) {
+    target_slot_.assign(targets.size(), kNoBack);
+    for (std::uint32_t s = 0; s < out_.size(); ++s) {
+      const auto at = std::lower_bound(targets.begin(), targets.end(), out_[s].state);
+      if (at != targets.end() && *at == out_[s].state) target_slot_[static_cast<std::size_t>(at - targets.begin())] = s;
     }
-    if (cost < out_[s].cost) out_[s] = {j, cost, back, joined};
-    return false;
+  }
+  bool has_target(std::size_t b) const { return target_slot_[b] != kNoBack; }
+  // Offers targets[b] = j as a join at `cost` (kept when cheaper than a continuation into j).
+  void join(std::size_t b, StateId j, double cost, std::uint32_t back) {
+    const std::uint32_t s = target_slot_[b];
+    if (s == kNoBack) out_.push_back({j, cost, back, true});
+    else if (cost < out_[s].cost) out_[s] = {j, cost, back, true};
   }
 
   bool empty() const { return out_.empty(); }
-  // Ends the step: its actives, to prune and copy out; clear them before the next offer.
-  std::vector<Active>& finish() {
-    for (const auto& a : out_) slot_[a.state] = kNoBack;
-    return out_;
-  }
+  // The step's actives (to prune in place, copy out, then clear for the next step).
+  std::vector<Active>& actives() { return out_; }
 
  private:
-  std::vector<std::uint32_t> slot_;  // state -> index in out_, kNoBack when absent
   std::vector<Active> out_;
+  std::vector<std::uint32_t> target_slot_;  // per target: its index in out_, kNoBack when absent
 };
 
 // What the cap will keep, bounded from above: the cap-th smallest of costs that each bound the
@@ -163,12 +165,13 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
                       std::span<const StateId> targets, double beta, StepBuilder& step) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
-  for (StateId j : targets) {
+  for (std::size_t b = 0; b < targets.size(); ++b) {
+    const StateId j = targets[b];
     Choice best{std::numeric_limits<double>::infinity()};
     for (std::uint32_t a = 0; a < prev.size(); ++a)
       best.consider(prev[a].cost + 1.0 + beta * junction_cost(f.entry.row(j).data(), f.exit.row(prev[a].state).data(), dims),
                     a, prev[a].state);
-    step.offer(j, best.cost, best.back, true);
+    step.join(b, j, best.cost, best.back);
   }
 }
 
@@ -258,7 +261,7 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
       lead_cost[b] = lead.base + beta * junction_cost<Dims>(entry_row(b), lead.exit, dims);
   });
   for (std::size_t b = 0; b < targets.size(); ++b)
-    if (!step.has(targets[b])) cap.add(lead_cost[b]);  // an offered state's cost is in already
+    if (!step.has_target(b)) cap.add(lead_cost[b]);  // a continuation's cost is in already
   const double limit = cap.limit();
   // The others in ascending key (ties in any order: a choice never depends on reading order, see
   // Choice), as far as any target could read: its best starts at most at its lead cost.
@@ -295,7 +298,7 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
         if (best.consider(x->base + beta * junction_cost<Dims>(entry, x->exit, dims), x->index, x->state))
           stop = clearly_above(best.cost) - floor[b];
       }
-      if (best.back != kNoBack) step.offer(targets[b], best.cost, best.back, true);  // else dearer than the cap keeps
+      if (best.back != kNoBack) step.join(b, targets[b], best.cost, best.back);  // else dearer than the cap keeps
     }
   });
 }
@@ -306,10 +309,11 @@ void offer_joins(const PhoneGraph& graph, std::span<const Active> prev, std::spa
                  std::optional<Diviseme> diviseme, const SearchOptions& options, CapLimit& cap, StepBuilder& step,
                  JoinScratch& scratch) {
   if (targets.empty() || prev.empty()) return;
+  step.begin_joins(targets);
   if (options.beta == 0.0 || !graph.has_junction_features()) {
     const auto best = std::min_element(prev.begin(), prev.end(), better);
     const auto back = static_cast<std::uint32_t>(best - prev.begin());
-    for (StateId j : targets) step.offer(j, best->cost + 1.0, back, true);
+    for (std::size_t b = 0; b < targets.size(); ++b) step.join(b, targets[b], best->cost + 1.0, back);
     return;
   }
   if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, step);
@@ -344,10 +348,10 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   std::vector<Active> trail;
   std::vector<std::size_t> begin{0};
   if (options.max_active) trail.reserve(targets.size() * std::max<std::size_t>(*options.max_active, 1));
-  StepBuilder builder(graph.size());
+  StepBuilder builder;
   CapLimit cap(options.max_active);
   const auto close_step = [&] {
-    auto& actives = builder.finish();
+    auto& actives = builder.actives();
     // The reference path does without the cap's limit (prune's selection alone keeps the same).
     prune(actives, options.max_active, options.prune_joins ? cap.limit() : std::numeric_limits<double>::infinity());
     trail.insert(trail.end(), actives.begin(), actives.end());
@@ -357,7 +361,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   };
   const auto step = [&](std::size_t t) { return std::span(trail).subspan(begin[t], begin[t + 1] - begin[t]); };
   result.stats.active_per_step.reserve(targets.size());
-  for (StateId j : graph.with_viseme(targets[0])) builder.offer(j, 1.0, kNoBack, true);
+  for (StateId j : graph.with_viseme(targets[0])) builder.add(j, 1.0, kNoBack, true);
   close_step();
 
   JoinScratch scratch;
@@ -368,7 +372,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
     for (std::uint32_t a = 0; a < prev.size(); ++a) {
       const StateId i = prev[a].state;
       if (graph.has_child(i) && graph.state(i + 1).viseme == targets[t]) {
-        builder.offer(i + 1, prev[a].cost, a, false);
+        builder.add(i + 1, prev[a].cost, a, false);
         cap.add(prev[a].cost);
       }
     }

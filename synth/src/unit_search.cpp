@@ -61,6 +61,40 @@ class StepBuilder {
   std::vector<std::uint32_t> target_slot_;  // per target: its index in out_, kNoBack when absent
 };
 
+// The k-th smallest (from 0) of `values` (reordered; k < size, no NaN). A quickselect whose
+// partitions have no data-dependent branch: the costs are in random order, and std::nth_element's
+// mispredicted branches cost more than its comparisons.
+double kth_smallest(std::vector<double>& values, std::size_t k, std::vector<double>& spare) {
+  std::size_t lo = 0, hi = values.size();  // values[lo, hi) holds the answer
+  spare.resize(values.size());
+  while (hi - lo > 16) {
+    const double a = values[lo], b = values[lo + (hi - lo) / 2], c = values[hi - 1];
+    const double pivot = std::max(std::min(a, b), std::min(std::max(a, b), c));  // median of three
+    // Smaller ones to the front of spare, larger ones to its back; what is left between equals
+    // the pivot. Each value is written to both ends, and only the end it belongs to advances.
+    std::size_t less = 0, more = hi - lo;
+    for (std::size_t i = lo; i < hi; ++i) {
+      const double x = values[i];
+      spare[less] = x;
+      spare[more - 1] = x;
+      less += x < pivot;
+      more -= x > pivot;
+    }
+    if (k < lo + less) {
+      std::copy_n(spare.begin(), less, values.begin() + static_cast<std::ptrdiff_t>(lo));
+      hi = lo + less;
+    } else if (k >= lo + more) {
+      std::copy(spare.begin() + static_cast<std::ptrdiff_t>(more), spare.begin() + static_cast<std::ptrdiff_t>(hi - lo),
+                values.begin() + static_cast<std::ptrdiff_t>(lo + more));
+      lo += more;
+    } else {
+      return pivot;
+    }
+  }
+  std::sort(values.begin() + static_cast<std::ptrdiff_t>(lo), values.begin() + static_cast<std::ptrdiff_t>(hi));
+  return values[k];
+}
+
 // What the cap will keep, bounded from above: the cap-th smallest of costs that each bound the
 // final cost of a distinct state of the step from above (an offer's cost: a state's cost can only
 // fall). A state whose cost exceeds this has the cap's worth of states strictly cheaper, so it
@@ -72,27 +106,28 @@ class CapLimit {
   void add(double cost) {
     if (cap_ == 0) return;
     costs_.push_back(cost);
-    selected_ = false;
+    unordered_ |= std::isnan(cost);
+    limit_.reset();
   }
 
-  // The cap-th smallest so far (infinity with fewer, or without a cap): one selection per call
-  // after an add, the rest dropped (no later add can make them the cap-th smallest again).
+  // The cap-th smallest so far (infinity with fewer, without a cap, or when a cost is NaN).
   double limit() {
-    if (cap_ == 0 || costs_.size() < cap_) return std::numeric_limits<double>::infinity();
-    if (!selected_) {
-      std::nth_element(costs_.begin(), costs_.begin() + static_cast<std::ptrdiff_t>(cap_ - 1), costs_.end());
-      costs_.resize(cap_);
-      selected_ = true;
-    }
-    return costs_[cap_ - 1];
+    if (cap_ == 0 || unordered_ || costs_.size() < cap_) return std::numeric_limits<double>::infinity();
+    if (!limit_) limit_ = kth_smallest(costs_, cap_ - 1, spare_);
+    return *limit_;
   }
 
-  void clear() { costs_.clear(); }
+  void clear() {
+    costs_.clear();
+    unordered_ = false;
+    limit_.reset();
+  }
 
  private:
   std::size_t cap_;
-  std::vector<double> costs_;  // after a selection, the cap smallest with the largest last
-  bool selected_ = false;
+  std::vector<double> costs_, spare_;
+  bool unordered_ = false;
+  std::optional<double> limit_;
 };
 
 // One active of the previous step as the join loop reads it; the loop reads them in ascending

@@ -174,11 +174,38 @@ TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
   EXPECT_GT(hard, 0) << "no search went through a hard join";
 }
 
-// The bound the pruning rests on (junction_bound.hpp) never exceeds the cost it bounds: every
-// admissible join of random graphs, at scales from 1e-6 to 1e6 and far from the origin.
+// The same on graphs large enough that every step has hundreds of entries and a full cap (the
+// cap's selection, the sketches and the reading order all at the sizes of a voice), with class
+// shapes under light and heavy noise, as the synthesis benchmark has them.
+TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultOnLargeSteps) {
+  std::mt19937_64 rng(test_seed());
+  int searches = 0;
+  for (float noise : {0.1f, 1.0f}) {
+    const auto voice = test::synthetic_voice_graph(200, 30, 3, 6, rng(), noise, Vs({0, 1, 2, 3, 4}));
+    std::vector<VisemeClass> targets(40);
+    for (auto& v : targets) v = V(std::uniform_int_distribution<int>(0, 4)(rng));
+    for (const std::optional<std::size_t> cap : {std::optional<std::size_t>{}, std::optional<std::size_t>{16},
+                                                 std::optional<std::size_t>{64}}) {
+      const SearchResult reference = unit_search(*voice.graph, targets, {0.1, cap, false});
+      const SearchResult pruned = unit_search(*voice.graph, targets, {0.1, cap, true});
+      const std::string where = "noise " + std::to_string(noise) + " cap " + (cap ? std::to_string(*cap) : "none") +
+                                "; reproduce with FAPCAST_SEED=" + std::to_string(test_seed());
+      ASSERT_EQ(pruned.cost, reference.cost) << where;
+      ASSERT_EQ(pruned.states, reference.states) << where;
+      ASSERT_EQ(pruned.units, reference.units) << where;
+      ASSERT_EQ(pruned.stats.active_per_step, reference.stats.active_per_step) << where;
+      ++searches;
+    }
+  }
+  EXPECT_EQ(searches, 6);
+}
+
+// The bounds the pruning rests on (junction_bound.hpp, junction_sketch.hpp) never exceed the cost
+// they bound: every admissible join of random graphs, at scales from 1e-6 to 1e6 and far from the
+// origin.
 TEST(JunctionBound, NeverExceedsTheJunctionCost) {
   std::mt19937_64 rng(test_seed());
-  int pairs = 0;
+  int pairs = 0, tight = 0;
   for (float scale : {1e-6f, 1.0f, 1e6f})
     for (float offset : {0.0f, 1e3f})
       for (int graph = 0; graph < 4; ++graph) {
@@ -198,12 +225,25 @@ TEST(JunctionBound, NeverExceedsTheJunctionCost) {
             JunctionPoint exit;
             bound.exits(g, from, to, std::span(&i, 1), std::span(&exit, 1));
             const float floor = JunctionBound::twice_cost_floor(points.entry[m], exit);
-            ASSERT_LE(floor, 2.0f * junction_cost(g, i, j)) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
+            const float cost = junction_cost(g, i, j);
+            ASSERT_LE(floor, 2.0f * cost) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
+            // The sketch bound (junction_sketch.hpp), from the same tables the search reads.
+            ASSERT_TRUE(bound.sketched());
+            SketchRef sketch;
+            bound.exit_sketches(g, from, std::span(&i, 1), std::span(&sketch, 1));
+            const auto dims = g.junction().entry.cols();
+            const std::int32_t distance2 =
+                sketch_distance2(points.entry_sketch.data() + m * static_cast<std::size_t>(dims), sketch.values, dims);
+            const double sketch_floor = sketch_cost_floor(
+                distance2, double{points.entry_sketch_error[m]} + sketch.error, bound.sketch_grid().step);
+            ASSERT_LE(sketch_floor, double{cost}) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
+            tight += sketch_floor > 0.9 * cost;
             ++pairs;
           }
         }
       }
   EXPECT_GT(pairs, 10000);
+  EXPECT_GT(tight, pairs / 2) << "the sketch bound is valid but too loose to prune";
 }
 
 TEST(UnitSearch, PrefersOneLongUnitOverPieces) {

@@ -29,6 +29,8 @@ struct JunctionBound::Lazy {
 };
 
 struct JunctionBound::ClassSketches {
+  std::atomic<std::size_t> computed{0};  // sketches made per call so far
+  std::atomic<bool> tabled{false};
   std::once_flag once;
   std::vector<std::int16_t> rows;  // every exit of the class, in with_viseme order
   std::vector<float> error;
@@ -148,17 +150,25 @@ void JunctionBound::exits(const PhoneGraph& graph, VisemeClass from, VisemeClass
 }
 
 void JunctionBound::exit_sketches(const PhoneGraph& graph, VisemeClass from, std::span<const std::uint32_t> states,
-                                  std::span<SketchRef> out) const {
+                                  std::span<SketchRef> out, std::vector<std::int16_t>& buffer) const {
   const Shared& s = *shared_;
   ClassSketches& table = s.sketches[static_cast<std::size_t>(of(from))];
   const auto& f = graph.junction();
   const auto dims = static_cast<std::size_t>(f.exit.cols());
+  const auto members = graph.with_viseme(from);
+  if (!table.tabled.load(std::memory_order_acquire) &&
+      table.computed.fetch_add(states.size(), std::memory_order_relaxed) < members.size()) {
+    buffer.resize(states.size() * dims);
+    for (std::size_t m = 0; m < states.size(); ++m)
+      out[m] = {buffer.data() + m * dims, sketch_row(f.exit.row(states[m]).data(), f.exit.cols(), s.grid, buffer.data() + m * dims)};
+    return;
+  }
   std::call_once(table.once, [&] {
-    const auto members = graph.with_viseme(from);
     table.rows.resize(members.size() * dims);
     table.error.resize(members.size());
     for (std::size_t m = 0; m < members.size(); ++m)
       table.error[m] = sketch_row(f.exit.row(members[m]).data(), f.exit.cols(), s.grid, table.rows.data() + m * dims);
+    table.tabled.store(true, std::memory_order_release);
   });
   for (std::size_t m = 0; m < states.size(); ++m) {
     const std::uint32_t r = s.rank[states[m]];

@@ -154,7 +154,9 @@ struct JoinScratch {
   std::vector<std::pair<double, std::uint32_t>> by_key;  // (key, index into prev), to sort
   std::vector<StateId> pred_state;     // the predecessors' states, in prev order
   std::vector<JunctionPoint> pred_point;  // and their exit points on the diviseme's axis
-  std::vector<SketchRef> pred_sketch;     // and their exit sketches
+  std::vector<StateId> read_state;        // the states of the predecessors read past the lead
+  std::vector<SketchRef> read_sketch;     // and their exit sketches
+  std::vector<std::int16_t> sketch_buffer;  // where those are made until the class is tabled
   std::vector<double> floor;           // per target
   std::vector<double> lead_cost;       // per target: its join from the predecessor of least key
 };
@@ -252,8 +254,6 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
     point.resize(preds);
     for (std::uint32_t a = 0; a < preds; ++a) scratch.pred_state[a] = prev[a].state;
     bound.exits(graph, diviseme->from, diviseme->to, scratch.pred_state, point);
-    scratch.pred_sketch.assign(preds, SketchRef{});
-    if (sketched) bound.exit_sketches(graph, diviseme->from, scratch.pred_state, scratch.pred_sketch);
     const double u_mean = points->along_mean, s_mean = points->across_mean;
     double v_mean = 0.0, t_mean = 0.0;
     for (const JunctionPoint& x : point) v_mean += x.along, t_mean += x.across;
@@ -272,13 +272,12 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
     }
   } else {
     point.assign(preds, JunctionPoint{});
-    scratch.pred_sketch.assign(preds, SketchRef{});
     for (std::uint32_t a = 0; a < preds; ++a) by_key[a] = {prev[a].cost + 1.0, a};
   }
   const auto predecessor = [&](std::pair<double, std::uint32_t> by) {
     const auto [key, a] = by;
     const StateId i = prev[a].state;
-    return Predecessor{key, prev[a].cost + 1.0, point[a], scratch.pred_sketch[a], a, i, f.exit.row(i).data()};
+    return Predecessor{key, prev[a].cost + 1.0, point[a], SketchRef{}, a, i, f.exit.row(i).data()};
   };
 
   // 1. Every target's join from the predecessor of least key (the one that most often wins):
@@ -308,6 +307,13 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
   auto& p = scratch.pred;
   p.clear();
   std::transform(by_key.begin() + 1, readable, std::back_inserter(p), predecessor);
+  if (sketched) {  // only those read past the lead need a sketch
+    scratch.read_state.clear();
+    for (const Predecessor& x : p) scratch.read_state.push_back(x.state);
+    scratch.read_sketch.resize(p.size());
+    bound.exit_sketches(graph, diviseme->from, scratch.read_state, scratch.read_sketch, scratch.sketch_buffer);
+    for (std::size_t r = 0; r < p.size(); ++r) p[r].sketch = scratch.read_sketch[r];
+  }
 
   // 2. The other predecessors, in ascending key, as long as one might beat the best so far.
   join_with_width(dims, [&]<Eigen::Index Dims>() {

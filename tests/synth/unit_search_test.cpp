@@ -230,7 +230,8 @@ TEST(JunctionBound, NeverExceedsTheJunctionCost) {
             // The sketch bound (junction_sketch.hpp), from the same tables the search reads.
             ASSERT_TRUE(bound.sketched());
             SketchRef sketch;
-            bound.exit_sketches(g, from, std::span(&i, 1), std::span(&sketch, 1));
+            std::vector<std::int16_t> buffer;
+            bound.exit_sketches(g, from, std::span(&i, 1), std::span(&sketch, 1), buffer);
             const auto dims = g.junction().entry.cols();
             const std::int32_t distance2 =
                 sketch_distance2(points.entry_sketch.data() + m * static_cast<std::size_t>(dims), sketch.values, dims);

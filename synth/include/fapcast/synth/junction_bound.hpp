@@ -80,10 +80,12 @@ class JunctionBound {
   bool sketched() const { return shared_ && shared_->sketched; }
   const SketchGrid& sketch_grid() const { return shared_->grid; }
 
-  // The exit sketches of `states` (all of class `from`), into `out`, pointing into a table of
-  // every exit of the class made on the first call (safe from several threads).
+  // The exit sketches of `states` (all of class `from`), into `out`. Like exits(): made per call
+  // into `buffer` until the class has made as many as it has states, then read from a table of
+  // every exit of the class made once (safe from several threads). `buffer` must stay alive and
+  // untouched while `out` is read.
   void exit_sketches(const PhoneGraph& graph, VisemeClass from, std::span<const std::uint32_t> states,
-                     std::span<SketchRef> out) const;
+                     std::span<SketchRef> out, std::vector<std::int16_t>& buffer) const;
 
   // A lower bound on 2 C(i, j) for exit point x and entry point e of the same diviseme; may be
   // negative (then it bounds nothing).

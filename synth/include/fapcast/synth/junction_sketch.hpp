@@ -31,8 +31,8 @@ struct SketchGrid {
 };
 
 // The grid for rows of this size: the smallest power-of-two step at which a row value of
-// min(largest |value|, 8 x root mean square) is within kSketchReach steps (the rare larger
-// values are clamped, which only widens their own rows' rounding norms).
+// min(largest |value|, 8 x root mean square), over a sample of the rows, is within kSketchReach
+// steps (larger values are clamped, which only widens their own rows' rounding norms).
 SketchGrid sketch_grid(const JunctionFeatures& features);
 
 // Rounds the `dims` floats of `row` onto `grid` into `out` (dims int16); returns an upper bound of

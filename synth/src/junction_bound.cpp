@@ -26,6 +26,9 @@ struct JunctionBound::Lazy {
   std::atomic<bool> tabled{false};
   std::once_flag table_once;
   std::vector<JunctionPoint> exit;       // every state of class `from`, in with_viseme order
+  std::atomic<std::size_t> sketch_calls{0};
+  std::once_flag sketch_once;
+  DivisemeSketches sketches;
 };
 
 struct JunctionBound::ClassSketches {
@@ -115,13 +118,6 @@ const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass
     }
     if (!entries.empty())
       p.along_mean /= static_cast<double>(entries.size()), p.across_mean /= static_cast<double>(entries.size());
-    if (s.sketched) {
-      p.entry_sketch.resize(entries.size() * static_cast<std::size_t>(dims));
-      p.entry_sketch_error.resize(entries.size());
-      for (std::size_t m = 0; m < entries.size(); ++m)
-        p.entry_sketch_error[m] =
-            sketch_row(f.entry.row(entries[m]).data(), dims, s.grid, p.entry_sketch.data() + m * static_cast<std::size_t>(dims));
-    }
   });
   return lazy.points;
 }
@@ -147,6 +143,24 @@ void JunctionBound::exits(const PhoneGraph& graph, VisemeClass from, VisemeClass
     lazy.tabled.store(true, std::memory_order_release);
   });
   for (std::size_t m = 0; m < states.size(); ++m) out[m] = lazy.exit[s.rank[states[m]]];
+}
+
+const DivisemeSketches* JunctionBound::entry_sketches(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const {
+  if (!sketched()) return nullptr;
+  const Shared& s = *shared_;
+  Lazy& lazy = s.divisemes[static_cast<std::size_t>(of(from) * kClasses + of(to))];
+  if (lazy.sketch_calls.fetch_add(1, std::memory_order_relaxed) == 0) return nullptr;
+  std::call_once(lazy.sketch_once, [&] {
+    const auto& f = graph.junction();
+    const auto dims = static_cast<std::size_t>(f.entry.cols());
+    const auto entries = graph.entries(from, to);
+    DivisemeSketches& k = lazy.sketches;
+    k.entry.resize(entries.size() * dims);
+    k.error.resize(entries.size());
+    for (std::size_t m = 0; m < entries.size(); ++m)
+      k.error[m] = sketch_row(f.entry.row(entries[m]).data(), f.entry.cols(), s.grid, k.entry.data() + m * dims);
+  });
+  return &lazy.sketches;
 }
 
 void JunctionBound::exit_sketches(const PhoneGraph& graph, VisemeClass from, std::span<const std::uint32_t> states,

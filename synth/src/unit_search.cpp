@@ -235,7 +235,8 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
   const auto dims = f.entry.cols();
   const auto& bound = graph.junction_bound();
   const bool bounded = diviseme && !bound.empty();
-  const bool sketched = bounded && bound.sketched();
+  const DivisemeSketches* entry_sketches = bounded ? bound.entry_sketches(graph, diviseme->from, diviseme->to) : nullptr;
+  const bool sketched = entry_sketches != nullptr;
   // A bounded sweep reads the diviseme's entry rows and points where they lie contiguously.
   const DivisemePoints* points = bounded ? &bound.points(graph, diviseme->from, diviseme->to) : nullptr;
   const std::span<const JunctionPoint> entry_point = bounded ? std::span(points->entry) : std::span<const JunctionPoint>{};
@@ -320,8 +321,8 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
     for (std::size_t b = 0; b < targets.size(); ++b) {
       const float* entry = entry_row(b);
       const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
-      const std::int16_t* sketch = sketched ? points->entry_sketch.data() + static_cast<std::ptrdiff_t>(b) * dims : nullptr;
-      const double sketch_error = sketched ? points->entry_sketch_error[b] : 0.0;
+      const std::int16_t* sketch = sketched ? entry_sketches->entry.data() + static_cast<std::ptrdiff_t>(b) * dims : nullptr;
+      const double sketch_error = sketched ? entry_sketches->error[b] : 0.0;
       Choice best{limit};
       best.consider(lead_cost[b], lead.index, lead.state);
       double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this

@@ -229,14 +229,17 @@ TEST(JunctionBound, NeverExceedsTheJunctionCost) {
             ASSERT_LE(floor, 2.0f * cost) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
             // The sketch bound (junction_sketch.hpp), from the same tables the search reads.
             ASSERT_TRUE(bound.sketched());
+            const DivisemeSketches* entry_sketches = bound.entry_sketches(g, from, to);
+            if (!entry_sketches) entry_sketches = bound.entry_sketches(g, from, to);  // made on the second call
+            ASSERT_NE(entry_sketches, nullptr);
             SketchRef sketch;
             std::vector<std::int16_t> buffer;
             bound.exit_sketches(g, from, std::span(&i, 1), std::span(&sketch, 1), buffer);
             const auto dims = g.junction().entry.cols();
             const std::int32_t distance2 =
-                sketch_distance2(points.entry_sketch.data() + m * static_cast<std::size_t>(dims), sketch.values, dims);
+                sketch_distance2(entry_sketches->entry.data() + m * static_cast<std::size_t>(dims), sketch.values, dims);
             const double sketch_floor = sketch_cost_floor(
-                distance2, double{points.entry_sketch_error[m]} + sketch.error, bound.sketch_grid().step);
+                distance2, double{entry_sketches->error[m]} + sketch.error, bound.sketch_grid().step);
             ASSERT_LE(sketch_floor, double{cost}) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
             tight += sketch_floor > 0.9 * cost;
             ++pairs;

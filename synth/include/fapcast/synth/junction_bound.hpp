@@ -43,10 +43,13 @@ struct DivisemePoints {
   std::vector<JunctionPoint> entry;
   Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> entry_rows;
   double along_mean = 0.0, across_mean = 0.0;  // the entries' mean point (u', s')
-  // The entries' sketches (junction_sketch.hpp), entry_rows.cols() values each, and their
-  // rounding norms; empty when the bound has no sketch grid.
-  std::vector<std::int16_t> entry_sketch;
-  std::vector<float> entry_sketch_error;
+};
+
+// The sketches (junction_sketch.hpp) of a diviseme's entries, in the same order: entry_rows.cols()
+// values each, and their rounding norms.
+struct DivisemeSketches {
+  std::vector<std::int16_t> entry;
+  std::vector<float> error;
 };
 
 // A state's exit sketch: its values and rounding norm.
@@ -76,9 +79,14 @@ class JunctionBound {
   void exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to, std::span<const std::uint32_t> states,
              std::span<JunctionPoint> out) const;
 
-  // Whether the points come with sketches (junction_sketch.hpp): rows of at most kSketchMaxDims.
+  // Whether there are sketches (junction_sketch.hpp): rows of at most kSketchMaxDims values.
   bool sketched() const { return shared_ && shared_->sketched; }
   const SketchGrid& sketch_grid() const { return shared_->grid; }
+
+  // The entry sketches of diviseme (from, to), made on its second call (safe from several
+  // threads); nullptr on the first, and without sketches. A one-sentence search joins into most
+  // of its divisemes once, where making sketches would cost more than they spare.
+  const DivisemeSketches* entry_sketches(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const;
 
   // The exit sketches of `states` (all of class `from`), into `out`. Like exits(): made per call
   // into `buffer` until the class has made as many as it has states, then read from a table of

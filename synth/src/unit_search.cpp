@@ -227,7 +227,13 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
 // with R_v, R_t the largest distances of the v_n, t_n from their means. The targets' points
 // differ little, so the last line is small: reading predecessors in ascending key, a target
 // stops at the first whose key_n + floor_j exceeds its best join (or what the cap keeps), usually
-// after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0).
+// after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0). A predecessor read is
+// passed over when the sketch bound (junction_sketch.hpp) of its join exceeds the best so far.
+//
+// Order of work: (1) the predecessor of least key (the lead) joined into every target exactly,
+// which gives the cap's limit before any target is searched further; (2) per target, its best
+// starts at the lead's join (or the limit) and the other predecessors are read in ascending key,
+// only those that some target can reach being sorted.
 void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
                         std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
                         CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
@@ -327,9 +333,6 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
       best.consider(lead_cost[b], lead.index, lead.state);
       double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this
       for (auto x = p.begin(); x != p.end() && x->key <= stop; ++x) {
-#ifdef POINT_TOO
-        if (bounded && x->base + half_beta * JunctionBound::twice_cost_floor(e, x->point) > best.cost) continue;
-#endif
         if (sketched) {
           const double floor = sketch_cost_floor(sketch_distance2<Dims>(sketch, x->sketch.values, dims),
                                                  sketch_error + x->sketch.error, grid_step);

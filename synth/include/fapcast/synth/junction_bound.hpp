@@ -14,7 +14,8 @@
 //
 // Opening a voice computes only the centres and axes (O(states x 2k)); the points of a diviseme
 // are computed the first time a search joins into it (O((states of a + entries of a b) x 2k)), so
-// a one-sentence synthesis pays for the few divisemes it uses, not for all of them.
+// a one-sentence synthesis pays for the few divisemes it uses, not for all of them. The same
+// lazy tables hold the rows' sketches, the second bound (junction_sketch.hpp).
 #include "fapcast/synth/junction_sketch.hpp"
 #include "fapcast/synth/viseme.hpp"
 

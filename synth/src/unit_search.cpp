@@ -334,9 +334,9 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
       double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this
       for (auto x = p.begin(); x != p.end() && x->key <= stop; ++x) {
         if (sketched) {
-          const double floor = sketch_cost_floor(sketch_distance2<Dims>(sketch, x->sketch.values, dims),
-                                                 sketch_error + x->sketch.error, grid_step);
-          if (x->base + beta * floor > best.cost) continue;
+          const double c_floor = sketch_cost_floor(sketch_distance2<Dims>(sketch, x->sketch.values, dims),
+                                                   sketch_error + x->sketch.error, grid_step);
+          if (x->base + beta * c_floor > best.cost) continue;
         } else if (bounded && x->base + half_beta * JunctionBound::twice_cost_floor(e, x->point) > best.cost) {
           continue;
         }

@@ -416,7 +416,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
     // Within a recording: the next phone, free.
     for (std::uint32_t a = 0; a < prev.size(); ++a) {
       const StateId i = prev[a].state;
-      if (graph.has_child(i) && graph.state(i + 1).viseme == targets[t]) {
+      if (graph.child_viseme(i) == targets[t]) {
         builder.add(i + 1, prev[a].cost, a, false);
         cap.add(prev[a].cost);
       }

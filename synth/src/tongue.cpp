@@ -93,32 +93,45 @@ Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<con
   Eigen::MatrixXf out = Eigen::MatrixXf::Zero(static_cast<Eigen::Index>(frames), kTongueFapCount);
   if (targets.empty()) return out;
   constexpr double kFps = static_cast<double>(kVoiceFramesPerSecond);
-  std::vector<double> centre(targets.size());
+  // Each phone's centre and row, looked up once.
+  struct Source {
+    double centre_s;
+    const TongueTarget* target;
+  };
+  std::vector<Source> sources(targets.size());
   for (std::size_t s = 0; s < targets.size(); ++s)
-    centre[s] = 0.5 * static_cast<double>(targets[s].first_frame + targets[s].end_frame) / kFps;
+    sources[s] = {0.5 * static_cast<double>(targets[s].first_frame + targets[s].end_frame) / kFps,
+                  &tongue_target(phones[s])};
+  float* column[kTongueFapCount];
+  for (std::size_t f = 0; f < kTongueFapCount; ++f) column[f] = out.col(static_cast<Eigen::Index>(f)).data();
   std::size_t here = 0;  // the target phone that owns frame n
+  std::vector<const Source*> near;  // the phones that shape frame n, in the order they are summed
+  std::vector<double> falls;        // and their decay (exp is a call: every register is lost)
   for (std::int64_t n = targets.front().first_frame; n < frames; ++n) {
     while (n >= targets[here].end_frame) ++here;
     const double t = static_cast<double>(n) / kFps;
-    std::array<double, kTongueFapCount> num{}, den{};
-    auto add = [&](std::size_t s) {
-      const TongueTarget& p = tongue_target(phones[s]);
-      const double tau = t - centre[s];
-      // Tip and body share their decay (spec/tongue.tsv): one exp serves both.
-      const double fall = p.tip().falloff(tau);
-      const double tip = p.alpha_tip * fall, body = p.alpha_body * fall;
-      for (std::size_t f = 0; f < kTongueFapCount; ++f) {
-        const double d = f < 3 ? tip : body;
-        num[f] += d * p.fap_value[f];
-        den[f] += d;
-      }
-    };
-    add(here);  // always: a long phone's own frames far from its centre still have a value
-    for (std::size_t s = here; s-- > 0 && t - centre[s] <= kTongueReachS;) add(s);
-    for (std::size_t s = here + 1; s < targets.size() && centre[s] - t <= kTongueReachS; ++s) add(s);
-    for (std::size_t f = 0; f < kTongueFapCount; ++f)
-      out(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(f)) =
-          den[f] > 0 ? static_cast<float>(num[f] / den[f]) : 0.0f;
+    near.clear();
+    near.push_back(&sources[here]);  // always: a long phone's own frames far from its centre still have a value
+    for (std::size_t s = here; s-- > 0 && t - sources[s].centre_s <= kTongueReachS;) near.push_back(&sources[s]);
+    for (std::size_t s = here + 1; s < targets.size() && sources[s].centre_s - t <= kTongueReachS; ++s)
+      near.push_back(&sources[s]);
+    // Tip and body share their decay (spec/tongue.tsv): one exp serves both.
+    falls.resize(near.size());
+    for (std::size_t i = 0; i < near.size(); ++i) falls[i] = near[i]->target->tip().falloff(t - near[i]->centre_s);
+    std::array<double, kTongueFapCount> num{};
+    double den_tip = 0, den_body = 0;  // FAPs 43-45 share the tip's, 46-47 the body's
+    for (std::size_t i = 0; i < near.size(); ++i) {
+      const TongueTarget& p = *near[i]->target;
+      const double tip = p.alpha_tip * falls[i], body = p.alpha_body * falls[i];
+      for (std::size_t f = 0; f < 3; ++f) num[f] += tip * p.fap_value[f];
+      for (std::size_t f = 3; f < kTongueFapCount; ++f) num[f] += body * p.fap_value[f];
+      den_tip += tip;
+      den_body += body;
+    }
+    for (std::size_t f = 0; f < kTongueFapCount; ++f) {
+      const double den = f < 3 ? den_tip : den_body;
+      column[f][n] = den > 0 ? static_cast<float>(num[f] / den) : 0.0f;
+    }
   }
   return out;
 }

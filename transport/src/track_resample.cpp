@@ -2,19 +2,47 @@
 
 #include "fapcast/codec/fap_table.hpp"
 
+#include <array>
 #include <cmath>
+#include <span>
 
 namespace fapcast::transport {
 namespace {
 __extension__ typedef __int128 Int128;
 
-// round(a + (b - a) * num / den), half away from zero, in exact integer arithmetic.
+// round(a + (b - a) * num / den), half away from zero, in exact integer arithmetic (0 <= num < den).
+template <class Int>
 std::int32_t lerp_rounded(std::int32_t a, std::int32_t b, std::int64_t num, std::int64_t den) {
-  const Int128 scaled = static_cast<Int128>(a) * den + static_cast<Int128>(b - std::int64_t{a}) * num;
-  const Int128 half = den / 2;
-  const Int128 q = scaled >= 0 ? (scaled + half) / den : -((-scaled + half) / den);
+  const Int scaled = static_cast<Int>(a) * den + static_cast<Int>(b - std::int64_t{a}) * num;
+  const Int half = den / 2;
+  const Int q = scaled >= 0 ? (scaled + half) / den : -((-scaled + half) / den);
   return static_cast<std::int32_t>(q);
 }
+
+// Up to this denominator (every rate pair of practice: 30000/1001 from 60 is 30,000) the lerp fits
+// 64 bits: |a| den <= 2^61, |b - a| num < 2^62, so the sum and the half stay below 2^63, and the
+// division is one machine instruction instead of a 128-bit library call.
+constexpr std::int64_t kMaxDenominator64 = std::int64_t{1} << 30;
+
+// The low-level FAPs (3..68) masked in both of two frames, listed once per pair of masks.
+class CommonFaps {
+ public:
+  std::span<const int> of(const codec::FapMask& a, const codec::FapMask& b) {
+    if (count_ < 0 || !(a == a_) || !(b == b_)) {
+      a_ = a;
+      b_ = b;
+      count_ = 0;
+      for (int fap = 3; fap <= codec::kFapCount; ++fap)
+        if (a.test(fap) && b.test(fap)) faps_[static_cast<std::size_t>(count_++)] = fap;
+    }
+    return {faps_.data(), static_cast<std::size_t>(count_)};
+  }
+
+ private:
+  codec::FapMask a_, b_;
+  std::array<int, codec::kFapCount> faps_{};
+  int count_ = -1;
+};
 }  // namespace
 
 SourcePosition source_position(std::int64_t j, codec::FrameRate from, codec::FrameRate to) {
@@ -39,18 +67,20 @@ codec::FapSequence resample_track(const codec::FapSequence& seq, codec::FrameRat
   const auto n = static_cast<std::int64_t>(seq.frames.size());
   const std::int64_t count = resampled_frame_count(n, seq.rate, to);
   out.frames.reserve(static_cast<std::size_t>(count));
+  CommonFaps common;
   for (std::int64_t j = 0; j < count; ++j) {
     const SourcePosition p = source_position(j, seq.rate, to);
     const std::int64_t k = p.index < n ? p.index : n - 1;
-    codec::FapFrame frame = seq.frames[static_cast<std::size_t>(k)];
+    codec::FapFrame& frame = out.frames.emplace_back(seq.frames[static_cast<std::size_t>(k)]);
     if (mode == ResampleMode::kLinear && p.remainder != 0 && k + 1 < n) {
       const codec::FapFrame& next = seq.frames[static_cast<std::size_t>(k + 1)];
-      for (int fap = 3; fap <= codec::kFapCount; ++fap)
-        if (frame.mask.test(fap) && next.mask.test(fap))
-          frame.values[static_cast<std::size_t>(fap - 1)] =
-              lerp_rounded(frame.value(fap), next.value(fap), p.remainder, p.denominator);
+      const bool narrow = p.denominator <= kMaxDenominator64;
+      for (const int fap : common.of(frame.mask, next.mask)) {
+        std::int32_t& v = frame.values[static_cast<std::size_t>(fap - 1)];
+        v = narrow ? lerp_rounded<std::int64_t>(v, next.value(fap), p.remainder, p.denominator)
+                   : lerp_rounded<Int128>(v, next.value(fap), p.remainder, p.denominator);
+      }
     }
-    out.frames.push_back(frame);
   }
   return out;
 }

@@ -79,6 +79,52 @@ constexpr bool in_phone_order() {
 }
 static_assert(in_phone_order(), "tongue table rows must follow Phone order");
 
+// A frame n sees a phone of frames [f, e) at tau = n / 60 - (f + e) / 120 s = m / 120 s, m = 2n - f - e
+// an integer: the tip's decay exp(-theta |tau|^c) tabled over m for every decay shape of the table
+// (four distinct ones), up to the reach (|m| <= 48; a phone's own far frames are computed).
+constexpr std::int64_t kHalfFramesPerSecond = 2 * kVoiceFramesPerSecond;
+constexpr auto kReachHalfFrames = static_cast<std::int64_t>(kTongueReachS * kHalfFramesPerSecond + 0.5);
+
+double decay_at(const TongueTarget& p, std::int64_t m) {
+  return p.tip().falloff(static_cast<double>(m) / static_cast<double>(kHalfFramesPerSecond));
+}
+
+class DecayTable {
+ public:
+  DecayTable() {
+    for (std::size_t i = 0; i < kPhoneCount; ++i) {
+      const TongueTarget& p = kTable[i];
+      std::size_t same = 0;
+      while (same < i && !same_decay(kTable[same], p)) ++same;
+      if (same < i) {
+        row_of_[i] = row_of_[same];
+        continue;
+      }
+      row_of_[i] = rows_.size();
+      auto& row = rows_.emplace_back();
+      for (std::int64_t m = -kReachHalfFrames; m <= kReachHalfFrames; ++m)
+        row[static_cast<std::size_t>(m + kReachHalfFrames)] = decay_at(p, m);
+    }
+  }
+  // The decay of phone p's tip at m half frames from its centre.
+  double at(const TongueTarget& p, std::int64_t m) const {
+    if (m < -kReachHalfFrames || m > kReachHalfFrames) return decay_at(p, m);
+    return rows_[row_of_[static_cast<std::size_t>(p.phone)]][static_cast<std::size_t>(m + kReachHalfFrames)];
+  }
+
+ private:
+  static bool same_decay(const TongueTarget& a, const TongueTarget& b) {
+    return a.theta_before_per_s == b.theta_before_per_s && a.theta_after_per_s == b.theta_after_per_s && a.c == b.c;
+  }
+  std::vector<std::array<double, 2 * kReachHalfFrames + 1>> rows_;
+  std::array<std::size_t, kPhoneCount> row_of_{};
+};
+
+const DecayTable& decay_table() {
+  static const DecayTable table;
+  return table;
+}
+
 }  // namespace
 
 std::span<const TongueTarget, kPhoneCount> tongue_table() { return kTable; }
@@ -96,17 +142,20 @@ Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<con
   // Each phone's centre and row, looked up once.
   struct Source {
     double centre_s;
+    std::int64_t centre_half_frames;  // f + e: twice the centre, in frames
     const TongueTarget* target;
   };
   std::vector<Source> sources(targets.size());
-  for (std::size_t s = 0; s < targets.size(); ++s)
-    sources[s] = {0.5 * static_cast<double>(targets[s].first_frame + targets[s].end_frame) / kFps,
-                  &tongue_target(phones[s])};
+  for (std::size_t s = 0; s < targets.size(); ++s) {
+    const std::int64_t twice = targets[s].first_frame + targets[s].end_frame;
+    sources[s] = {0.5 * static_cast<double>(twice) / kFps, twice, &tongue_target(phones[s])};
+  }
+  const DecayTable& decay = decay_table();
   float* column[kTongueFapCount];
   for (std::size_t f = 0; f < kTongueFapCount; ++f) column[f] = out.col(static_cast<Eigen::Index>(f)).data();
   std::size_t here = 0;  // the target phone that owns frame n
   std::vector<const Source*> near;  // the phones that shape frame n, in the order they are summed
-  std::vector<double> falls;        // and their decay (exp is a call: every register is lost)
+  std::vector<double> falls;        // and their decay
   for (std::int64_t n = targets.front().first_frame; n < frames; ++n) {
     while (n >= targets[here].end_frame) ++here;
     const double t = static_cast<double>(n) / kFps;
@@ -115,9 +164,9 @@ Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<con
     for (std::size_t s = here; s-- > 0 && t - sources[s].centre_s <= kTongueReachS;) near.push_back(&sources[s]);
     for (std::size_t s = here + 1; s < targets.size() && sources[s].centre_s - t <= kTongueReachS; ++s)
       near.push_back(&sources[s]);
-    // Tip and body share their decay (spec/tongue.tsv): one exp serves both.
+    // Tip and body share their decay (spec/tongue.tsv): one value serves both.
     falls.resize(near.size());
-    for (std::size_t i = 0; i < near.size(); ++i) falls[i] = near[i]->target->tip().falloff(t - near[i]->centre_s);
+    for (std::size_t i = 0; i < near.size(); ++i) falls[i] = decay.at(*near[i]->target, 2 * n - near[i]->centre_half_frames);
     std::array<double, kTongueFapCount> num{};
     double den_tip = 0, den_body = 0;  // FAPs 43-45 share the tip's, 46-47 the body's
     for (std::size_t i = 0; i < near.size(); ++i) {

@@ -40,7 +40,7 @@ struct Tap {
 };
 Tap tap(RecordingFrames r, double p) {
   p = std::clamp(p, static_cast<double>(r.lo), static_cast<double>(r.hi));
-  const auto i0 = static_cast<std::int64_t>(std::floor(p));
+  const auto i0 = static_cast<std::int64_t>(p);  // floor: p >= r.lo >= 0
   const auto i1 = std::min(i0 + 1, r.hi);
   return {static_cast<Eigen::Index>(i0), static_cast<Eigen::Index>(i1), static_cast<float>(p - static_cast<double>(i0))};
 }
@@ -156,15 +156,22 @@ Eigen::MatrixXf render_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca
   const int h = std::max(0, options.blend_half_width);
   std::vector<std::size_t> fade(frames, 0);
   std::vector<float> fade_weight(frames, 0.0f);
+  std::vector<float> ramp;  // the raised cosine over a window of ramp.size() frames (most are 2h)
   for (std::size_t u = 1; u < result.units.size() && h > 0; ++u) {
     const std::size_t t = result.units[u].first_target;  // first phone of the new unit
     const std::int64_t join = targets[t].first_frame;
     const std::int64_t lo = std::max(join - h, targets[t - 1].first_frame);
     const std::int64_t hi = std::min(join + h, targets[t].end_frame);
+    if (ramp.size() != static_cast<std::size_t>(hi - lo)) {
+      ramp.resize(static_cast<std::size_t>(hi - lo));
+      for (std::size_t j = 0; j < ramp.size(); ++j) {
+        const double x = (static_cast<double>(j) + 0.5) / static_cast<double>(hi - lo);
+        ramp[j] = static_cast<float>(0.5 - 0.5 * std::cos(std::numbers::pi * x));
+      }
+    }
     for (std::int64_t n = lo; n < hi; ++n) {
-      const double x = (static_cast<double>(n - lo) + 0.5) / static_cast<double>(hi - lo);
       fade[static_cast<std::size_t>(n - origin)] = t;
-      fade_weight[static_cast<std::size_t>(n - origin)] = static_cast<float>(0.5 - 0.5 * std::cos(std::numbers::pi * x));
+      fade_weight[static_cast<std::size_t>(n - origin)] = ramp[static_cast<std::size_t>(n - lo)];
     }
   }
 

@@ -19,10 +19,29 @@ std::int32_t lerp_rounded(std::int32_t a, std::int32_t b, std::int64_t num, std:
   return static_cast<std::int32_t>(q);
 }
 
-// Up to this denominator (every rate pair of practice: 30000/1001 from 60 is 30,000) the lerp fits
-// 64 bits: |a| den <= 2^61, |b - a| num < 2^62, so the sum and the half stay below 2^63, and the
-// division is one machine instruction instead of a 128-bit library call.
+// Up to this denominator the lerp fits 64 bits: |a| den <= 2^61, |b - a| num < 2^62, so the sum
+// and the half stay below 2^63, and the division is one machine instruction instead of a 128-bit
+// library call.
 constexpr std::int64_t kMaxDenominator64 = std::int64_t{1} << 30;
+
+// Up to this one (every rate pair of practice: 30000/1001 from 60 is 30,000) the numerators below
+// are under 2^53 (|a| den <= 2^51, |b - a| num < 2^52, half < 2^19), so they and den are exact as
+// doubles, and the correctly rounded quotient N / den of two such non-negative integers is never
+// pushed across an integer (its error, under 2^-53 N / den, is below the 1 / den that separates a
+// non-integer quotient from the next integer): truncating it is floor(N / den) exactly, and a
+// floating-point division is several times cheaper than an integer one.
+constexpr std::int64_t kMaxDenominatorDouble = std::int64_t{1} << 20;
+
+std::int64_t floor_quotient(std::int64_t n, double den) {  // 0 <= n < 2^53
+  return static_cast<std::int64_t>(static_cast<double>(n) / den);
+}
+
+std::int32_t lerp_rounded_double(std::int32_t a, std::int32_t b, std::int64_t num, std::int64_t den, double den_d) {
+  const std::int64_t scaled = std::int64_t{a} * den + (std::int64_t{b} - a) * num;
+  const std::int64_t half = den / 2;
+  const std::int64_t q = scaled >= 0 ? floor_quotient(scaled + half, den_d) : -floor_quotient(-scaled + half, den_d);
+  return static_cast<std::int32_t>(q);
+}
 
 // The low-level FAPs (3..68) masked in both of two frames, listed once per pair of masks.
 class CommonFaps {
@@ -74,11 +93,21 @@ codec::FapSequence resample_track(const codec::FapSequence& seq, codec::FrameRat
     codec::FapFrame& frame = out.frames.emplace_back(seq.frames[static_cast<std::size_t>(k)]);
     if (mode == ResampleMode::kLinear && p.remainder != 0 && k + 1 < n) {
       const codec::FapFrame& next = seq.frames[static_cast<std::size_t>(k + 1)];
-      const bool narrow = p.denominator <= kMaxDenominator64;
-      for (const int fap : common.of(frame.mask, next.mask)) {
-        std::int32_t& v = frame.values[static_cast<std::size_t>(fap - 1)];
-        v = narrow ? lerp_rounded<std::int64_t>(v, next.value(fap), p.remainder, p.denominator)
-                   : lerp_rounded<Int128>(v, next.value(fap), p.remainder, p.denominator);
+      const std::span<const int> faps = common.of(frame.mask, next.mask);
+      auto lerp_all = [&](auto lerp) {
+        for (const int fap : faps) {
+          std::int32_t& v = frame.values[static_cast<std::size_t>(fap - 1)];
+          v = lerp(v, next.value(fap));
+        }
+      };
+      const std::int64_t num = p.remainder, den = p.denominator;
+      if (den <= kMaxDenominatorDouble) {
+        const auto den_d = static_cast<double>(den);
+        lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded_double(a, b, num, den, den_d); });
+      } else if (den <= kMaxDenominator64) {
+        lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded<std::int64_t>(a, b, num, den); });
+      } else {
+        lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded<Int128>(a, b, num, den); });
       }
     }
   }

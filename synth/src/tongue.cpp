@@ -144,11 +144,16 @@ Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<con
     double centre_s;
     std::int64_t centre_half_frames;  // f + e: twice the centre, in frames
     const TongueTarget* target;
+    double alpha_tip, alpha_body;                 // the row's, widened once
+    std::array<double, kTongueFapCount> value;
   };
   std::vector<Source> sources(targets.size());
   for (std::size_t s = 0; s < targets.size(); ++s) {
     const std::int64_t twice = targets[s].first_frame + targets[s].end_frame;
-    sources[s] = {0.5 * static_cast<double>(twice) / kFps, twice, &tongue_target(phones[s])};
+    const TongueTarget& p = tongue_target(phones[s]);
+    Source& source = sources[s];
+    source = {0.5 * static_cast<double>(twice) / kFps, twice, &p, p.alpha_tip, p.alpha_body, {}};
+    for (std::size_t f = 0; f < kTongueFapCount; ++f) source.value[f] = p.fap_value[f];
   }
   const DecayTable& decay = decay_table();
   float* column[kTongueFapCount];
@@ -170,10 +175,10 @@ Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<con
     std::array<double, kTongueFapCount> num{};
     double den_tip = 0, den_body = 0;  // FAPs 43-45 share the tip's, 46-47 the body's
     for (std::size_t i = 0; i < near.size(); ++i) {
-      const TongueTarget& p = *near[i]->target;
+      const Source& p = *near[i];
       const double tip = p.alpha_tip * falls[i], body = p.alpha_body * falls[i];
-      for (std::size_t f = 0; f < 3; ++f) num[f] += tip * p.fap_value[f];
-      for (std::size_t f = 3; f < kTongueFapCount; ++f) num[f] += body * p.fap_value[f];
+      for (std::size_t f = 0; f < 3; ++f) num[f] += tip * p.value[f];
+      for (std::size_t f = 3; f < kTongueFapCount; ++f) num[f] += body * p.value[f];
       den_tip += tip;
       den_body += body;
     }

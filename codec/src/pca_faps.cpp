@@ -142,14 +142,15 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
   for (std::size_t m = 0; m < drives.size(); ++m) {
     slot[m] = static_cast<std::size_t>(drives[m].fap - 1);
   }
-  std::vector<FapFrame> frames(static_cast<std::size_t>(coefficients.rows()));
+  std::vector<FapFrame> frames;  // built a frame at a time, so each is written while in cache
+  frames.reserve(static_cast<std::size_t>(coefficients.rows()));
   std::vector<double> units(drives.size());
   std::vector<std::int32_t> values(drives.size());
-  for (std::size_t n = 0; n < frames.size(); ++n) {
-    const double* amount = product.col(static_cast<Eigen::Index>(n)).data();
+  for (Eigen::Index n = 0; n < coefficients.rows(); ++n) {
+    const double* amount = product.col(n).data();
     for (Eigen::Index m = 0; m < count; ++m) units[static_cast<std::size_t>(m)] = (amount[m] + constant(m)) / unit(m);
     round_fap_values(units, values);
-    FapFrame& f = frames[n];
+    FapFrame& f = frames.emplace_back();
     f.mask = mask;
     for (std::size_t m = 0; m < slot.size(); ++m) f.values[slot[m]] = values[m];
   }

@@ -121,10 +121,11 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
   const auto count = static_cast<Eigen::Index>(drives.size());
   Eigen::MatrixXd weight(k, count);
   Eigen::RowVectorXd constant(count), unit(count);
+  Eigen::MatrixXd move(k, 3);  // one buffer for every FAP's point motion
   for (Eigen::Index m = 0; m < count; ++m) {
     const Drive& drive = drives[static_cast<std::size_t>(m)];
     const Eigen::Index at = 3 * static_cast<Eigen::Index>(drive.point);
-    Eigen::MatrixXd move = basis.components.middleCols<3>(at);
+    move = basis.components.middleCols<3>(at);
     Eigen::RowVector3d still = offset.segment<3>(at);
     if (drive.jaw_relative) {
       const Eigen::Index jaw = 3 * static_cast<Eigen::Index>(*chin);

@@ -106,10 +106,9 @@ class DecayTable {
         row[static_cast<std::size_t>(m + kReachHalfFrames)] = decay_at(p, m);
     }
   }
-  // The decay of phone p's tip at m half frames from its centre.
-  double at(const TongueTarget& p, std::int64_t m) const {
-    if (m < -kReachHalfFrames || m > kReachHalfFrames) return decay_at(p, m);
-    return rows_[row_of_[static_cast<std::size_t>(p.phone)]][static_cast<std::size_t>(m + kReachHalfFrames)];
+  // Phone p's row, at its centre: row[m] is the decay m half frames away, |m| <= kReachHalfFrames.
+  const double* centre_of(const TongueTarget& p) const {
+    return rows_[row_of_[static_cast<std::size_t>(p.phone)]].data() + kReachHalfFrames;
   }
 
  private:
@@ -144,44 +143,45 @@ Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<con
     double centre_s;
     std::int64_t centre_half_frames;  // f + e: twice the centre, in frames
     const TongueTarget* target;
+    const double* decay;                          // DecayTable::centre_of(*target)
     double alpha_tip, alpha_body;                 // the row's, widened once
     std::array<double, kTongueFapCount> value;
+    // The tip's decay at frame n (tip and body share it, spec/tongue.tsv).
+    double decay_at_frame(std::int64_t n) const {
+      const std::int64_t m = 2 * n - centre_half_frames;
+      return m >= -kReachHalfFrames && m <= kReachHalfFrames ? decay[m] : decay_at(*target, m);
+    }
   };
+  const DecayTable& decay = decay_table();
   std::vector<Source> sources(targets.size());
   for (std::size_t s = 0; s < targets.size(); ++s) {
     const std::int64_t twice = targets[s].first_frame + targets[s].end_frame;
     const TongueTarget& p = tongue_target(phones[s]);
     Source& source = sources[s];
-    source = {0.5 * static_cast<double>(twice) / kFps, twice, &p, p.alpha_tip, p.alpha_body, {}};
+    source = {0.5 * static_cast<double>(twice) / kFps, twice, &p, decay.centre_of(p), p.alpha_tip, p.alpha_body, {}};
     for (std::size_t f = 0; f < kTongueFapCount; ++f) source.value[f] = p.fap_value[f];
   }
-  const DecayTable& decay = decay_table();
+
   float* column[kTongueFapCount];
   for (std::size_t f = 0; f < kTongueFapCount; ++f) column[f] = out.col(static_cast<Eigen::Index>(f)).data();
   std::size_t here = 0;  // the target phone that owns frame n
-  std::vector<const Source*> near;  // the phones that shape frame n, in the order they are summed
-  std::vector<double> falls;        // and their decay
   for (std::int64_t n = targets.front().first_frame; n < frames; ++n) {
     while (n >= targets[here].end_frame) ++here;
     const double t = static_cast<double>(n) / kFps;
-    near.clear();
-    near.push_back(&sources[here]);  // always: a long phone's own frames far from its centre still have a value
-    for (std::size_t s = here; s-- > 0 && t - sources[s].centre_s <= kTongueReachS;) near.push_back(&sources[s]);
-    for (std::size_t s = here + 1; s < targets.size() && sources[s].centre_s - t <= kTongueReachS; ++s)
-      near.push_back(&sources[s]);
-    // Tip and body share their decay (spec/tongue.tsv): one value serves both.
-    falls.resize(near.size());
-    for (std::size_t i = 0; i < near.size(); ++i) falls[i] = decay.at(*near[i]->target, 2 * n - near[i]->centre_half_frames);
     std::array<double, kTongueFapCount> num{};
     double den_tip = 0, den_body = 0;  // FAPs 43-45 share the tip's, 46-47 the body's
-    for (std::size_t i = 0; i < near.size(); ++i) {
-      const Source& p = *near[i];
-      const double tip = p.alpha_tip * falls[i], body = p.alpha_body * falls[i];
+    auto add = [&](const Source& p) {
+      const double fall = p.decay_at_frame(n);
+      const double tip = p.alpha_tip * fall, body = p.alpha_body * fall;
       for (std::size_t f = 0; f < 3; ++f) num[f] += tip * p.value[f];
       for (std::size_t f = 3; f < kTongueFapCount; ++f) num[f] += body * p.value[f];
       den_tip += tip;
       den_body += body;
-    }
+    };
+    add(sources[here]);  // always: a long phone's own frames far from its centre still have a value
+    for (std::size_t s = here; s-- > 0 && t - sources[s].centre_s <= kTongueReachS;) add(sources[s]);
+    for (std::size_t s = here + 1; s < targets.size() && sources[s].centre_s - t <= kTongueReachS; ++s)
+      add(sources[s]);
     for (std::size_t f = 0; f < kTongueFapCount; ++f) {
       const double den = f < 3 ? den_tip : den_body;
       column[f][n] = den > 0 ? static_cast<float>(num[f] / den) : 0.0f;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <span>
 
 namespace fapcast::transport {
@@ -68,6 +69,11 @@ SourcePosition source_position(std::int64_t j, codec::FrameRate from, codec::Fra
   // t_j = j * to.den / to.num seconds; source index = t_j * from.num / from.den.
   const Int128 num = static_cast<Int128>(j) * to.denominator * from.numerator;
   const Int128 den = static_cast<Int128>(to.numerator) * from.denominator;
+  constexpr Int128 kMax64 = std::numeric_limits<std::int64_t>::max();
+  if (num >= 0 && num <= kMax64 && den <= kMax64) {  // one machine division, not a library call
+    const auto n = static_cast<std::int64_t>(num), d = static_cast<std::int64_t>(den);
+    return {n / d, n % d, d};
+  }
   return {static_cast<std::int64_t>(num / den), static_cast<std::int64_t>(num % den),
           static_cast<std::int64_t>(den)};
 }

@@ -44,18 +44,20 @@ std::int32_t rounded_fap_value(double units) {
   return std::numeric_limits<std::int32_t>::max();
 }
 
-// rounded_fap_value of each of `units`, two at a time where SSE2 (every x86-64) has the
-// instructions: truncation, the fraction, and the half-away-from-zero step, as above.
-void round_fap_values(std::span<const double> units, std::span<std::int32_t> out) {
+// One frame's FAP values, rounded_fap_value((amount[m] + constant[m]) / unit[m]) for each m, two at
+// a time where SSE2 (every x86-64) has the instructions: the same sum and quotient, then
+// truncation, the fraction, and the half-away-from-zero step, as above.
+void frame_fap_values(const double* amount, const double* constant, const double* unit,
+                      std::span<std::int32_t> out) {
   std::size_t m = 0;
 #if defined(__SSE2__)
   const __m128d lo = _mm_set1_pd(kInt32Low), hi = _mm_set1_pd(kInt32High);
   const __m128d half = _mm_set1_pd(0.5), minus_half = _mm_set1_pd(-0.5);
-  for (; m + 2 <= units.size(); m += 2) {
-    const __m128d x = _mm_loadu_pd(units.data() + m);
+  for (; m + 2 <= out.size(); m += 2) {
+    const __m128d x = _mm_div_pd(_mm_add_pd(_mm_loadu_pd(amount + m), _mm_loadu_pd(constant + m)), _mm_loadu_pd(unit + m));
     if (_mm_movemask_pd(_mm_and_pd(_mm_cmpge_pd(x, lo), _mm_cmple_pd(x, hi))) != 3) {  // also NaN
-      out[m] = rounded_fap_value(units[m]);
-      out[m + 1] = rounded_fap_value(units[m + 1]);
+      out[m] = rounded_fap_value(_mm_cvtsd_f64(x));
+      out[m + 1] = rounded_fap_value(_mm_cvtsd_f64(_mm_unpackhi_pd(x, x)));
       continue;
     }
     const __m128i t = _mm_cvttpd_epi32(x);
@@ -68,7 +70,7 @@ void round_fap_values(std::span<const double> units, std::span<std::int32_t> out
     _mm_storel_epi64(reinterpret_cast<__m128i*>(out.data() + m), _mm_add_epi32(t, step));
   }
 #endif
-  for (; m < units.size(); ++m) out[m] = rounded_fap_value(units[m]);
+  for (; m < out.size(); ++m) out[m] = rounded_fap_value((amount[m] + constant[m]) / unit[m]);
 }
 
 }  // namespace
@@ -145,12 +147,9 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
   }
   std::vector<FapFrame> frames;  // built a frame at a time, so each is written while in cache
   frames.reserve(static_cast<std::size_t>(coefficients.rows()));
-  std::vector<double> units(drives.size());
   std::vector<std::int32_t> values(drives.size());
   for (Eigen::Index n = 0; n < coefficients.rows(); ++n) {
-    const double* amount = product.col(n).data();
-    for (Eigen::Index m = 0; m < count; ++m) units[static_cast<std::size_t>(m)] = (amount[m] + constant(m)) / unit(m);
-    round_fap_values(units, values);
+    frame_fap_values(product.col(n).data(), constant.data(), unit.data(), values);
     FapFrame& f = frames.emplace_back();
     f.mask = mask;
     for (std::size_t m = 0; m < slot.size(); ++m) f.values[slot[m]] = values[m];

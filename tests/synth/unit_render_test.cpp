@@ -105,5 +105,51 @@ TEST(RenderUnits, JoinsAreSmootherAfterCrossFadeAndSmoothing) {
   EXPECT_NEAR(smooth(19, 0), 10.0f, 0.2f);
 }
 
+// The renderer smooths as it renders; the result must be the smoother applied to the raw render
+// (the weights: 1, or the hold weight inside held phones), to the bit. Phones of one frame make
+// neighbouring cross-fade windows overlap (the later join wins).
+TEST(RenderUnits, SmoothingAsItRendersIsTheSmootherOfTheRawRender) {
+  std::mt19937_64 rng(23);
+  std::uniform_int_distribution<std::uint32_t> length(1, 8);
+  std::normal_distribution<float> noise;
+  // Six recordings of five phones each, k = 3 random columns.
+  std::vector<PhoneState> states;
+  std::uint32_t f = 0;
+  for (std::uint32_t u = 0; u < 6; ++u)
+    for (int p = 0; p < 5; ++p) {
+      const std::uint32_t c = length(rng);
+      states.push_back({u, static_cast<VisemeClass>(p), {f, c}});
+      f += c;
+    }
+  Eigen::MatrixXf frames(f, 3);
+  for (Eigen::Index i = 0; i < frames.size(); ++i) frames.data()[i] = noise(rng);
+  const PhoneGraph g(states);
+  // 40 targets; a new unit (another recording, same phone position) every 1..4 targets.
+  SearchResult sel;
+  std::vector<TargetPhone> targets;
+  std::vector<double> weights;
+  std::int64_t at = 3;
+  std::uniform_int_distribution<int> unit_length(1, 4), recording(0, 5);
+  const RenderOptions options{3, 2.0, 50.0};
+  for (std::size_t t = 0; t < 40;) {
+    const int len = unit_length(rng), rec = recording(rng);
+    sel.units.push_back({static_cast<StateId>(rec * 5 + static_cast<int>(t % 5)), t, 0});
+    for (int i = 0; i < len && t < 40; ++i, ++t) {
+      const auto state = static_cast<StateId>(rec * 5 + static_cast<int>(t % 5));
+      sel.states.push_back(state);
+      ++sel.units.back().length;
+      const std::int64_t n = length(rng);
+      const bool hold = t % 7 == 3;
+      targets.push_back({states[state].viseme, at, at + n, hold});
+      weights.insert(weights.end(), static_cast<std::size_t>(n), hold ? options.hold_weight : 1.0);
+      at += n;
+    }
+  }
+  const Eigen::MatrixXf smooth = render_units(g, frames, sel, targets, options);
+  const Eigen::MatrixXf raw = render_units(g, frames, sel, targets, {options.blend_half_width, 0.0, options.hold_weight});
+  EXPECT_EQ(smooth, smooth_trajectory(raw, weights, options.smoothing));
+  EXPECT_GT((smooth - raw).cwiseAbs().maxCoeff(), 0.01f) << "the smoother did something";
+}
+
 }  // namespace
 }  // namespace fapcast::synth

@@ -82,18 +82,30 @@ Eigen::MatrixXf render_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca
     }
 
   // Cross-fade at each join: the unit that ends runs on into its own recording, the one that
-  // starts runs back into its own, and a raised cosine hands one over to the other.
+  // starts runs back into its own, and a raised cosine hands one over to the other. A mid-phone
+  // join hands over in the middle of target t - 1, the new unit showing its parent state there.
   const int h = std::max(0, options.blend_half_width);
-  for (std::size_t u = 1; u < result.units.size() && h > 0; ++u) {
+  for (std::size_t u = 1; u < result.units.size(); ++u) {
     const std::size_t t = result.units[u].first_target;  // first phone of the new unit
-    const std::int64_t join = targets[t].first_frame;
-    const std::int64_t lo = std::max(join - h, targets[t - 1].first_frame);
-    const std::int64_t hi = std::min(join + h, targets[t].end_frame);
+    const StateId j = result.states[t];
+    const bool mid = options.join_mid_phone && graph.has_parent(j) &&
+                     graph.state(j - 1).viseme == graph.state(result.states[t - 1]).viseme;
+    const TargetPhone& before = targets[t - 1];
+    // The new unit at frame n: its own state's warp on target t, or (mid-phone) its parent's on t - 1.
+    auto incoming = [&](std::int64_t n) {
+      if (!mid || n >= before.end_frame) return Eigen::RowVectorXf(at(t, n));
+      return Eigen::RowVectorXf(sample(pca_frames, recordings[t], warp(graph.state(j - 1).frames, before.first_frame, before.end_frame, n)));
+    };
+    const std::int64_t join = mid ? before.first_frame + (before.end_frame - before.first_frame) / 2 : targets[t].first_frame;
+    const std::int64_t lo = std::max(join - h, before.first_frame);
+    const std::int64_t hi = std::min(join + h, mid ? before.end_frame : targets[t].end_frame);
     for (std::int64_t n = lo; n < hi; ++n) {
       const double x = (static_cast<double>(n - lo) + 0.5) / static_cast<double>(hi - lo);
       const float w = static_cast<float>(0.5 - 0.5 * std::cos(std::numbers::pi * x));
-      out.row(static_cast<Eigen::Index>(n - origin)) = (1.0f - w) * at(t - 1, n) + w * at(t, n);
+      out.row(static_cast<Eigen::Index>(n - origin)) = (1.0f - w) * at(t - 1, n) + w * incoming(n);
     }
+    if (mid)  // after the fade, the rest of target t - 1 is the new unit's
+      for (std::int64_t n = std::max(hi, join); n < before.end_frame; ++n) out.row(static_cast<Eigen::Index>(n - origin)) = incoming(n);
   }
   return options.smoothing > 0.0 ? smooth_trajectory(out, weights, options.smoothing) : out;
 }

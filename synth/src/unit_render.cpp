@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -149,37 +151,70 @@ Eigen::MatrixXf render_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca
       std::fill(weights.begin() + (target.first_frame - origin), weights.begin() + (target.end_frame - origin),
                 options.hold_weight);
 
-  // Cross-fade at each join: the unit that ends runs on into its own recording, the one that
-  // starts runs back into its own, and a raised cosine hands one over to the other. fade[n]: the
-  // first target phone of the unit whose join frame n fades into (0: none; a later join wins
-  // where two windows meet), and the weight of that unit.
+  // What a frame shows: a state warped onto a target phone's span, read from the recording of
+  // the target `recording` (a state's parent shares its recording). Piece t is target t's own.
+  struct Piece {
+    StateId state;
+    std::size_t recording;
+    std::int64_t first, end;
+  };
+  std::vector<Piece> pieces;
+  pieces.reserve(targets.size() + result.units.size());
+  for (std::size_t t = 0; t < targets.size(); ++t)
+    pieces.push_back({result.states[t], t, targets[t].first_frame, targets[t].end_frame});
+  std::vector<std::uint32_t> shown(frames);  // the piece of each frame outside cross-fades
+  for (std::size_t t = 0; t < targets.size(); ++t)
+    std::fill(shown.begin() + (targets[t].first_frame - origin), shown.begin() + (targets[t].end_frame - origin),
+              static_cast<std::uint32_t>(t));
+
+  // Hand-over at each join: the unit that ends runs on into its own recording, the one that
+  // starts runs back into its own, and a raised cosine hands one over to the other. Mid-phone,
+  // the new unit stands in for the second half of target t - 1 with its state's parent (which
+  // the join rule makes of that phone's class) and the hand-over is centred there. fade_from[n],
+  // fade_to[n]: the pieces frame n fades between (kNoFade: none; a later join wins where two
+  // windows meet), fade_weight[n] the weight of the second.
+  constexpr std::uint32_t kNoFade = std::numeric_limits<std::uint32_t>::max();
   const int h = std::max(0, options.blend_half_width);
-  std::vector<std::size_t> fade(frames, 0);
+  std::vector<std::uint32_t> fade_from(frames, kNoFade), fade_to(frames, kNoFade);
   std::vector<float> fade_weight(frames, 0.0f);
   std::vector<float> ramp;  // the raised cosine over a window of ramp.size() frames (most are 2h)
-  for (std::size_t u = 1; u < result.units.size() && h > 0; ++u) {
+  for (std::size_t u = 1; u < result.units.size(); ++u) {
     const std::size_t t = result.units[u].first_target;  // first phone of the new unit
-    const std::int64_t join = targets[t].first_frame;
-    const std::int64_t lo = std::max(join - h, targets[t - 1].first_frame);
-    const std::int64_t hi = std::min(join + h, targets[t].end_frame);
+    const StateId j = result.states[t];
+    const TargetPhone& before = targets[t - 1];
+    const bool mid = options.join_mid_phone && graph.has_parent(j) &&
+                     graph.state(j - 1).viseme == graph.state(result.states[t - 1]).viseme;
+    auto incoming = static_cast<std::uint32_t>(t);
+    std::int64_t join = targets[t].first_frame, window_end = targets[t].end_frame;
+    if (mid) {
+      incoming = static_cast<std::uint32_t>(pieces.size());
+      pieces.push_back({j - 1, t, before.first_frame, before.end_frame});
+      join = before.first_frame + (before.end_frame - before.first_frame) / 2;
+      window_end = before.end_frame;
+      std::fill(shown.begin() + (join - origin), shown.begin() + (before.end_frame - origin), incoming);
+    }
+    if (h == 0) continue;
+    const std::int64_t lo = std::max(join - h, before.first_frame);
+    const std::int64_t hi = std::min(join + h, window_end);
     if (ramp.size() != static_cast<std::size_t>(hi - lo)) {
       ramp.resize(static_cast<std::size_t>(hi - lo));
-      for (std::size_t j = 0; j < ramp.size(); ++j) {
-        const double x = (static_cast<double>(j) + 0.5) / static_cast<double>(hi - lo);
-        ramp[j] = static_cast<float>(0.5 - 0.5 * std::cos(std::numbers::pi * x));
+      for (std::size_t r = 0; r < ramp.size(); ++r) {
+        const double x = (static_cast<double>(r) + 0.5) / static_cast<double>(hi - lo);
+        ramp[r] = static_cast<float>(0.5 - 0.5 * std::cos(std::numbers::pi * x));
       }
     }
     for (std::int64_t n = lo; n < hi; ++n) {
-      fade[static_cast<std::size_t>(n - origin)] = t;
-      fade_weight[static_cast<std::size_t>(n - origin)] = ramp[static_cast<std::size_t>(n - lo)];
+      const auto i = static_cast<std::size_t>(n - origin);
+      fade_from[i] = static_cast<std::uint32_t>(t - 1);
+      fade_to[i] = incoming;
+      fade_weight[i] = ramp[static_cast<std::size_t>(n - lo)];
     }
   }
 
-  // Each target phone samples its own state through its own warp.
   const float* data = pca_frames.data();
   const auto stride = static_cast<std::size_t>(pca_frames.rows());
-  auto tap_of = [&](std::size_t t, std::int64_t n) {
-    return tap(recordings[t], warp(graph.state(result.states[t]).frames, targets[t].first_frame, targets[t].end_frame, n));
+  auto tap_of = [&](const Piece& p, std::int64_t n) {
+    return tap(recordings[p.recording], warp(graph.state(p.state).frames, p.first, p.end, n));
   };
   auto value = [&](Tap a, std::size_t c) {
     const float* column = data + c * stride;
@@ -190,17 +225,15 @@ Eigen::MatrixXf render_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca
   const SmoothingFactor factor = smooth ? factor_smoother(weights, options.smoothing) : SmoothingFactor{};
   Eigen::VectorXd z(static_cast<Eigen::Index>(frames * k));
   Eigen::MatrixXf out(static_cast<Eigen::Index>(frames), static_cast<Eigen::Index>(k));
-  std::size_t t = 0;
   for (std::size_t i = 0; i < frames; ++i) {
     const auto n = origin + static_cast<std::int64_t>(i);
-    while (n >= targets[t].end_frame) ++t;
     double* row = z.data() + i * k;
-    if (const std::size_t into = fade[i]; into > 0) {
-      const Tap a = tap_of(into - 1, n), b = tap_of(into, n);
+    if (fade_from[i] != kNoFade) {
+      const Tap a = tap_of(pieces[fade_from[i]], n), b = tap_of(pieces[fade_to[i]], n);
       const float w = fade_weight[i];
       for (std::size_t c = 0; c < k; ++c) row[c] = (1.0f - w) * value(a, c) + w * value(b, c);
     } else {
-      const Tap a = tap_of(t, n);
+      const Tap a = tap_of(pieces[shown[i]], n);
       for (std::size_t c = 0; c < k; ++c) row[c] = value(a, c);
     }
     if (!smooth) {

@@ -13,6 +13,42 @@ namespace {
 
 constexpr std::uint32_t kNoBack = std::numeric_limits<std::uint32_t>::max();
 
+// The duration term of SearchOptions: weight * ln^2(frames of state j / frames of target t).
+// A state's part depends only on its frame count, so ln n is tabled by count as counts appear.
+class DurationTerm {
+ public:
+  DurationTerm(const PhoneGraph& graph, std::span<const std::int64_t> target_frames, double weight)
+      : graph_(graph), weight_(target_frames.empty() ? 0.0 : weight) {
+    if (weight_ == 0.0) return;
+    log_target_.reserve(target_frames.size());
+    for (std::size_t t = 0; t < target_frames.size(); ++t) {
+      if (target_frames[t] < 1)
+        throw std::invalid_argument("unit search: target phone " + std::to_string(t) + " lasts " +
+                                    std::to_string(target_frames[t]) + " frames (the duration term needs >= 1)");
+      log_target_.push_back(std::log(static_cast<double>(target_frames[t])));
+    }
+  }
+
+  // What state j costs as target phone t (0 when the term is off).
+  double operator()(StateId j, std::size_t t) {
+    if (weight_ == 0.0) return 0.0;
+    const double d = log_count(graph_.state(j).frames.count) - log_target_[t];
+    return weight_ * d * d;
+  }
+
+ private:
+  double log_count(std::uint32_t n) {
+    n = std::max<std::uint32_t>(n, 1);  // a state always shows at least one frame
+    while (log_of_.size() <= n) log_of_.push_back(std::log(static_cast<double>(std::max<std::size_t>(log_of_.size(), 1))));
+    return log_of_[n];
+  }
+
+  const PhoneGraph& graph_;
+  double weight_;
+  std::vector<double> log_target_;  // ln n_t per target
+  std::vector<double> log_of_;      // ln n by count n
+};
+
 // One active state at one target phone: its best cost so far and where that came from.
 struct Active {
   StateId state;
@@ -110,6 +146,7 @@ struct JoinScratch {
   std::vector<StateId> pred_state;     // the predecessors' states, in prev order
   std::vector<JunctionPoint> pred_point;  // and their exit points on the diviseme's axis
   std::vector<double> floor;           // per target
+  std::vector<double> duration;        // per target: its duration term at this step
   std::vector<std::uint32_t> order;    // targets, the cap's worth with the lowest floor first
 };
 
@@ -148,10 +185,11 @@ void join_with_width(Eigen::Index width, Loop&& loop) {
 // expanded squares is absorbed by the points' slacks, which scale with the spreads).
 double clearly_above(double cost) { return cost + 1e-12 * (1.0 + std::abs(cost)); }
 
-// Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j).
-// The reference: every pair evaluated.
+// Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j),
+// plus the entry's duration term at target phone t. The reference: every pair evaluated.
 void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
-                      std::span<const StateId> targets, double beta, StepBuilder& step) {
+                      std::span<const StateId> targets, double beta, DurationTerm& duration, std::size_t t,
+                      StepBuilder& step) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
   for (StateId j : targets) {
@@ -159,7 +197,7 @@ void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
     for (std::uint32_t a = 0; a < prev.size(); ++a)
       best.consider(prev[a].cost + 1.0 + beta * junction_cost(f.entry.row(j).data(), f.exit.row(prev[a].state).data(), dims),
                     a, prev[a].state);
-    step.offer(j, best.cost, best.back, true);
+    step.offer(j, best.cost + duration(j, t), best.back, true);
   }
 }
 
@@ -179,10 +217,15 @@ void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
 // differ little, so the last line is small: reading predecessors in ascending key, a target
 // stops at the first whose key_n + floor_j exceeds its best join (or what the cap keeps), usually
 // after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0).
+//
+// The duration term d_j of an entry does not depend on the predecessor: the best predecessor is
+// chosen on the join's cost alone and d_j is added to what is offered (as the reference does), so
+// the cap's limit L bounds the join's own cost by L - d_j (loosened by rounding: a join offered in
+// excess is pruned by the cap like in the reference, one left out never could have survived).
 void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev,
                         std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
-                        std::optional<std::size_t> max_active, CapLimit& cap, StepBuilder& step,
-                        JoinScratch& scratch) {
+                        DurationTerm& duration, std::size_t t, std::optional<std::size_t> max_active,
+                        CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
   const auto& bound = graph.junction_bound();
@@ -228,6 +271,9 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
                  beta * (std::abs(du) * v_reach + std::abs(ds) * t_reach);
     }
   }
+  auto& dur = scratch.duration;
+  dur.resize(targets.size());
+  for (std::size_t b = 0; b < targets.size(); ++b) dur[b] = duration(targets[b], t);
   // With a cap, the targets most likely to be kept (lowest floor) go first, so that the cap's
   // limit is tight when the others are read (order changes work, never a result).
   auto& order = scratch.order;
@@ -235,7 +281,7 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
   std::iota(order.begin(), order.end(), 0u);
   if (bounded && max_active && *max_active < targets.size())
     std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(*max_active), order.end(),
-                     [&](std::uint32_t x, std::uint32_t y) { return floor[x] < floor[y]; });
+                     [&](std::uint32_t x, std::uint32_t y) { return floor[x] + dur[x] < floor[y] + dur[y]; });
   // Ascending key; ties in any order (a choice never depends on reading order, see Choice).
   std::sort(p.begin(), p.end(), [](const Predecessor& x, const Predecessor& y) { return x.key < y.key; });
 
@@ -244,7 +290,8 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
       const StateId j = targets[b];
       const float* entry = bounded ? entry_rows + static_cast<std::ptrdiff_t>(b) * dims : f.entry.row(j).data();
       const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
-      Choice best{cap.limit()};
+      const double limit = cap.limit();
+      Choice best{std::isinf(limit) ? limit : clearly_above(limit - dur[b])};
       double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this
       for (const Predecessor& x : p) {
         if (x.key > stop) break;
@@ -254,8 +301,8 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
       }
       if (best.back == kNoBack) continue;  // dearer than the cap keeps
       const bool continued = step.has(j);  // its continuation already bounds its cost
-      step.offer(j, best.cost, best.back, true);
-      if (!continued) cap.add(best.cost);
+      step.offer(j, best.cost + dur[b], best.back, true);
+      if (!continued) cap.add(best.cost + dur[b]);
     }
   });
 }
@@ -263,17 +310,18 @@ void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev
 // Offers the joins into `targets` (the entries of `diviseme` when set, else any states).
 // With beta = 0 (or no features) C drops out and the cheapest active wins every join.
 void offer_joins(const PhoneGraph& graph, const std::vector<Active>& prev, std::span<const StateId> targets,
-                 std::optional<Diviseme> diviseme, const SearchOptions& options, CapLimit& cap, StepBuilder& step,
-                 JoinScratch& scratch) {
+                 std::optional<Diviseme> diviseme, const SearchOptions& options, DurationTerm& duration, std::size_t t,
+                 CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
   if (targets.empty() || prev.empty()) return;
   if (options.beta == 0.0 || !graph.has_junction_features()) {
     const auto best = std::min_element(prev.begin(), prev.end(), better);
     const auto back = static_cast<std::uint32_t>(best - prev.begin());
-    for (StateId j : targets) step.offer(j, best->cost + 1.0, back, true);
+    for (StateId j : targets) step.offer(j, best->cost + 1.0 + duration(j, t), back, true);
     return;
   }
-  if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, step);
-  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, options.max_active, cap, step, scratch);
+  if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, duration, t, step);
+  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, duration, t, options.max_active, cap, step,
+                     scratch);
 }
 
 void prune(std::vector<Active>& actives, std::optional<std::size_t> cap) {
@@ -287,9 +335,20 @@ void prune(std::vector<Active>& actives, std::optional<std::size_t> cap) {
 
 SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
                          const SearchOptions& options) {
+  return unit_search(graph, targets, {}, options);
+}
+
+SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
+                         std::span<const std::int64_t> target_frames, const SearchOptions& options) {
   SearchResult result;
+  if (!target_frames.empty() && target_frames.size() != targets.size())
+    throw std::invalid_argument("unit search: " + std::to_string(target_frames.size()) + " target lengths for " +
+                                std::to_string(targets.size()) + " target phones");
   if (targets.empty()) return result;
   if (options.beta < 0.0) throw std::invalid_argument("unit search: beta must be >= 0");
+  if (!(options.duration_weight >= 0.0) || std::isinf(options.duration_weight))
+    throw std::invalid_argument("unit search: the duration weight must be finite and >= 0");
+  DurationTerm duration(graph, target_frames, options.duration_weight);
   for (std::size_t t = 0; t < targets.size(); ++t)
     if (graph.with_viseme(targets[t]).empty())
       throw std::invalid_argument("unit search: the voice has no phone of viseme class " +
@@ -298,7 +357,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
 
   std::vector<std::vector<Active>> steps(targets.size());
   StepBuilder builder(graph.size());
-  for (StateId j : graph.with_viseme(targets[0])) builder.offer(j, 1.0, kNoBack, true);
+  for (StateId j : graph.with_viseme(targets[0])) builder.offer(j, 1.0 + duration(j, 0), kNoBack, true);
   steps[0] = builder.take();
   prune(steps[0], options.max_active);
   result.stats.active_per_step.push_back(steps[0].size());
@@ -312,17 +371,19 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
     for (std::uint32_t a = 0; a < prev.size(); ++a) {
       const StateId i = prev[a].state;
       if (graph.has_child(i) && graph.state(i + 1).viseme == targets[t]) {
-        builder.offer(i + 1, prev[a].cost, a, false);
-        cap.add(prev[a].cost);
+        const double cost = prev[a].cost + duration(i + 1, t);
+        builder.offer(i + 1, cost, a, false);
+        cap.add(cost);
       }
     }
     // Across recordings: states whose parent looks like the phone we leave.
     offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), Diviseme{targets[t - 1], targets[t]}, options,
-                cap, builder, scratch);
+                duration, t, cap, builder, scratch);
     steps[t] = builder.take();
     if (steps[t].empty()) {  // the voice never recorded this diviseme: join anywhere that matches
       ++result.stats.hard_joins;
-      offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, cap, builder, scratch);
+      offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, duration, t, cap, builder,
+                  scratch);
       steps[t] = builder.take();
     }
     prune(steps[t], options.max_active);

@@ -97,12 +97,54 @@ TEST(RenderUnits, JoinsAreSmootherAfterCrossFadeAndSmoothing) {
   const PhoneGraph g(states);
   SearchResult sel{{0, 3}, {{0, 0, 1}, {3, 1, 1}}, 2.0, {}};
   const std::vector<TargetPhone> targets{{a, 0, 10}, {b, 10, 20}};
-  const Eigen::MatrixXf raw = render_units(g, frames, sel, targets, {0, 0.0, 1.0});
-  const Eigen::MatrixXf smooth = render_units(g, frames, sel, targets, {3, 2.0, 1.0});
+  const Eigen::MatrixXf raw = render_units(g, frames, sel, targets, {0, 0.0, 1.0, false});
+  const Eigen::MatrixXf smooth = render_units(g, frames, sel, targets, {3, 2.0, 1.0, false});
   EXPECT_NEAR(max_second_difference(raw, 5, 15), 10.0f, 1e-4f);
   EXPECT_LT(max_second_difference(smooth, 5, 15), 2.5f);
   EXPECT_NEAR(smooth(0, 0), 0.0f, 0.2f);
   EXPECT_NEAR(smooth(19, 0), 10.0f, 0.2f);
+  // Mid-phone (the default): the same jump, moved to the middle of the first phone, smoothed alike.
+  const Eigen::MatrixXf mid_raw = render_units(g, frames, sel, targets, {0, 0.0, 1.0, true});
+  const Eigen::MatrixXf mid = render_units(g, frames, sel, targets, {});
+  EXPECT_NEAR(max_second_difference(mid_raw, 1, 9), 10.0f, 1e-4f);
+  EXPECT_LT(max_second_difference(mid, 1, 9), 2.5f);
+  EXPECT_NEAR(mid(19, 0), 10.0f, 0.2f);
+}
+
+// Where a unit takes over. Recording 1 holds "a b" at level 10, recording 0 "a b" at level 0,
+// recording 2 "c b" at level 20. A join into recording 1's /b/ (whose parent is an /a/, like the
+// phone left) hands over in the middle of target /a/, which then shows recording 1's /a/; into
+// recording 2's /b/ (a hard join: its parent is a /c/) it stays at the boundary.
+TEST(RenderUnits, MidPhoneJoinHandsOverInThePhoneBefore) {
+  const auto a = static_cast<VisemeClass>(0), b = static_cast<VisemeClass>(1), c = static_cast<VisemeClass>(2);
+  std::vector<PhoneState> states{{0, a, {0, 10}}, {0, b, {10, 10}}, {1, a, {20, 8}},
+                                 {1, b, {28, 10}}, {2, c, {38, 10}}, {2, b, {48, 10}}};
+  Eigen::MatrixXf frames(58, 1);
+  for (int n = 0; n < 58; ++n) frames(n, 0) = n < 20 ? 0.0f : n < 38 ? 10.0f : 20.0f;
+  const PhoneGraph g(states);
+  const std::vector<TargetPhone> targets{{a, 0, 9}, {b, 9, 20}};
+  const RenderOptions cut_mid{0, 0.0, 1.0, true}, cut_boundary{0, 0.0, 1.0, false};
+  auto level = [](const Eigen::MatrixXf& y, int n) { return y(n, 0); };
+
+  const SearchResult admissible{{0, 3}, {{0, 0, 1}, {3, 1, 1}}, 2.0, {}};
+  const Eigen::MatrixXf mid = render_units(g, frames, admissible, targets, cut_mid);
+  for (int n = 0; n < 4; ++n) EXPECT_EQ(level(mid, n), 0.0f) << n;  // recording 0's /a/
+  for (int n = 4; n < 20; ++n) EXPECT_EQ(level(mid, n), 10.0f) << n;  // recording 1's /a/ from 9 / 2
+  const Eigen::MatrixXf boundary = render_units(g, frames, admissible, targets, cut_boundary);
+  for (int n = 0; n < 9; ++n) EXPECT_EQ(level(boundary, n), 0.0f) << n;
+  for (int n = 9; n < 20; ++n) EXPECT_EQ(level(boundary, n), 10.0f) << n;
+
+  const SearchResult hard{{0, 5}, {{0, 0, 1}, {5, 1, 1}}, 2.0, {}};
+  const Eigen::MatrixXf hard_mid = render_units(g, frames, hard, targets, cut_mid);
+  for (int n = 0; n < 9; ++n) EXPECT_EQ(level(hard_mid, n), 0.0f) << n;  // never a /c/ for an /a/
+  for (int n = 9; n < 20; ++n) EXPECT_EQ(level(hard_mid, n), 20.0f) << n;
+
+  // With the cross-fade, the hand-over is a raised cosine centred where the cut is.
+  const Eigen::MatrixXf faded = render_units(g, frames, admissible, targets, {2, 0.0, 1.0, true});
+  EXPECT_EQ(level(faded, 1), 0.0f);
+  EXPECT_GT(level(faded, 3), 0.0f);
+  EXPECT_LT(level(faded, 4), 10.0f);
+  EXPECT_EQ(level(faded, 6), 10.0f);
 }
 
 // The renderer smooths as it renders; the result must be the smoother applied to the raw render

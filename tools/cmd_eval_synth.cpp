@@ -43,6 +43,8 @@ const tools::Registration reg{"71-eval-synth", [](CLI::App& app) {
     std::string json;
     double beta = 0.0;
     std::size_t max_active = 0;
+    double duration_weight = 0.0;
+    bool boundary_joins = false;
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
@@ -62,6 +64,12 @@ const tools::Registration reg{"71-eval-synth", [](CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--max-active", args->max_active, "Cap on active states per phone in the search (0: none)")
       ->capture_default_str();
+  cmd->add_option("--duration-weight", args->duration_weight,
+                  "Weight of the duration term in the search's cost: ln^2 of each phone's time warp (0: none)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd->add_flag("--boundary-joins", args->boundary_joins,
+                "Variable-length units hand over at phone boundaries (default: in the middle of the phone before)");
   cmd->add_option("--plots", args->plots, "Directory for one SVG of lip curves per sentence (created)");
   cmd->add_option("--json", args->json, "Write the results as JSON (atomically)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
@@ -75,8 +83,13 @@ const tools::Registration reg{"71-eval-synth", [](CLI::App& app) {
     const synth::FaceModel actor = synth::reference_actor(synth::ict_face_model(), voice.provenance().seed);
     if (!args->quiet) std::cerr << "recording " << args->count << " held-out sentences (seed " << args->seed << ")\n";
     const auto held = synth::record_held_out(actor, args->seed, args->count);
+    synth::SynthesisOptions options;
+    options.search.beta = args->beta;
+    if (args->max_active > 0) options.search.max_active = args->max_active;
+    options.search.duration_weight = args->duration_weight;
+    options.render.join_mid_phone = !args->boundary_joins;
     const std::vector<synth::NamedSystem> systems{
-        variable_length_system(voice, {{args->beta, args->max_active > 0 ? std::optional(args->max_active) : std::nullopt}, {}}),
+        variable_length_system(voice, options),
         synth::diviseme_system(voice.graph(), voice.frame_coefficients()),
         synth::diviseme_system(voice.graph(), voice.frame_coefficients(), {}, synth::DivisemeChoiceRule::kFirst),
         synth::dominance_system(voice.graph(), voice.frame_coefficients())};
@@ -87,6 +100,8 @@ const tools::Registration reg{"71-eval-synth", [](CLI::App& app) {
             << args->count << " --seed " << args->seed;
     if (args->beta > 0) command << " --beta " << args->beta;
     if (args->max_active > 0) command << " --max-active " << args->max_active;
+    if (args->duration_weight > 0) command << " --duration-weight " << args->duration_weight;
+    if (args->boundary_joins) command << " --boundary-joins";
     const tools::EvaluationContext context{voice_path.string(), args->seed, command.str()};
     std::cout << tools::format_evaluation_table(report, context);
     if (!args->json.empty())

@@ -29,6 +29,12 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
       ->capture_default_str();
   cmd->add_option("--max-active", args.max_active, "Active states kept per phone (0 = all)")
       ->capture_default_str();
+  cmd->add_option("--duration-weight", args.duration_weight,
+                  "Weight of the duration term in the unit search: ln^2 of each phone's time warp (>= 0)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd->add_flag("--boundary-joins", args.boundary_joins,
+                "Hand over between units at phone boundaries (default: in the middle of the phone before)");
   cmd->add_flag("--viseme", args.viseme, "Also write FAP 1 (the MPEG-4 viseme of each frame's phone); not .glb");
   cmd->add_option("--expression", args.expression_text,
                   "FAP 2 expression blended with the speech: NAME[:INTENSITY][,NAME[:INTENSITY]], names joy "
@@ -93,6 +99,8 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const synth::TimedP
   synth::SynthesisOptions options;
   options.search.beta = args.beta;
   if (args.max_active > 0) options.search.max_active = args.max_active;
+  options.search.duration_weight = args.duration_weight;
+  options.render.join_mid_phone = !args.boundary_joins;
   const auto start = std::chrono::steady_clock::now();
   synth::SynthesizedTrack track = synth::synthesize(voice.graph(), voice.frame_coefficients(), phones,
                                                     sample_rate_hz, audio_samples, options, source);

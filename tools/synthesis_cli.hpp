@@ -23,6 +23,8 @@ struct SynthesisArgs {
   bool fps_given = false;
   double beta = 0.1;
   std::size_t max_active = 64;  // 0 = no cap
+  double duration_weight = 0.0;
+  bool boundary_joins = false;  // units take over at phone boundaries, not mid-phone
   bool viseme = false;
   bool quiet = false;
   std::string obj_frames;  // .glb only: also every frame as OBJ here (debugging)

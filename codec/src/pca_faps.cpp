@@ -2,7 +2,12 @@
 
 #include "fapcast/codec/fap_axis.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <cmath>
+#include <span>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -20,12 +25,52 @@ struct Drive {
   bool jaw_relative;
 };
 
+constexpr double kInt32Low = std::numeric_limits<std::int32_t>::min();
+constexpr double kInt32High = std::numeric_limits<std::int32_t>::max();
+
+// std::round(units) for kInt32Low <= units <= kInt32High, without a libm call (x86-64 has no
+// rounding instruction below SSE4.1): truncation is exact there, and so is the fraction units - t,
+// so halves go away from zero exactly as std::round's do. The result stays inside int32.
+std::int32_t rounded_inside_int32(double units) {
+  const auto t = static_cast<std::int32_t>(units);
+  const double fraction = units - static_cast<double>(t);
+  return t + static_cast<std::int32_t>(fraction >= 0.5) - static_cast<std::int32_t>(fraction <= -0.5);
+}
+
 // `units` of a FAP rounded half away from zero (std::round), saturated to int32 (NaN: the minimum).
 std::int32_t rounded_fap_value(double units) {
-  const double v = std::round(units);
-  constexpr double lo = std::numeric_limits<std::int32_t>::min(), hi = std::numeric_limits<std::int32_t>::max();
-  if (!(v >= lo)) return std::numeric_limits<std::int32_t>::min();  // also NaN
-  return v > hi ? std::numeric_limits<std::int32_t>::max() : static_cast<std::int32_t>(v);
+  if (units >= kInt32Low && units <= kInt32High) return rounded_inside_int32(units);
+  if (!(units >= kInt32Low)) return std::numeric_limits<std::int32_t>::min();  // also NaN
+  return std::numeric_limits<std::int32_t>::max();
+}
+
+// One frame's FAP values, rounded_fap_value((amount[m] + constant[m]) / unit[m]) for each m, two at
+// a time where SSE2 (every x86-64) has the instructions: the same sum and quotient, then
+// truncation, the fraction, and the half-away-from-zero step, as above.
+void frame_fap_values(const double* amount, const double* constant, const double* unit,
+                      std::span<std::int32_t> out) {
+  std::size_t m = 0;
+#if defined(__SSE2__)
+  const __m128d lo = _mm_set1_pd(kInt32Low), hi = _mm_set1_pd(kInt32High);
+  const __m128d half = _mm_set1_pd(0.5), minus_half = _mm_set1_pd(-0.5);
+  for (; m + 2 <= out.size(); m += 2) {
+    const __m128d x = _mm_div_pd(_mm_add_pd(_mm_loadu_pd(amount + m), _mm_loadu_pd(constant + m)), _mm_loadu_pd(unit + m));
+    if (_mm_movemask_pd(_mm_and_pd(_mm_cmpge_pd(x, lo), _mm_cmple_pd(x, hi))) != 3) {  // also NaN
+      out[m] = rounded_fap_value(_mm_cvtsd_f64(x));
+      out[m + 1] = rounded_fap_value(_mm_cvtsd_f64(_mm_unpackhi_pd(x, x)));
+      continue;
+    }
+    const __m128i t = _mm_cvttpd_epi32(x);
+    const __m128d fraction = _mm_sub_pd(x, _mm_cvtepi32_pd(t));
+    // Comparisons give all-ones (-1) lanes: t + up - down = t + (down_mask - up_mask), whose
+    // 64-bit lanes' low halves are moved next to each other.
+    const __m128i up = _mm_castpd_si128(_mm_cmpge_pd(fraction, half));
+    const __m128i down = _mm_castpd_si128(_mm_cmple_pd(fraction, minus_half));
+    const __m128i step = _mm_shuffle_epi32(_mm_sub_epi64(down, up), _MM_SHUFFLE(2, 0, 2, 0));
+    _mm_storel_epi64(reinterpret_cast<__m128i*>(out.data() + m), _mm_add_epi32(t, step));
+  }
+#endif
+  for (; m < out.size(); ++m) out[m] = rounded_fap_value((amount[m] + constant[m]) / unit[m]);
 }
 
 }  // namespace
@@ -78,10 +123,11 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
   const auto count = static_cast<Eigen::Index>(drives.size());
   Eigen::MatrixXd weight(k, count);
   Eigen::RowVectorXd constant(count), unit(count);
+  Eigen::MatrixXd move(k, 3);  // one buffer for every FAP's point motion
   for (Eigen::Index m = 0; m < count; ++m) {
     const Drive& drive = drives[static_cast<std::size_t>(m)];
     const Eigen::Index at = 3 * static_cast<Eigen::Index>(drive.point);
-    Eigen::MatrixXd move = basis.components.middleCols<3>(at);
+    move = basis.components.middleCols<3>(at);
     Eigen::RowVector3d still = offset.segment<3>(at);
     if (drive.jaw_relative) {
       const Eigen::Index jaw = 3 * static_cast<Eigen::Index>(*chin);
@@ -92,13 +138,21 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
     constant(m) = still.dot(drive.axis);
     unit(m) = fapu.of(fap_info(drive.fap).unit);
   }
-  const Eigen::MatrixXd amount = (coefficients.cast<double>() * weight).rowwise() + constant;  // frames x FAPs
+  // FAPs x frames: a frame's amounts are one column, written to its FapFrame in one go.
+  const Eigen::MatrixXd product = weight.transpose() * coefficients.cast<double>().transpose();
 
-  std::vector<FapFrame> frames(static_cast<std::size_t>(coefficients.rows()));
+  std::vector<std::size_t> slot(drives.size());  // where FAP m's value goes in FapFrame::values
+  for (std::size_t m = 0; m < drives.size(); ++m) {
+    slot[m] = static_cast<std::size_t>(drives[m].fap - 1);
+  }
+  std::vector<FapFrame> frames;  // built a frame at a time, so each is written while in cache
+  frames.reserve(static_cast<std::size_t>(coefficients.rows()));
+  std::vector<std::int32_t> values(drives.size());
   for (Eigen::Index n = 0; n < coefficients.rows(); ++n) {
-    FapFrame& f = frames[static_cast<std::size_t>(n)];
-    for (Eigen::Index m = 0; m < count; ++m)
-      f.set(drives[static_cast<std::size_t>(m)].fap, rounded_fap_value(amount(n, m) / unit(m)));
+    frame_fap_values(product.col(n).data(), constant.data(), unit.data(), values);
+    FapFrame& f = frames.emplace_back();
+    f.mask = mask;
+    for (std::size_t m = 0; m < slot.size(); ++m) f.values[slot[m]] = values[m];
   }
   return frames;
 }

@@ -390,13 +390,6 @@ Channel channel_from_name(std::string_view name) {
   throw std::invalid_argument("unknown articulatory channel '" + std::string(name) + "'");
 }
 
-double Dominance::falloff(double tau_s) const {
-  const double theta = tau_s < 0 ? theta_before_per_s : theta_after_per_s;
-  // c = 1 (every row today) skips std::pow, the most expensive step of a blend; same value.
-  const double x = c == 1.0f ? std::abs(tau_s) : std::pow(std::abs(tau_s), static_cast<double>(c));
-  return std::exp(-theta * x);
-}
-
 std::span<const PhoneChannelTarget> articulation_table() { return kArticulation; }
 
 std::vector<std::string_view> articulation_phones() {

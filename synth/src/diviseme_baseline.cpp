@@ -136,7 +136,11 @@ Eigen::MatrixXf render_divisemes(const PhoneGraph& graph, const Eigen::MatrixXf&
     add(target, middle, target.end_frame, after, t, 2 * (t + 1 == T ? da.second_state : da.first_state) + 1);
   }
   result.cost = static_cast<double>(result.units.size());
-  return render_units(half_graph, pca_frames, result, half_targets, options);
+  // A diviseme's cuts already lie in the middle of phones (half-states here): its units take over
+  // at their own first half-state, never half a half-phone earlier.
+  RenderOptions at_cuts = options;
+  at_cuts.join_mid_phone = false;
+  return render_units(half_graph, pca_frames, result, half_targets, at_cuts);
 }
 
 }  // namespace fapcast::synth

@@ -72,12 +72,14 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& fram
   // The search and the renderer see the covered classes; the timeline keeps what was asked for.
   std::vector<TargetPhone> covered(targets.begin(), targets.end());
   std::vector<VisemeClass> classes(covered.size());
+  std::vector<std::int64_t> lengths(covered.size());
   for (std::size_t t = 0; t < covered.size(); ++t) {
     const VisemeClass c = covered_viseme(graph, covered[t].viseme);
     if (c != covered[t].viseme) ++out.substituted;
     covered[t].viseme = classes[t] = c;
+    lengths[t] = covered[t].end_frame - covered[t].first_frame;
   }
-  out.search = unit_search(graph, classes, options.search);
+  out.search = unit_search(graph, classes, lengths, options.search);
   out.pca_frames = render_units(graph, frame_coefficients, out.search, covered, options.render);
   out.tongue = tongue_track(targets, out.timeline.phone_of);
   return out;

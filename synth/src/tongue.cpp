@@ -79,6 +79,51 @@ constexpr bool in_phone_order() {
 }
 static_assert(in_phone_order(), "tongue table rows must follow Phone order");
 
+// A frame n sees a phone of frames [f, e) at tau = n / 60 - (f + e) / 120 s = m / 120 s, m = 2n - f - e
+// an integer: the tip's decay exp(-theta |tau|^c) tabled over m for every decay shape of the table
+// (four distinct ones), up to the reach (|m| <= 48; a phone's own far frames are computed).
+constexpr std::int64_t kHalfFramesPerSecond = 2 * kVoiceFramesPerSecond;
+constexpr auto kReachHalfFrames = static_cast<std::int64_t>(kTongueReachS * kHalfFramesPerSecond + 0.5);
+
+double decay_at(const TongueTarget& p, std::int64_t m) {
+  return p.tip().falloff(static_cast<double>(m) / static_cast<double>(kHalfFramesPerSecond));
+}
+
+class DecayTable {
+ public:
+  DecayTable() {
+    for (std::size_t i = 0; i < kPhoneCount; ++i) {
+      const TongueTarget& p = kTable[i];
+      std::size_t same = 0;
+      while (same < i && !same_decay(kTable[same], p)) ++same;
+      if (same < i) {
+        row_of_[i] = row_of_[same];
+        continue;
+      }
+      row_of_[i] = rows_.size();
+      auto& row = rows_.emplace_back();
+      for (std::int64_t m = -kReachHalfFrames; m <= kReachHalfFrames; ++m)
+        row[static_cast<std::size_t>(m + kReachHalfFrames)] = decay_at(p, m);
+    }
+  }
+  // Phone p's row, at its centre: row[m] is the decay m half frames away, |m| <= kReachHalfFrames.
+  const double* centre_of(const TongueTarget& p) const {
+    return rows_[row_of_[static_cast<std::size_t>(p.phone)]].data() + kReachHalfFrames;
+  }
+
+ private:
+  static bool same_decay(const TongueTarget& a, const TongueTarget& b) {
+    return a.theta_before_per_s == b.theta_before_per_s && a.theta_after_per_s == b.theta_after_per_s && a.c == b.c;
+  }
+  std::vector<std::array<double, 2 * kReachHalfFrames + 1>> rows_;
+  std::array<std::size_t, kPhoneCount> row_of_{};
+};
+
+const DecayTable& decay_table() {
+  static const DecayTable table;
+  return table;
+}
+
 }  // namespace
 
 std::span<const TongueTarget, kPhoneCount> tongue_table() { return kTable; }
@@ -93,32 +138,54 @@ Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<con
   Eigen::MatrixXf out = Eigen::MatrixXf::Zero(static_cast<Eigen::Index>(frames), kTongueFapCount);
   if (targets.empty()) return out;
   constexpr double kFps = static_cast<double>(kVoiceFramesPerSecond);
-  std::vector<double> centre(targets.size());
-  for (std::size_t s = 0; s < targets.size(); ++s)
-    centre[s] = 0.5 * static_cast<double>(targets[s].first_frame + targets[s].end_frame) / kFps;
+  // Each phone's centre and row, looked up once.
+  struct Source {
+    double centre_s;
+    std::int64_t centre_half_frames;  // f + e: twice the centre, in frames
+    const TongueTarget* target;
+    const double* decay;                          // DecayTable::centre_of(*target)
+    double alpha_tip, alpha_body;                 // the row's, widened once
+    std::array<double, kTongueFapCount> value;
+    // The tip's decay at frame n (tip and body share it, spec/tongue.tsv).
+    double decay_at_frame(std::int64_t n) const {
+      const std::int64_t m = 2 * n - centre_half_frames;
+      return m >= -kReachHalfFrames && m <= kReachHalfFrames ? decay[m] : decay_at(*target, m);
+    }
+  };
+  const DecayTable& decay = decay_table();
+  std::vector<Source> sources(targets.size());
+  for (std::size_t s = 0; s < targets.size(); ++s) {
+    const std::int64_t twice = targets[s].first_frame + targets[s].end_frame;
+    const TongueTarget& p = tongue_target(phones[s]);
+    Source& source = sources[s];
+    source = {0.5 * static_cast<double>(twice) / kFps, twice, &p, decay.centre_of(p), p.alpha_tip, p.alpha_body, {}};
+    for (std::size_t f = 0; f < kTongueFapCount; ++f) source.value[f] = p.fap_value[f];
+  }
+
+  float* column[kTongueFapCount];
+  for (std::size_t f = 0; f < kTongueFapCount; ++f) column[f] = out.col(static_cast<Eigen::Index>(f)).data();
   std::size_t here = 0;  // the target phone that owns frame n
   for (std::int64_t n = targets.front().first_frame; n < frames; ++n) {
     while (n >= targets[here].end_frame) ++here;
     const double t = static_cast<double>(n) / kFps;
-    std::array<double, kTongueFapCount> num{}, den{};
-    auto add = [&](std::size_t s) {
-      const TongueTarget& p = tongue_target(phones[s]);
-      const double tau = t - centre[s];
-      // Tip and body share their decay (spec/tongue.tsv): one exp serves both.
-      const double fall = p.tip().falloff(tau);
+    std::array<double, kTongueFapCount> num{};
+    double den_tip = 0, den_body = 0;  // FAPs 43-45 share the tip's, 46-47 the body's
+    auto add = [&](const Source& p) {
+      const double fall = p.decay_at_frame(n);
       const double tip = p.alpha_tip * fall, body = p.alpha_body * fall;
-      for (std::size_t f = 0; f < kTongueFapCount; ++f) {
-        const double d = f < 3 ? tip : body;
-        num[f] += d * p.fap_value[f];
-        den[f] += d;
-      }
+      for (std::size_t f = 0; f < 3; ++f) num[f] += tip * p.value[f];
+      for (std::size_t f = 3; f < kTongueFapCount; ++f) num[f] += body * p.value[f];
+      den_tip += tip;
+      den_body += body;
     };
-    add(here);  // always: a long phone's own frames far from its centre still have a value
-    for (std::size_t s = here; s-- > 0 && t - centre[s] <= kTongueReachS;) add(s);
-    for (std::size_t s = here + 1; s < targets.size() && centre[s] - t <= kTongueReachS; ++s) add(s);
-    for (std::size_t f = 0; f < kTongueFapCount; ++f)
-      out(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(f)) =
-          den[f] > 0 ? static_cast<float>(num[f] / den[f]) : 0.0f;
+    add(sources[here]);  // always: a long phone's own frames far from its centre still have a value
+    for (std::size_t s = here; s-- > 0 && t - sources[s].centre_s <= kTongueReachS;) add(sources[s]);
+    for (std::size_t s = here + 1; s < targets.size() && sources[s].centre_s - t <= kTongueReachS; ++s)
+      add(sources[s]);
+    for (std::size_t f = 0; f < kTongueFapCount; ++f) {
+      const double den = f < 3 ? den_tip : den_body;
+      column[f][n] = den > 0 ? static_cast<float>(num[f] / den) : 0.0f;
+    }
   }
   return out;
 }

@@ -13,6 +13,42 @@ namespace {
 
 constexpr std::uint32_t kNoBack = std::numeric_limits<std::uint32_t>::max();
 
+// The duration term of SearchOptions: weight * ln^2(frames of state j / frames of target t).
+// A state's part depends only on its frame count, so ln n is tabled by count as counts appear.
+class DurationTerm {
+ public:
+  DurationTerm(const PhoneGraph& graph, std::span<const std::int64_t> target_frames, double weight)
+      : graph_(graph), weight_(target_frames.empty() ? 0.0 : weight) {
+    if (weight_ == 0.0) return;
+    log_target_.reserve(target_frames.size());
+    for (std::size_t t = 0; t < target_frames.size(); ++t) {
+      if (target_frames[t] < 1)
+        throw std::invalid_argument("unit search: target phone " + std::to_string(t) + " lasts " +
+                                    std::to_string(target_frames[t]) + " frames (the duration term needs >= 1)");
+      log_target_.push_back(std::log(static_cast<double>(target_frames[t])));
+    }
+  }
+
+  // What state j costs as target phone t (0 when the term is off).
+  double operator()(StateId j, std::size_t t) {
+    if (weight_ == 0.0) return 0.0;
+    const double d = log_count(graph_.state(j).frames.count) - log_target_[t];
+    return weight_ * d * d;
+  }
+
+ private:
+  double log_count(std::uint32_t n) {
+    n = std::max<std::uint32_t>(n, 1);  // a state always shows at least one frame
+    while (log_of_.size() <= n) log_of_.push_back(std::log(static_cast<double>(std::max<std::size_t>(log_of_.size(), 1))));
+    return log_of_[n];
+  }
+
+  const PhoneGraph& graph_;
+  double weight_;
+  std::vector<double> log_target_;  // ln n_t per target
+  std::vector<double> log_of_;      // ln n by count n
+};
+
 // One active state at one target phone: its best cost so far and where that came from.
 struct Active {
   StateId state;
@@ -159,6 +195,7 @@ struct JoinScratch {
   std::vector<std::int16_t> sketch_buffer;  // where those are made until the class is tabled
   std::vector<double> floor;           // per target
   std::vector<double> lead_cost;       // per target: its join from the predecessor of least key
+  std::vector<double> duration;        // per target: its duration term at this step
 };
 
 // A join's predecessor: the cheapest (cost, state), as `better` orders them.
@@ -196,10 +233,11 @@ void join_with_width(Eigen::Index width, Loop&& loop) {
 // expanded squares is absorbed by the points' slacks, which scale with the spreads).
 double clearly_above(double cost) { return cost + 1e-12 * (1.0 + std::abs(cost)); }
 
-// Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j).
-// The reference: every pair evaluated.
+// Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j),
+// plus the entry's duration term at target phone t. The reference: every pair evaluated.
 void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
-                      std::span<const StateId> targets, double beta, StepBuilder& step) {
+                      std::span<const StateId> targets, double beta, DurationTerm& duration, std::size_t t,
+                      StepBuilder& step) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
   for (std::size_t b = 0; b < targets.size(); ++b) {
@@ -208,7 +246,7 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
     for (std::uint32_t a = 0; a < prev.size(); ++a)
       best.consider(prev[a].cost + 1.0 + beta * junction_cost(f.entry.row(j).data(), f.exit.row(prev[a].state).data(), dims),
                     a, prev[a].state);
-    step.join(b, j, best.cost, best.back);
+    step.join(b, j, best.cost + duration(j, t), best.back);
   }
 }
 
@@ -230,13 +268,19 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
 // after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0). A predecessor read is
 // passed over when the sketch bound (junction_sketch.hpp) of its join exceeds the best so far.
 //
+// The duration term d_j of an entry does not depend on the predecessor: the best predecessor is
+// chosen on the join's cost alone and d_j is added to what is offered (as the reference does), so
+// the cap's limit L bounds the join's own cost by L - d_j (loosened by rounding: a join offered in
+// excess is dropped by the cap as the reference drops it; one left out never could have survived).
+//
 // Order of work: (1) the predecessor of least key (the lead) joined into every target exactly,
 // which gives the cap's limit before any target is searched further; (2) per target, its best
 // starts at the lead's join (or the limit) and the other predecessors are read in ascending key,
 // only those that some target can reach being sorted.
 void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
                         std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
-                        CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
+                        DurationTerm& duration, std::size_t t, CapLimit& cap, StepBuilder& step,
+                        JoinScratch& scratch) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
   const auto& bound = graph.junction_bound();
@@ -301,14 +345,19 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
     for (std::size_t b = 0; b < targets.size(); ++b)
       lead_cost[b] = lead.base + beta * junction_cost<Dims>(entry_row(b), lead.exit, dims);
   });
+  auto& dur = scratch.duration;
+  dur.resize(targets.size());
+  for (std::size_t b = 0; b < targets.size(); ++b) dur[b] = duration(targets[b], t);
   for (std::size_t b = 0; b < targets.size(); ++b)
-    if (!step.has_target(b)) cap.add(lead_cost[b]);  // a continuation's cost is in already
+    if (!step.has_target(b)) cap.add(lead_cost[b] + dur[b]);  // a continuation's cost is in already
   const double limit = cap.limit();
+  // What target b's join itself may cost to be kept (its duration term comes on top).
+  const auto join_limit = [&](std::size_t b) { return std::isinf(limit) ? limit : clearly_above(limit - dur[b]); };
   // The others in ascending key (ties in any order: a choice never depends on reading order, see
   // Choice), as far as any target could read: its best starts at most at its lead cost.
   double reach = -std::numeric_limits<double>::infinity();
   for (std::size_t b = 0; b < targets.size(); ++b)
-    reach = std::max(reach, clearly_above(std::min(limit, lead_cost[b])) - floor[b]);
+    reach = std::max(reach, clearly_above(std::min(join_limit(b), lead_cost[b])) - floor[b]);
   const auto readable = std::partition(by_key.begin() + 1, by_key.end(), [reach](const auto& x) { return x.first <= reach; });
   std::sort(by_key.begin() + 1, readable, by_key_less);
   auto& p = scratch.pred;
@@ -329,7 +378,7 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
       const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
       const std::int16_t* sketch = sketched ? entry_sketches->entry.data() + static_cast<std::ptrdiff_t>(b) * dims : nullptr;
       const double sketch_error = sketched ? entry_sketches->error[b] : 0.0;
-      Choice best{limit};
+      Choice best{join_limit(b)};
       best.consider(lead_cost[b], lead.index, lead.state);
       double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this
       for (auto x = p.begin(); x != p.end() && x->key <= stop; ++x) {
@@ -343,7 +392,7 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
         if (best.consider(x->base + beta * junction_cost<Dims>(entry, x->exit, dims), x->index, x->state))
           stop = clearly_above(best.cost) - floor[b];
       }
-      if (best.back != kNoBack) step.join(b, targets[b], best.cost, best.back);  // else dearer than the cap keeps
+      if (best.back != kNoBack) step.join(b, targets[b], best.cost + dur[b], best.back);  // else dearer than the cap keeps
     }
   });
 }
@@ -351,18 +400,19 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
 // Offers the joins into `targets` (the entries of `diviseme` when set, else any states).
 // With beta = 0 (or no features) C drops out and the cheapest active wins every join.
 void offer_joins(const PhoneGraph& graph, std::span<const Active> prev, std::span<const StateId> targets,
-                 std::optional<Diviseme> diviseme, const SearchOptions& options, CapLimit& cap, StepBuilder& step,
-                 JoinScratch& scratch) {
+                 std::optional<Diviseme> diviseme, const SearchOptions& options, DurationTerm& duration, std::size_t t,
+                 CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
   if (targets.empty() || prev.empty()) return;
   step.begin_joins(targets);
   if (options.beta == 0.0 || !graph.has_junction_features()) {
     const auto best = std::min_element(prev.begin(), prev.end(), better);
     const auto back = static_cast<std::uint32_t>(best - prev.begin());
-    for (std::size_t b = 0; b < targets.size(); ++b) step.join(b, targets[b], best->cost + 1.0, back);
+    for (std::size_t b = 0; b < targets.size(); ++b)
+      step.join(b, targets[b], best->cost + 1.0 + duration(targets[b], t), back);
     return;
   }
-  if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, step);
-  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, cap, step, scratch);
+  if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, duration, t, step);
+  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, duration, t, cap, step, scratch);
 }
 
 // Keeps the cap's worth of cheapest actives. `limit` is at least the cap-th smallest cost (see
@@ -380,9 +430,20 @@ void prune(std::vector<Active>& actives, std::optional<std::size_t> cap, double 
 
 SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
                          const SearchOptions& options) {
+  return unit_search(graph, targets, {}, options);
+}
+
+SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
+                         std::span<const std::int64_t> target_frames, const SearchOptions& options) {
   SearchResult result;
+  if (!target_frames.empty() && target_frames.size() != targets.size())
+    throw std::invalid_argument("unit search: " + std::to_string(target_frames.size()) + " target lengths for " +
+                                std::to_string(targets.size()) + " target phones");
   if (targets.empty()) return result;
   if (options.beta < 0.0) throw std::invalid_argument("unit search: beta must be >= 0");
+  if (!(options.duration_weight >= 0.0) || std::isinf(options.duration_weight))
+    throw std::invalid_argument("unit search: the duration weight must be finite and >= 0");
+  DurationTerm duration(graph, target_frames, options.duration_weight);
   for (std::size_t t = 0; t < targets.size(); ++t)
     if (graph.with_viseme(targets[t]).empty())
       throw std::invalid_argument("unit search: the voice has no phone of viseme class " +
@@ -406,7 +467,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   };
   const auto step = [&](std::size_t t) { return std::span(trail).subspan(begin[t], begin[t + 1] - begin[t]); };
   result.stats.active_per_step.reserve(targets.size());
-  for (StateId j : graph.with_viseme(targets[0])) builder.add(j, 1.0, kNoBack, true);
+  for (StateId j : graph.with_viseme(targets[0])) builder.add(j, 1.0 + duration(j, 0), kNoBack, true);
   close_step();
 
   JoinScratch scratch;
@@ -417,16 +478,18 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
     for (std::uint32_t a = 0; a < prev.size(); ++a) {
       const StateId i = prev[a].state;
       if (graph.child_viseme(i) == targets[t]) {
-        builder.add(i + 1, prev[a].cost, a, false);
-        cap.add(prev[a].cost);
+        const double cost = prev[a].cost + duration(i + 1, t);
+        builder.add(i + 1, cost, a, false);
+        cap.add(cost);
       }
     }
     // Across recordings: states whose parent looks like the phone we leave.
     offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), Diviseme{targets[t - 1], targets[t]}, options,
-                cap, builder, scratch);
+                duration, t, cap, builder, scratch);
     if (builder.empty()) {  // the voice never recorded this diviseme: join anywhere that matches
       ++result.stats.hard_joins;
-      offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, cap, builder, scratch);
+      offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, duration, t, cap, builder,
+                  scratch);
     }
     close_step();
   }

@@ -9,6 +9,7 @@
 #include "fapcast/codec/face_geometry.hpp"
 #include "fapcast/codec/pca_faps.hpp"
 #include "fapcast/synth/synthesis.hpp"
+#include "fapcast/synth/tongue.hpp"
 #include "fapcast/transport/track_resample.hpp"
 #include "support/synthetic_voice_graph.hpp"
 
@@ -169,6 +170,50 @@ BENCHMARK(BM_PhonesToFaps)
     ->ArgNames({"beta100", "cap", "prune"})
     ->Args({0, 0, 1})->Args({10, 64, 0})->Args({10, 64, 1})->Args({10, 16, 1})
     ->Unit(benchmark::kMillisecond);
+
+// The work after the search, at the `say` default, from one fixed search result: what
+// synthesize() does besides unit_search (voice grid, render: warp, cross-fade, smoothing; tongue)
+// and what follows it (PCA -> FAPs at 60 fps, resampled to 25 fps). Together they are
+// BM_PhonesToFaps minus the search.
+const synth::SynthesizedTrack& default_track() {
+  static const synth::SynthesizedTrack s = [] {
+    const World& w = world();
+    synth::SynthesisOptions o;
+    o.search.beta = 0.1;
+    o.search.max_active = 64;
+    return synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, o);
+  }();
+  return s;
+}
+
+void BM_RenderAfterSearch(benchmark::State& state) {
+  const World& w = world();
+  const synth::SynthesizedTrack& s = default_track();
+  for (auto _ : state) {
+    // The bench graph covers every class, so the covered targets are the timeline's own.
+    const auto timeline = synth::place_on_voice_grid(w.phones, kRate);
+    auto pca = synth::render_units(*w.voice.graph, w.voice.frames, s.search, timeline.phones);
+    auto tongue = synth::tongue_track(timeline.phones, timeline.phone_of);
+    benchmark::DoNotOptimize(pca.data());
+    benchmark::DoNotOptimize(tongue.data());
+  }
+  state.counters["anim_s_per_cpu_s"] =
+      benchmark::Counter(kSentenceS * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_RenderAfterSearch)->Unit(benchmark::kMillisecond);
+
+void BM_FapsAt25(benchmark::State& state) {
+  const World& w = world();
+  const synth::SynthesizedTrack& s = default_track();
+  for (auto _ : state) {
+    codec::FapSequence seq{"bench", {60, 1}, codec::pca_to_faps(s.pca_frames, w.basis)};
+    auto out = transport::resample_track(seq, {25, 1}, transport::ResampleMode::kLinear);
+    benchmark::DoNotOptimize(out.frames.data());
+  }
+  state.counters["anim_s_per_cpu_s"] =
+      benchmark::Counter(kSentenceS * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_FapsAt25)->Unit(benchmark::kMillisecond);
 
 // The search is over the whole utterance (Viterbi back-trace), so the first frame exists only
 // when the sentence is synthesised: time to first frame = synthesis + one frame of FAPs.

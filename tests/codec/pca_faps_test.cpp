@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 namespace fapcast::codec {
@@ -86,7 +88,14 @@ TEST(PcaFaps, MeanAwayFromNeutralIsADisplacementToo) {
   EXPECT_EQ(f.value(4), std::lround(0.22 / measure_fapu(m.positions).mns));  // lower_t_midlip: down
 }
 
-TEST(PcaFaps, RandomRoundTripThroughFapPatterns) {
+// A basis whose component i moves FAP faps[i]'s point by 100 units along its axis; a jaw-borne
+// point also follows the chin's components, as a player would move it.
+struct FapPatternBasis {
+  std::vector<int> faps;
+  FeaturePointBasis basis;
+};
+
+FapPatternBasis fap_pattern_basis() {
   const PointMesh m = point_mesh();
   const FapuValues fapu = measure_fapu(m.positions);
   const FeaturePointBasis probe = restrict_basis(m.neutral, RowMajorMatrixXf::Zero(1, m.neutral.cols()), m.points, m.positions);
@@ -94,9 +103,6 @@ TEST(PcaFaps, RandomRoundTripThroughFapPatterns) {
   std::vector<int> faps;
   for (int fap = 3; fap <= kFapCount; ++fap)
     if (mask.test(fap)) faps.push_back(fap);
-  ASSERT_GE(faps.size(), 30u);
-  // Component i moves FAP i's point by 100 units along its axis; a jaw-borne point also follows
-  // the chin's components, as a player would move it.
   RowMajorMatrixXf comp = RowMajorMatrixXf::Zero(static_cast<Eigen::Index>(faps.size()), m.neutral.cols());
   for (std::size_t i = 0; i < faps.size(); ++i) {
     const FapInfo& info = fap_info(faps[i]);
@@ -109,7 +115,12 @@ TEST(PcaFaps, RandomRoundTripThroughFapPatterns) {
       for (const auto& p : m.points)
         if (is_jaw_borne(p.fp)) move(p.fp);
   }
-  const FeaturePointBasis basis = restrict_basis(m.neutral, comp, m.points, m.positions);
+  return {faps, restrict_basis(m.neutral, comp, m.points, m.positions)};
+}
+
+TEST(PcaFaps, RandomRoundTripThroughFapPatterns) {
+  const auto [faps, basis] = fap_pattern_basis();
+  ASSERT_GE(faps.size(), 30u);
   std::mt19937_64 rng(11);
   std::uniform_int_distribution<int> value(-400, 400);
   Eigen::MatrixXf c(50, static_cast<Eigen::Index>(faps.size()));
@@ -123,6 +134,38 @@ TEST(PcaFaps, RandomRoundTripThroughFapPatterns) {
   for (std::size_t n = 0; n < 50; ++n)
     for (std::size_t i = 0; i < faps.size(); ++i)
       ASSERT_NEAR(frames[n].value(faps[i]), want[n][i], 1) << "frame " << n << " FAP " << faps[i];
+}
+
+// The values are rounded two at a time; a value outside int32 (or NaN) takes the slow path
+// without disturbing the FAP next to it.
+TEST(PcaFaps, SaturationStaysInItsOwnFap) {
+  const auto [faps, basis] = fap_pattern_basis();
+  const auto k = static_cast<Eigen::Index>(faps.size());
+  Eigen::MatrixXf c(2 + k, k);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<float> value(-4.0f, 4.0f);
+  for (Eigen::Index i = 0; i < k; ++i) c(0, i) = value(rng);
+  c.row(1) = c.row(0);
+  c(1, 0) = std::numeric_limits<float>::quiet_NaN();
+  for (Eigen::Index j = 0; j < k; ++j) {
+    c.row(2 + j) = c.row(0);
+    c(2 + j, j) = j % 2 ? 1e30f : -1e30f;
+  }
+  const auto frames = pca_to_faps(c, basis);
+  constexpr auto kMax = std::numeric_limits<std::int32_t>::max(), kMin = std::numeric_limits<std::int32_t>::min();
+  for (const int fap : faps) EXPECT_EQ(frames[1].value(fap), kMin) << "NaN reaches every FAP: FAP " << fap;
+  for (Eigen::Index j = 0; j < k; ++j) {
+    const auto& f = frames[static_cast<std::size_t>(2 + j)];
+    EXPECT_EQ(f.value(faps[static_cast<std::size_t>(j)]), j % 2 ? kMax : kMin) << "FAP " << faps[static_cast<std::size_t>(j)];
+    int unchanged = 0;
+    for (const int fap : faps) {
+      const std::int32_t v = f.value(fap);
+      EXPECT_TRUE(v == frames[0].value(fap) || v == kMax || v == kMin) << "FAP " << fap;
+      unchanged += v == frames[0].value(fap);
+    }
+    // Only FAPs on the same point along the same axis, or jaw-borne ones for the chin, follow.
+    EXPECT_GE(unchanged, static_cast<int>(faps.size()) - 12) << "component " << j;
+  }
 }
 
 TEST(PcaFaps, RefusesBadBases) {
@@ -149,6 +192,35 @@ TEST(PcaFaps, ToFapValueRoundsAndSaturates) {
   EXPECT_EQ(to_fap_value(47, 0.1, fapu), 10000);  // tongue_roll: 0.1 rad in AU
   EXPECT_EQ(to_fap_value(3, 1e30, fapu), std::numeric_limits<std::int32_t>::max());
   EXPECT_EQ(to_fap_value(3, -1e30, fapu), std::numeric_limits<std::int32_t>::min());
+  EXPECT_EQ(to_fap_value(3, std::numeric_limits<double>::quiet_NaN(), fapu), std::numeric_limits<std::int32_t>::min());
+}
+
+// Rounding without libm is std::round exactly: halves, their neighbours, the int32 edges.
+TEST(PcaFaps, ToFapValueIsStdRoundSaturated) {
+  const FapuValues fapu = measure_fapu(generic_adult_face().feature_points);
+  const double unit = fapu.of(fap_info(3).unit);
+  auto expected = [&](double amount) -> std::int32_t {
+    const double v = std::round(amount / unit);
+    if (!(v >= std::numeric_limits<std::int32_t>::min())) return std::numeric_limits<std::int32_t>::min();
+    if (v > std::numeric_limits<std::int32_t>::max()) return std::numeric_limits<std::int32_t>::max();
+    return static_cast<std::int32_t>(v);
+  };
+  std::vector<double> units{0.0, -0.0, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 1e6 + 0.5, -1e6 - 0.5,
+                            2147483647.0, 2147483647.4, 2147483647.5, 2147483648.0, -2147483648.0,
+                            -2147483648.4, -2147483648.5, -2147483649.0, 1e300, -1e300};
+  for (double h = 0.5; h < 1e9; h = h * 3 + 0.5) {
+    units.push_back(h);
+    units.push_back(std::nextafter(h, 0.0));
+    units.push_back(std::nextafter(h, 1e18));
+    units.push_back(-std::nextafter(h, 0.0));
+  }
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> any(-3e9, 3e9);
+  for (int i = 0; i < 10000; ++i) units.push_back(any(rng));
+  for (const double x : units) {
+    const double amount = x * unit;
+    EXPECT_EQ(to_fap_value(3, amount, fapu), expected(amount)) << "amount " << amount << " (" << x << " units)";
+  }
 }
 
 }  // namespace

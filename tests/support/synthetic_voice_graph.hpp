@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <random>
@@ -28,22 +29,29 @@ inline float class_shape(synth::VisemeClass v, Eigen::Index c) {
 }
 
 // `recordings` x `phones_per_recording` states of random classes drawn from `classes` (all 21
-// when empty), `frames_per_phone` frames each, k columns; noise is N(0, noise^2).
+// when empty), `frames_per_phone` frames each (or, when `max_frames_per_phone` is larger, a
+// uniform random count from frames_per_phone to it), k columns; noise is N(0, noise^2).
 inline SyntheticVoiceGraph synthetic_voice_graph(std::uint32_t recordings, int phones_per_recording,
                                                  std::uint32_t frames_per_phone, Eigen::Index k,
                                                  std::uint64_t seed, float noise = 0.0f,
                                                  std::vector<synth::VisemeClass> classes = {},
-                                                 bool junction_features = true) {
+                                                 bool junction_features = true,
+                                                 std::uint32_t max_frames_per_phone = 0) {
   if (classes.empty())
     for (std::size_t v = 0; v < synth::kVisemeClassCount; ++v) classes.push_back(static_cast<synth::VisemeClass>(v));
   SyntheticVoiceGraph g;
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<std::size_t> pick(0, classes.size() - 1);
   std::normal_distribution<float> normal(0.0f, 1.0f);
+  std::uniform_int_distribution<std::uint32_t> count(frames_per_phone, std::max(frames_per_phone, max_frames_per_phone));
   std::uint32_t f = 0;
   for (std::uint32_t u = 0; u < recordings; ++u)
-    for (int p = 0; p < phones_per_recording; ++p, f += frames_per_phone)
-      g.states.push_back({u, classes[pick(rng)], {f, frames_per_phone}});
+    for (int p = 0; p < phones_per_recording; ++p) {
+      const synth::VisemeClass v = classes[pick(rng)];
+      const std::uint32_t n = max_frames_per_phone > frames_per_phone ? count(rng) : frames_per_phone;
+      g.states.push_back({u, v, {f, n}});
+      f += n;
+    }
   g.frames.resize(f, k);
   for (const auto& s : g.states)
     for (std::uint32_t n = s.frames.first; n < s.frames.first + s.frames.count; ++n)

@@ -226,6 +226,36 @@ TEST(Tongue, PlacesOfArticulationShow) {
   EXPECT_EQ(v(0, 0), 0.0f);
 }
 
+// The track is the model's definition, F(t) = sum D_s(t - c_s) T_s / sum D_s(t - c_s) over the
+// phones within the reach (and always the phone on screen), evaluated here directly with
+// Dominance::at: short phones, and a long silence whose own frames lie far past the reach.
+TEST(Tongue, IsTheDominanceWeightedMeanOfTheTargets) {
+  const TargetTimeline t = place_on_voice_grid(
+      phones({{Phone::SIL, 30}, {Phone::T, 20}, {Phone::IY, 60}, {Phone::K, 25}, {Phone::SIL, 2000},
+              {Phone::R, 70}, {Phone::UW, 120}, {Phone::S, 40}, {Phone::SIL, 40}}),
+      kRate);
+  const Eigen::MatrixXf track = tongue_track(t.phones, t.phone_of);
+  ASSERT_EQ(track.rows(), t.frame_count());
+  for (Eigen::Index n = 0; n < track.rows(); ++n) {
+    std::array<double, kTongueFapCount> num{}, den{};
+    for (std::size_t s = 0; s < t.phones.size(); ++s) {
+      const double tau = (2.0 * static_cast<double>(n) - static_cast<double>(t.phones[s].first_frame + t.phones[s].end_frame)) / 120.0;
+      const bool on_screen = n >= t.phones[s].first_frame && n < t.phones[s].end_frame;
+      // The reach as tongue_track tests it (exactly 0.4 s may fall either side of it in doubles).
+      const double centre = 0.5 * static_cast<double>(t.phones[s].first_frame + t.phones[s].end_frame) / 60.0;
+      if (!on_screen && std::abs(static_cast<double>(n) / 60.0 - centre) > kTongueReachS) continue;
+      const TongueTarget& p = tongue_target(t.phone_of[s]);
+      for (std::size_t f = 0; f < kTongueFapCount; ++f) {
+        const double d = (f < 3 ? p.tip() : p.body()).at(tau);
+        num[f] += d * p.fap_value[f];
+        den[f] += d;
+      }
+    }
+    for (std::size_t f = 0; f < kTongueFapCount; ++f)
+      ASSERT_NEAR(track(n, static_cast<Eigen::Index>(f)), num[f] / den[f], 1e-3) << "frame " << n << " FAP " << 43 + f;
+  }
+}
+
 TEST(Tongue, CoarticulatesAndFollowsTheTimeline) {
   // Anticipation: the tip is already rising in the vowel just before /t/.
   const TargetTimeline t = place_on_voice_grid(phones({{Phone::AA, 300}, {Phone::T, 80}, {Phone::AA, 300}}), kRate);

@@ -97,12 +97,100 @@ TEST(RenderUnits, JoinsAreSmootherAfterCrossFadeAndSmoothing) {
   const PhoneGraph g(states);
   SearchResult sel{{0, 3}, {{0, 0, 1}, {3, 1, 1}}, 2.0, {}};
   const std::vector<TargetPhone> targets{{a, 0, 10}, {b, 10, 20}};
-  const Eigen::MatrixXf raw = render_units(g, frames, sel, targets, {0, 0.0, 1.0});
-  const Eigen::MatrixXf smooth = render_units(g, frames, sel, targets, {3, 2.0, 1.0});
+  const Eigen::MatrixXf raw = render_units(g, frames, sel, targets, {0, 0.0, 1.0, false});
+  const Eigen::MatrixXf smooth = render_units(g, frames, sel, targets, {3, 2.0, 1.0, false});
   EXPECT_NEAR(max_second_difference(raw, 5, 15), 10.0f, 1e-4f);
   EXPECT_LT(max_second_difference(smooth, 5, 15), 2.5f);
   EXPECT_NEAR(smooth(0, 0), 0.0f, 0.2f);
   EXPECT_NEAR(smooth(19, 0), 10.0f, 0.2f);
+  // Mid-phone (the default): the same jump, moved to the middle of the first phone, smoothed alike.
+  const Eigen::MatrixXf mid_raw = render_units(g, frames, sel, targets, {0, 0.0, 1.0, true});
+  const Eigen::MatrixXf mid = render_units(g, frames, sel, targets, {});
+  EXPECT_NEAR(max_second_difference(mid_raw, 1, 9), 10.0f, 1e-4f);
+  EXPECT_LT(max_second_difference(mid, 1, 9), 2.5f);
+  EXPECT_NEAR(mid(19, 0), 10.0f, 0.2f);
+}
+
+// Where a unit takes over. Recording 1 holds "a b" at level 10, recording 0 "a b" at level 0,
+// recording 2 "c b" at level 20. A join into recording 1's /b/ (whose parent is an /a/, like the
+// phone left) hands over in the middle of target /a/, which then shows recording 1's /a/; into
+// recording 2's /b/ (a hard join: its parent is a /c/) it stays at the boundary.
+TEST(RenderUnits, MidPhoneJoinHandsOverInThePhoneBefore) {
+  const auto a = static_cast<VisemeClass>(0), b = static_cast<VisemeClass>(1), c = static_cast<VisemeClass>(2);
+  std::vector<PhoneState> states{{0, a, {0, 10}}, {0, b, {10, 10}}, {1, a, {20, 8}},
+                                 {1, b, {28, 10}}, {2, c, {38, 10}}, {2, b, {48, 10}}};
+  Eigen::MatrixXf frames(58, 1);
+  for (int n = 0; n < 58; ++n) frames(n, 0) = n < 20 ? 0.0f : n < 38 ? 10.0f : 20.0f;
+  const PhoneGraph g(states);
+  const std::vector<TargetPhone> targets{{a, 0, 9}, {b, 9, 20}};
+  const RenderOptions cut_mid{0, 0.0, 1.0, true}, cut_boundary{0, 0.0, 1.0, false};
+  auto level = [](const Eigen::MatrixXf& y, int n) { return y(n, 0); };
+
+  const SearchResult admissible{{0, 3}, {{0, 0, 1}, {3, 1, 1}}, 2.0, {}};
+  const Eigen::MatrixXf mid = render_units(g, frames, admissible, targets, cut_mid);
+  for (int n = 0; n < 4; ++n) EXPECT_EQ(level(mid, n), 0.0f) << n;  // recording 0's /a/
+  for (int n = 4; n < 20; ++n) EXPECT_EQ(level(mid, n), 10.0f) << n;  // recording 1's /a/ from 9 / 2
+  const Eigen::MatrixXf boundary = render_units(g, frames, admissible, targets, cut_boundary);
+  for (int n = 0; n < 9; ++n) EXPECT_EQ(level(boundary, n), 0.0f) << n;
+  for (int n = 9; n < 20; ++n) EXPECT_EQ(level(boundary, n), 10.0f) << n;
+
+  const SearchResult hard{{0, 5}, {{0, 0, 1}, {5, 1, 1}}, 2.0, {}};
+  const Eigen::MatrixXf hard_mid = render_units(g, frames, hard, targets, cut_mid);
+  for (int n = 0; n < 9; ++n) EXPECT_EQ(level(hard_mid, n), 0.0f) << n;  // never a /c/ for an /a/
+  for (int n = 9; n < 20; ++n) EXPECT_EQ(level(hard_mid, n), 20.0f) << n;
+
+  // With the cross-fade, the hand-over is a raised cosine centred where the cut is.
+  const Eigen::MatrixXf faded = render_units(g, frames, admissible, targets, {2, 0.0, 1.0, true});
+  EXPECT_EQ(level(faded, 1), 0.0f);
+  EXPECT_GT(level(faded, 3), 0.0f);
+  EXPECT_LT(level(faded, 4), 10.0f);
+  EXPECT_EQ(level(faded, 6), 10.0f);
+}
+
+// The renderer smooths as it renders; the result must be the smoother applied to the raw render
+// (the weights: 1, or the hold weight inside held phones), to the bit. Phones of one frame make
+// neighbouring cross-fade windows overlap (the later join wins).
+TEST(RenderUnits, SmoothingAsItRendersIsTheSmootherOfTheRawRender) {
+  std::mt19937_64 rng(23);
+  std::uniform_int_distribution<std::uint32_t> length(1, 8);
+  std::normal_distribution<float> noise;
+  // Six recordings of five phones each, k = 3 random columns.
+  std::vector<PhoneState> states;
+  std::uint32_t f = 0;
+  for (std::uint32_t u = 0; u < 6; ++u)
+    for (int p = 0; p < 5; ++p) {
+      const std::uint32_t c = length(rng);
+      states.push_back({u, static_cast<VisemeClass>(p), {f, c}});
+      f += c;
+    }
+  Eigen::MatrixXf frames(f, 3);
+  for (Eigen::Index i = 0; i < frames.size(); ++i) frames.data()[i] = noise(rng);
+  const PhoneGraph g(states);
+  // 40 targets; a new unit (another recording, same phone position) every 1..4 targets.
+  SearchResult sel;
+  std::vector<TargetPhone> targets;
+  std::vector<double> weights;
+  std::int64_t at = 3;
+  std::uniform_int_distribution<int> unit_length(1, 4), recording(0, 5);
+  const RenderOptions options{3, 2.0, 50.0};
+  for (std::size_t t = 0; t < 40;) {
+    const int len = unit_length(rng), rec = recording(rng);
+    sel.units.push_back({static_cast<StateId>(rec * 5 + static_cast<int>(t % 5)), t, 0});
+    for (int i = 0; i < len && t < 40; ++i, ++t) {
+      const auto state = static_cast<StateId>(rec * 5 + static_cast<int>(t % 5));
+      sel.states.push_back(state);
+      ++sel.units.back().length;
+      const std::int64_t n = length(rng);
+      const bool hold = t % 7 == 3;
+      targets.push_back({states[state].viseme, at, at + n, hold});
+      weights.insert(weights.end(), static_cast<std::size_t>(n), hold ? options.hold_weight : 1.0);
+      at += n;
+    }
+  }
+  const Eigen::MatrixXf smooth = render_units(g, frames, sel, targets, options);
+  const Eigen::MatrixXf raw = render_units(g, frames, sel, targets, {options.blend_half_width, 0.0, options.hold_weight});
+  EXPECT_EQ(smooth, smooth_trajectory(raw, weights, options.smoothing));
+  EXPECT_GT((smooth - raw).cwiseAbs().maxCoeff(), 0.01f) << "the smoother did something";
 }
 
 }  // namespace

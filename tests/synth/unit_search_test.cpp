@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <limits>
@@ -32,14 +33,17 @@ struct Toy {
   Eigen::MatrixXf frames;
 };
 
+// With `max_frames_per_phone` above `frames_per_phone`, each phone lasts a random count between.
 Toy make_toy(const std::vector<std::vector<int>>& utterances, std::mt19937_64& rng, int k = 3,
-             int frames_per_phone = 2) {
+             int frames_per_phone = 2, int max_frames_per_phone = 0) {
   Toy toy;
+  std::uniform_int_distribution<int> count(frames_per_phone, std::max(frames_per_phone, max_frames_per_phone));
   std::uint32_t f = 0;
   for (std::uint32_t u = 0; u < utterances.size(); ++u)
     for (int v : utterances[u]) {
-      toy.states.push_back({u, V(v), {f, static_cast<std::uint32_t>(frames_per_phone)}});
-      f += static_cast<std::uint32_t>(frames_per_phone);
+      const auto n = static_cast<std::uint32_t>(max_frames_per_phone > frames_per_phone ? count(rng) : frames_per_phone);
+      toy.states.push_back({u, V(v), {f, n}});
+      f += n;
     }
   std::normal_distribution<float> normal;
   toy.frames = Eigen::MatrixXf(f, k);
@@ -47,8 +51,23 @@ Toy make_toy(const std::vector<std::vector<int>>& utterances, std::mt19937_64& r
   return toy;
 }
 
-// Minimum cost over every admissible state sequence, or +inf when there is none.
-double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, double beta) {
+SearchOptions with_duration(double beta, double weight) {
+  SearchOptions o;
+  o.beta = beta;
+  o.duration_weight = weight;
+  return o;
+}
+
+// The duration term as SearchOptions defines it, written out independently of the search.
+double duration_term(const PhoneGraph& g, StateId j, std::int64_t target_frames, double weight) {
+  const double r = std::log(static_cast<double>(g.state(j).frames.count) / static_cast<double>(target_frames));
+  return weight * r * r;
+}
+
+// Minimum cost over every admissible state sequence, or +inf when there is none; with `lengths`,
+// each state also pays its duration term at `weight`.
+double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, double beta, double weight = 0.0,
+                   std::span<const std::int64_t> lengths = {}) {
   double best = std::numeric_limits<double>::infinity();
   std::vector<StateId> path;
   std::function<void(std::size_t, double)> go = [&](std::size_t t, double cost) {
@@ -69,6 +88,7 @@ double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, do
         else if (admissible_join) step = 1.0 + beta * junction_cost(g, i, j);
         else continue;
       }
+      if (!lengths.empty()) step += duration_term(g, j, lengths[t], weight);
       path.push_back(j);
       go(t + 1, cost + step);
       path.pop_back();
@@ -131,9 +151,85 @@ TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
 
 INSTANTIATE_TEST_SUITE_P(Betas, UnitSearchBruteForce, ::testing::Values(0.0, 0.05, 1.0));
 
+// The duration term: phones of random lengths, targets of random lengths; the search's cost is
+// the brute-force minimum, and its path's cost written out term by term is that cost.
+TEST(UnitSearch, DurationTermFindsTheMinimumCostOnRandomSmallGraphs) {
+  const auto seed = test_seed();
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> visemes(0, 2), length(2, 5), count(2, 4), tlen(1, 5), frames(1, 9);
+  int compared = 0, moved = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<std::vector<int>> utts(static_cast<std::size_t>(count(rng)));
+    for (auto& u : utts) {
+      u.resize(static_cast<std::size_t>(length(rng)));
+      for (auto& v : u) v = visemes(rng);
+    }
+    const Toy toy = make_toy(utts, rng, 3, 1, 6);
+    const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+    std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
+    std::vector<std::int64_t> lengths(targets.size());
+    for (auto& v : targets) v = V(visemes(rng));
+    for (auto& n : lengths) n = frames(rng);
+    bool covered = true;
+    for (auto v : targets) covered = covered && !g.with_viseme(v).empty();
+    if (!covered) continue;
+    const double beta = trial % 2 ? 0.05 : 0.0, weight = 0.5;
+    const double expected = brute_force(g, targets, beta, weight, lengths);
+    if (std::isinf(expected)) continue;
+    const SearchResult r = unit_search(g, targets, lengths, with_duration(beta, weight));
+    const std::string where = "trial " + std::to_string(trial) + "; reproduce with FAPCAST_SEED=" + std::to_string(seed);
+    ASSERT_NEAR(r.cost, expected, 1e-9 * (1 + expected)) << where;
+    double path = static_cast<double>(r.units.size());
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      ASSERT_EQ(g.state(r.states[t]).viseme, targets[t]) << where;
+      path += duration_term(g, r.states[t], lengths[t], weight);
+      if (t > 0 && r.states[t] != r.states[t - 1] + 1) path += beta * junction_cost(g, r.states[t - 1], r.states[t]);
+    }
+    EXPECT_NEAR(path, r.cost, 1e-9 * (1 + path)) << where;
+    ++compared;
+    moved += unit_search(g, targets, {beta, {}}).states != r.states;
+  }
+  EXPECT_GT(compared, 100) << "too few comparable trials to mean anything";
+  EXPECT_GT(moved, 10) << "the duration term never changed a path: the trials do not exercise it";
+}
+
+// Two recordings of the same word, one with its vowel as long as the target's: the term picks it;
+// without the term the search takes the first (lowest state ids) as ties are broken.
+TEST(UnitSearch, DurationTermPrefersTheUnitThatNeedsLessWarping) {
+  std::vector<PhoneState> states{{0, V(0), {0, 3}}, {0, V(1), {3, 2}}, {0, V(0), {5, 3}},
+                                 {1, V(0), {8, 3}}, {1, V(1), {11, 12}}, {1, V(0), {23, 3}}};
+  Eigen::MatrixXf frames = Eigen::MatrixXf::Zero(26, 2);
+  const PhoneGraph g(states, junction_features(states, frames));
+  const std::vector<VisemeClass> targets = Vs({0, 1, 0});
+  const std::vector<std::int64_t> lengths{3, 11, 3};
+  const SearchResult plain = unit_search(g, targets, lengths, with_duration(0.1, 0.0));
+  EXPECT_EQ(plain.states, (std::vector<StateId>{0, 1, 2}));
+  EXPECT_EQ(plain.cost, 1.0);
+  const SearchResult timed = unit_search(g, targets, lengths, with_duration(0.1, 1.0));
+  EXPECT_EQ(timed.states, (std::vector<StateId>{3, 4, 5}));
+  const double r = std::log(12.0 / 11.0);
+  EXPECT_DOUBLE_EQ(timed.cost, 1.0 + r * r);
+}
+
+TEST(UnitSearch, DurationTermRejectsBadLengthsAndWeights) {
+  std::mt19937_64 rng(7);
+  const Toy toy = make_toy({{0, 1}}, rng);
+  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const std::vector<VisemeClass> targets = Vs({0, 1});
+  const std::vector<std::int64_t> one{4}, zero{4, 0}, good{4, 5};
+  EXPECT_THROW(unit_search(g, targets, one, with_duration(0.0, 1.0)), std::invalid_argument);
+  EXPECT_THROW(unit_search(g, targets, zero, with_duration(0.0, 1.0)), std::invalid_argument);
+  EXPECT_NO_THROW(unit_search(g, targets, zero, {}));  // the term is off: lengths are not read
+  EXPECT_THROW(unit_search(g, targets, good, with_duration(0.0, -1.0)), std::invalid_argument);
+  EXPECT_THROW(unit_search(g, targets, good, with_duration(0.0, std::numeric_limits<double>::infinity())),
+               std::invalid_argument);
+  EXPECT_THROW(unit_search(g, targets, good, with_duration(0.0, std::nan(""))), std::invalid_argument);
+}
+
 // The pruned join evaluation (the default) against the reference that evaluates every pair:
 // identical states, units, cost (to the bit) and active counts, on random graphs of random shape
-// and spread, with and without caps and hard joins.
+// and spread, with and without caps and hard joins; on every other graph phones and targets have
+// random lengths and the duration term is on.
 TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
   const auto seed = test_seed();
   std::mt19937_64 rng(seed);
@@ -145,20 +241,25 @@ TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
   for (int graph = 0; graph < 60; ++graph) {
     std::vector<VisemeClass> alphabet;
     for (int c = 0, n = classes(rng); c < n; ++c) alphabet.push_back(V(c));
+    const bool timed = graph % 2 == 1;
+    const double weight = timed ? 0.3 : 0.0;
     const auto voice = test::synthetic_voice_graph(static_cast<std::uint32_t>(recordings(rng)), phones(rng), 1 + graph % 3, k(rng),
-                                                   rng(), noises[graph % 3], alphabet);
+                                                   rng(), noises[graph % 3], alphabet, true, timed ? 9 : 0);
     for (int target = 0; target < 5; ++target) {
       std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
       for (auto& v : targets) v = alphabet[std::uniform_int_distribution<std::size_t>(0, alphabet.size() - 1)(rng)];
+      std::vector<std::int64_t> lengths(targets.size());
+      for (auto& n : lengths) n = std::uniform_int_distribution<std::int64_t>(1, 12)(rng);
       bool covered = true;
       for (auto v : targets) covered = covered && !voice.graph->with_viseme(v).empty();
       if (!covered) continue;
       for (double beta : betas)
         for (auto cap : caps) {
-          const SearchResult reference = unit_search(*voice.graph, targets, {beta, cap, false});
-          const SearchResult pruned = unit_search(*voice.graph, targets, {beta, cap, true});
+          const SearchResult reference = unit_search(*voice.graph, targets, lengths, {beta, cap, false, weight});
+          const SearchResult pruned = unit_search(*voice.graph, targets, lengths, {beta, cap, true, weight});
           const std::string where = "graph " + std::to_string(graph) + " target " + std::to_string(target) +
                                     " beta " + std::to_string(beta) + " cap " + (cap ? std::to_string(*cap) : "none") +
+                                    " duration weight " + std::to_string(weight) +
                                     "; reproduce with FAPCAST_SEED=" + std::to_string(seed);
           ASSERT_EQ(pruned.cost, reference.cost) << where;
           ASSERT_EQ(pruned.states, reference.states) << where;

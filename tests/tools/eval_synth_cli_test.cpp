@@ -25,7 +25,7 @@ TEST(EvalSynthCli, BadVoicesExitOneAndNameTheFile) {
 
 TEST(EvalSynthCli, UsageMistakesExitTwo) {
   const std::string voice = std::string(FAPCAST_TEST_DATA) + "/voice/bad/bad.005.truncated.fapv";
-  for (const char* args : {"--count 0", "--count 21", "--beta -1", "--seed x", "--bogus"}) {
+  for (const char* args : {"--count 0", "--count 21", "--beta -1", "--duration-weight -0.5", "--seed x", "--bogus"}) {
     const auto r = run_command(fapcast("eval synth -q --voice " + voice + " " + std::string(args)));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
   }

@@ -89,7 +89,8 @@ void SayWritesTheTrackInSyncWithTheWav() {
 void EveryFormatAndRate() {
   for (const std::string name : {"a.fba", "a.json", "a.bvh", "b.fap"}) {
     const std::string fps = name == "b.fap" ? " --fps 30" : "";
-    const auto r = run_command(fapcast("say \"Hello world.\" --voice " + voice() + fps + " --beta 0 --max-active 0 -o " +
+    const std::string timed = name == "a.json" ? " --duration-weight 0.3" : "";  // the search's duration term
+    const auto r = run_command(fapcast("say \"Hello world.\" --voice " + voice() + fps + timed + " --beta 0 --max-active 0 -o " +
                                        out(name) + " --wav " + out("hello.wav")));
     ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
   }
@@ -395,6 +396,7 @@ TEST(SayCliUsage, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("say \"Hi.\"")).exit_code, 2);  // no -o
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 0")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 500")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --duration-weight -1")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("animate --wav a.wav -o x.fap")).exit_code, 2);  // no --align
   EXPECT_EQ(run_command(fapcast("animate --wav a.wav --align a.txt -o x.fap")).exit_code, 2);
   // Expressions: an unknown name or an intensity outside 0..63 is a usage mistake, said clearly.

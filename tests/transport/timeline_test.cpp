@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
+#include <random>
+
 namespace fapcast::transport {
 namespace {
 
@@ -108,6 +112,44 @@ TEST(Resample, LinearAgreesWithHoldOnFramesThatLandExactly) {
   EXPECT_EQ(hold.frames, lin.frames);  // 30 divides 60: every output lands on a source frame
   const FapSequence up = resample_track(seq, {120, 1}, ResampleMode::kLinear);
   for (std::size_t j = 0; j + 2 < up.frames.size(); j += 2) EXPECT_EQ(up.frames[j], seq.frames[j / 2]);
+}
+
+// The interpolation is exact rational rounding on every path (the denominator decides: doubles up
+// to 2^20, 64-bit integers up to 2^30, 128-bit beyond), over the whole int32 range.
+TEST(Resample, LinearRoundsExactlyAtEveryDenominator) {
+  __extension__ typedef __int128 Int128;
+  std::mt19937_64 rng(17);
+  std::uniform_int_distribution<std::int32_t> any(std::numeric_limits<std::int32_t>::min(),
+                                                  std::numeric_limits<std::int32_t>::max());
+  std::uniform_int_distribution<std::int32_t> small(-2000, 2000);
+  FapSequence seq = numbered_track({60, 1}, 240);
+  for (std::size_t k = 0; k < seq.frames.size(); ++k) {
+    seq.frames[k].set(4, any(rng));
+    seq.frames[k].set(5, small(rng));
+    seq.frames[k].set(6, k % 2 ? std::numeric_limits<std::int32_t>::max() : std::numeric_limits<std::int32_t>::min());
+  }
+  // 60 fps spelled with denominators 1, 2,000,003 and 50,000,000, shown at 25 and 29.97 fps.
+  for (const FrameRate from : {FrameRate{60, 1}, FrameRate{120000180, 2000003}, FrameRate{3000000000u, 50000000}})
+    for (const FrameRate to : {FrameRate{25, 1}, FrameRate{30000, 1001}}) {
+      seq.rate = from;
+      const FapSequence out = resample_track(seq, to, ResampleMode::kLinear);
+      for (std::size_t j = 0; j < out.frames.size(); ++j) {
+        const SourcePosition p = source_position(static_cast<std::int64_t>(j), from, to);
+        const auto k = std::min(static_cast<std::size_t>(p.index), seq.frames.size() - 1);
+        for (int fap = 3; fap <= 6; ++fap) {
+          const std::int32_t a = seq.frames[k].value(fap);
+          std::int32_t want = a;
+          if (p.remainder != 0 && k + 1 < seq.frames.size()) {
+            // round(s / den) half away from zero = floor((2|s| + den) / (2 den)) with s's sign.
+            const Int128 s = Int128{a} * p.denominator + (Int128{seq.frames[k + 1].value(fap)} - a) * p.remainder;
+            const Int128 magnitude = (2 * (s < 0 ? -s : s) + p.denominator) / (2 * Int128{p.denominator});
+            want = static_cast<std::int32_t>(s < 0 ? -magnitude : magnitude);
+          }
+          ASSERT_EQ(out.frames[j].value(fap), want) << "frame " << j << " FAP " << fap << " from " << from.numerator
+                                                    << "/" << from.denominator << " to " << to.numerator << "/" << to.denominator;
+        }
+      }
+    }
 }
 
 TEST(Resample, EmptyStaysEmpty) {

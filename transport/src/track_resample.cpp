@@ -2,25 +2,78 @@
 
 #include "fapcast/codec/fap_table.hpp"
 
+#include <array>
 #include <cmath>
+#include <limits>
+#include <span>
 
 namespace fapcast::transport {
 namespace {
 __extension__ typedef __int128 Int128;
 
-// round(a + (b - a) * num / den), half away from zero, in exact integer arithmetic.
+// round(a + (b - a) * num / den), half away from zero, in exact integer arithmetic (0 <= num < den).
+template <class Int>
 std::int32_t lerp_rounded(std::int32_t a, std::int32_t b, std::int64_t num, std::int64_t den) {
-  const Int128 scaled = static_cast<Int128>(a) * den + static_cast<Int128>(b - std::int64_t{a}) * num;
-  const Int128 half = den / 2;
-  const Int128 q = scaled >= 0 ? (scaled + half) / den : -((-scaled + half) / den);
+  const Int scaled = static_cast<Int>(a) * den + static_cast<Int>(b - std::int64_t{a}) * num;
+  const Int half = den / 2;
+  const Int q = scaled >= 0 ? (scaled + half) / den : -((-scaled + half) / den);
   return static_cast<std::int32_t>(q);
 }
+
+// Up to this denominator the lerp fits 64 bits: |a| den <= 2^61, |b - a| num < 2^62, so the sum
+// and the half stay below 2^63, and the division is one machine instruction instead of a 128-bit
+// library call.
+constexpr std::int64_t kMaxDenominator64 = std::int64_t{1} << 30;
+
+// Up to this one (every rate pair of practice: 30000/1001 from 60 is 30,000) the numerators below
+// are under 2^53 (|a| den <= 2^51, |b - a| num < 2^52, half < 2^19), so they and den are exact as
+// doubles, and the correctly rounded quotient N / den of two such non-negative integers is never
+// pushed across an integer (its error, under 2^-53 N / den, is below the 1 / den that separates a
+// non-integer quotient from the next integer): truncating it is floor(N / den) exactly, and a
+// floating-point division is several times cheaper than an integer one.
+constexpr std::int64_t kMaxDenominatorDouble = std::int64_t{1} << 20;
+
+std::int64_t floor_quotient(std::int64_t n, double den) {  // 0 <= n < 2^53
+  return static_cast<std::int64_t>(static_cast<double>(n) / den);
+}
+
+std::int32_t lerp_rounded_double(std::int32_t a, std::int32_t b, std::int64_t num, std::int64_t den, double den_d) {
+  const std::int64_t scaled = std::int64_t{a} * den + (std::int64_t{b} - a) * num;
+  const std::int64_t half = den / 2;
+  const std::int64_t q = scaled >= 0 ? floor_quotient(scaled + half, den_d) : -floor_quotient(-scaled + half, den_d);
+  return static_cast<std::int32_t>(q);
+}
+
+// The low-level FAPs (3..68) masked in both of two frames, listed once per pair of masks.
+class CommonFaps {
+ public:
+  std::span<const int> of(const codec::FapMask& a, const codec::FapMask& b) {
+    if (count_ < 0 || !(a == a_) || !(b == b_)) {
+      a_ = a;
+      b_ = b;
+      count_ = 0;
+      for (int fap = 3; fap <= codec::kFapCount; ++fap)
+        if (a.test(fap) && b.test(fap)) faps_[static_cast<std::size_t>(count_++)] = fap;
+    }
+    return {faps_.data(), static_cast<std::size_t>(count_)};
+  }
+
+ private:
+  codec::FapMask a_, b_;
+  std::array<int, codec::kFapCount> faps_{};
+  int count_ = -1;
+};
 }  // namespace
 
 SourcePosition source_position(std::int64_t j, codec::FrameRate from, codec::FrameRate to) {
   // t_j = j * to.den / to.num seconds; source index = t_j * from.num / from.den.
   const Int128 num = static_cast<Int128>(j) * to.denominator * from.numerator;
   const Int128 den = static_cast<Int128>(to.numerator) * from.denominator;
+  constexpr Int128 kMax64 = std::numeric_limits<std::int64_t>::max();
+  if (num >= 0 && num <= kMax64 && den <= kMax64) {  // one machine division, not a library call
+    const auto n = static_cast<std::int64_t>(num), d = static_cast<std::int64_t>(den);
+    return {n / d, n % d, d};
+  }
   return {static_cast<std::int64_t>(num / den), static_cast<std::int64_t>(num % den),
           static_cast<std::int64_t>(den)};
 }
@@ -39,18 +92,30 @@ codec::FapSequence resample_track(const codec::FapSequence& seq, codec::FrameRat
   const auto n = static_cast<std::int64_t>(seq.frames.size());
   const std::int64_t count = resampled_frame_count(n, seq.rate, to);
   out.frames.reserve(static_cast<std::size_t>(count));
+  CommonFaps common;
   for (std::int64_t j = 0; j < count; ++j) {
     const SourcePosition p = source_position(j, seq.rate, to);
     const std::int64_t k = p.index < n ? p.index : n - 1;
-    codec::FapFrame frame = seq.frames[static_cast<std::size_t>(k)];
+    codec::FapFrame& frame = out.frames.emplace_back(seq.frames[static_cast<std::size_t>(k)]);
     if (mode == ResampleMode::kLinear && p.remainder != 0 && k + 1 < n) {
       const codec::FapFrame& next = seq.frames[static_cast<std::size_t>(k + 1)];
-      for (int fap = 3; fap <= codec::kFapCount; ++fap)
-        if (frame.mask.test(fap) && next.mask.test(fap))
-          frame.values[static_cast<std::size_t>(fap - 1)] =
-              lerp_rounded(frame.value(fap), next.value(fap), p.remainder, p.denominator);
+      const std::span<const int> faps = common.of(frame.mask, next.mask);
+      auto lerp_all = [&](auto lerp) {
+        for (const int fap : faps) {
+          std::int32_t& v = frame.values[static_cast<std::size_t>(fap - 1)];
+          v = lerp(v, next.value(fap));
+        }
+      };
+      const std::int64_t num = p.remainder, den = p.denominator;
+      if (den <= kMaxDenominatorDouble) {
+        const auto den_d = static_cast<double>(den);
+        lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded_double(a, b, num, den, den_d); });
+      } else if (den <= kMaxDenominator64) {
+        lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded<std::int64_t>(a, b, num, den); });
+      } else {
+        lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded<Int128>(a, b, num, den); });
+      }
     }
-    out.frames.push_back(frame);
   }
   return out;
 }

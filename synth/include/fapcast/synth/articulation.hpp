@@ -3,6 +3,7 @@
 // and a Cohen-Massaro dominance function (spec/articulation.tsv), and the map from channel values
 // to ICT expression-shape weights (spec/articulation_shapes.tsv).
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -42,8 +43,14 @@ struct Dominance {
   // Dominance at tau seconds from the phone centre: alpha * falloff(tau_s).
   double at(double tau_s) const { return alpha * falloff(tau_s); }
   // exp(-theta * |tau|^c), the part that does not depend on alpha (shared by dominances that
-  // differ only in alpha, such as the tongue's tip and body).
-  double falloff(double tau_s) const;
+  // differ only in alpha, such as the tongue's tip and body). Inline: the tongue and the talker
+  // evaluate it for every phone near every frame.
+  double falloff(double tau_s) const {
+    const double theta = tau_s < 0 ? theta_before_per_s : theta_after_per_s;
+    // c = 1 (every row today) skips std::pow, the most expensive step of a blend; same value.
+    const double x = c == 1.0f ? std::abs(tau_s) : std::pow(std::abs(tau_s), static_cast<double>(c));
+    return std::exp(-theta * x);
+  }
 };
 
 // One row of the articulation table.

@@ -26,6 +26,12 @@ struct RenderOptions {
   int blend_half_width = 3;        // frames each side of a join that are cross-faded (>= 0)
   double smoothing = 2.0;          // lambda of the smoother; 0 = none (see smooth_trajectory)
   double hold_weight = 50.0;       // data weight inside held phones (1 elsewhere)
+  // Where a unit takes over: in the middle of the phone before its first (true), showing its own
+  // recording's previous state there - the search's join rule (G = 0) guarantees that state has
+  // the class of the phone it stands in for - or at the boundary of its first phone (false).
+  // Mid-phone, the hand-over falls where the lips move least (spec/search.md, "Rendering"); hard
+  // joins stay at the boundary.
+  bool join_mid_phone = true;
 };
 
 // Renders the units of `result` (one state per target phone) over `targets`, sampling the

@@ -29,6 +29,8 @@ class DurationTerm {
     }
   }
 
+  bool on() const { return weight_ != 0.0; }
+
   // What state j costs as target phone t (0 when the term is off).
   double operator()(StateId j, std::size_t t) {
     if (weight_ == 0.0) return 0.0;
@@ -346,8 +348,9 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
       lead_cost[b] = lead.base + beta * junction_cost<Dims>(entry_row(b), lead.exit, dims);
   });
   auto& dur = scratch.duration;
-  dur.resize(targets.size());
-  for (std::size_t b = 0; b < targets.size(); ++b) dur[b] = duration(targets[b], t);
+  dur.assign(targets.size(), 0.0);
+  if (duration.on())
+    for (std::size_t b = 0; b < targets.size(); ++b) dur[b] = duration(targets[b], t);
   for (std::size_t b = 0; b < targets.size(); ++b)
     if (!step.has_target(b)) cap.add(lead_cost[b] + dur[b]);  // a continuation's cost is in already
   const double limit = cap.limit();

@@ -26,6 +26,17 @@ struct JunctionBound::Lazy {
   std::atomic<bool> tabled{false};
   std::once_flag table_once;
   std::vector<JunctionPoint> exit;       // every state of class `from`, in with_viseme order
+  std::atomic<std::size_t> sketch_calls{0};
+  std::once_flag sketch_once;
+  DivisemeSketches sketches;
+};
+
+struct JunctionBound::ClassSketches {
+  std::atomic<std::size_t> computed{0};  // sketches made per call so far
+  std::atomic<bool> tabled{false};
+  std::once_flag once;
+  std::vector<std::int16_t> rows;  // every exit of the class, in with_viseme order
+  std::vector<float> error;
 };
 
 namespace {
@@ -81,6 +92,11 @@ JunctionBound::JunctionBound(const PhoneGraph& graph) : shared_(std::make_shared
       if (norm > 0.0 && std::isfinite(norm)) s.axis.row(a * kClasses + b) = towards / norm;
     }
   s.divisemes = std::make_unique<Lazy[]>(kVisemeClassCount * kVisemeClassCount);
+  s.sketched = dims > 0 && dims <= kSketchMaxDims;
+  if (s.sketched) {
+    s.grid = synth::sketch_grid(f);
+    s.sketches = std::make_unique<ClassSketches[]>(kVisemeClassCount);
+  }
 }
 
 const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const {
@@ -98,7 +114,10 @@ const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass
     for (std::size_t m = 0; m < entries.size(); ++m) {
       p.entry[m] = point_on_axis(f.entry.row(entries[m]).data(), centre, axis, s.slack_per_spread);
       p.entry_rows.row(static_cast<Eigen::Index>(m)) = f.entry.row(entries[m]);
+      p.along_mean += p.entry[m].along, p.across_mean += p.entry[m].across;
     }
+    if (!entries.empty())
+      p.along_mean /= static_cast<double>(entries.size()), p.across_mean /= static_cast<double>(entries.size());
   });
   return lazy.points;
 }
@@ -124,6 +143,51 @@ void JunctionBound::exits(const PhoneGraph& graph, VisemeClass from, VisemeClass
     lazy.tabled.store(true, std::memory_order_release);
   });
   for (std::size_t m = 0; m < states.size(); ++m) out[m] = lazy.exit[s.rank[states[m]]];
+}
+
+const DivisemeSketches* JunctionBound::entry_sketches(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const {
+  if (!sketched()) return nullptr;
+  const Shared& s = *shared_;
+  Lazy& lazy = s.divisemes[static_cast<std::size_t>(of(from) * kClasses + of(to))];
+  if (lazy.sketch_calls.fetch_add(1, std::memory_order_relaxed) == 0) return nullptr;
+  std::call_once(lazy.sketch_once, [&] {
+    const auto& f = graph.junction();
+    const auto dims = static_cast<std::size_t>(f.entry.cols());
+    const auto entries = graph.entries(from, to);
+    DivisemeSketches& k = lazy.sketches;
+    k.entry.resize(entries.size() * dims);
+    k.error.resize(entries.size());
+    for (std::size_t m = 0; m < entries.size(); ++m)
+      k.error[m] = sketch_row(f.entry.row(entries[m]).data(), f.entry.cols(), s.grid, k.entry.data() + m * dims);
+  });
+  return &lazy.sketches;
+}
+
+void JunctionBound::exit_sketches(const PhoneGraph& graph, VisemeClass from, std::span<const std::uint32_t> states,
+                                  std::span<SketchRef> out, std::vector<std::int16_t>& buffer) const {
+  const Shared& s = *shared_;
+  ClassSketches& table = s.sketches[static_cast<std::size_t>(of(from))];
+  const auto& f = graph.junction();
+  const auto dims = static_cast<std::size_t>(f.exit.cols());
+  const auto members = graph.with_viseme(from);
+  if (!table.tabled.load(std::memory_order_acquire) &&
+      table.computed.fetch_add(states.size(), std::memory_order_relaxed) < members.size()) {
+    buffer.resize(states.size() * dims);
+    for (std::size_t m = 0; m < states.size(); ++m)
+      out[m] = {buffer.data() + m * dims, sketch_row(f.exit.row(states[m]).data(), f.exit.cols(), s.grid, buffer.data() + m * dims)};
+    return;
+  }
+  std::call_once(table.once, [&] {
+    table.rows.resize(members.size() * dims);
+    table.error.resize(members.size());
+    for (std::size_t m = 0; m < members.size(); ++m)
+      table.error[m] = sketch_row(f.exit.row(members[m]).data(), f.exit.cols(), s.grid, table.rows.data() + m * dims);
+    table.tabled.store(true, std::memory_order_release);
+  });
+  for (std::size_t m = 0; m < states.size(); ++m) {
+    const std::uint32_t r = s.rank[states[m]];
+    out[m] = {table.rows.data() + r * dims, table.error[r]};
+  }
 }
 
 }  // namespace fapcast::synth

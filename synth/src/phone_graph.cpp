@@ -48,6 +48,10 @@ PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features
                                 std::to_string(features_.entry.cols()) + " columns for " +
                                 std::to_string(states_.size()) + " states (one row per state, columns a multiple of " +
                                 std::to_string(kJunctionLanes) + ")");
+  static_assert(kVisemeClassCount < 256, "a class fits one byte");
+  child_viseme_.assign(states_.size(), static_cast<std::uint8_t>(kVisemeClassCount));
+  for (StateId i = 0; i < states_.size(); ++i)
+    if (has_child(i)) child_viseme_[i] = static_cast<std::uint8_t>(index(states_[i + 1].viseme));
   const std::size_t none = SIZE_MAX;
   bucket(states_.size(), kVisemeClassCount, [&](StateId j) -> std::size_t { return index(states_[j].viseme); },
          viseme_offsets_, by_viseme_);

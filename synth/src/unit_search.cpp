@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -28,6 +28,8 @@ class DurationTerm {
       log_target_.push_back(std::log(static_cast<double>(target_frames[t])));
     }
   }
+
+  bool on() const { return weight_ != 0.0; }
 
   // What state j costs as target phone t (0 when the term is off).
   double operator()(StateId j, std::size_t t) {
@@ -64,63 +66,106 @@ bool better(const Active& a, const Active& b) {
   return a.cost < b.cost || (a.cost == b.cost && a.state < b.state);
 }
 
-// The actives of one step, at most one entry per state, with O(1) lookup by state.
+// The actives of one step, at most one per state: the continuations (distinct states), then the
+// joins into one ascending list of distinct targets (PhoneGraph::entries or with_viseme), merged
+// with the continuations among them. No per-state table: a step touches few states of many.
 class StepBuilder {
  public:
-  explicit StepBuilder(std::size_t states) : slot_(states, kNoBack) {}
+  // A state not in the step yet.
+  void add(StateId j, double cost, std::uint32_t back, bool joined) { out_.push_back({j, cost, back, joined}); }
 
-  bool has(StateId j) const { return slot_[j] != kNoBack; }
-
-  void offer(StateId j, double cost, std::uint32_t back, bool joined) {
-    std::uint32_t& s = slot_[j];
-    if (s == kNoBack) {
-      s = static_cast<std::uint32_t>(out_.size());
-      out_.push_back({j, cost, back, joined});
-    } else if (cost < out_[s].cost) {
-      out_[s] = {j, cost, back, joined};
+  // Starts the joins into `targets` (ascending): finds the states already in the step among them.
+  void begin_joins(std::span<const StateId> targets) {
+    target_slot_.assign(targets.size(), kNoBack);
+    for (std::uint32_t s = 0; s < out_.size(); ++s) {
+      const auto at = std::lower_bound(targets.begin(), targets.end(), out_[s].state);
+      if (at != targets.end() && *at == out_[s].state) target_slot_[static_cast<std::size_t>(at - targets.begin())] = s;
     }
   }
-
-  std::vector<Active> take() {
-    for (const auto& a : out_) slot_[a.state] = kNoBack;
-    std::vector<Active> next;
-    next.reserve(out_.size());  // the next step is usually about as large
-    return std::exchange(out_, std::move(next));
+  bool has_target(std::size_t b) const { return target_slot_[b] != kNoBack; }
+  // Offers targets[b] = j as a join at `cost` (kept when cheaper than a continuation into j).
+  void join(std::size_t b, StateId j, double cost, std::uint32_t back) {
+    const std::uint32_t s = target_slot_[b];
+    if (s == kNoBack) out_.push_back({j, cost, back, true});
+    else if (cost < out_[s].cost) out_[s] = {j, cost, back, true};
   }
 
+  bool empty() const { return out_.empty(); }
+  // The step's actives (to prune in place, copy out, then clear for the next step).
+  std::vector<Active>& actives() { return out_; }
+
  private:
-  std::vector<std::uint32_t> slot_;  // state -> index in out_, kNoBack when absent
   std::vector<Active> out_;
+  std::vector<std::uint32_t> target_slot_;  // per target: its index in out_, kNoBack when absent
 };
 
-// What the cap will keep, bounded from above while a step is built: the cap-th smallest of the
-// costs offered to distinct states so far (each an upper bound of that state's final cost, which
-// can only fall). A state offered more than this cannot be among the cap cheapest.
+// The k-th smallest (from 0) of `values` (reordered; k < size, no NaN). A quickselect whose
+// partitions have no data-dependent branch: the costs are in random order, and std::nth_element's
+// mispredicted branches cost more than its comparisons.
+double kth_smallest(std::vector<double>& values, std::size_t k, std::vector<double>& spare) {
+  std::size_t lo = 0, hi = values.size();  // values[lo, hi) holds the answer
+  spare.resize(values.size());
+  while (hi - lo > 16) {
+    const double a = values[lo], b = values[lo + (hi - lo) / 2], c = values[hi - 1];
+    const double pivot = std::max(std::min(a, b), std::min(std::max(a, b), c));  // median of three
+    // Smaller ones to the front of spare, larger ones to its back; what is left between equals
+    // the pivot. Each value is written to both ends, and only the end it belongs to advances.
+    std::size_t less = 0, more = hi - lo;
+    for (std::size_t i = lo; i < hi; ++i) {
+      const double x = values[i];
+      spare[less] = x;
+      spare[more - 1] = x;
+      less += x < pivot;
+      more -= x > pivot;
+    }
+    if (k < lo + less) {
+      std::copy_n(spare.begin(), less, values.begin() + static_cast<std::ptrdiff_t>(lo));
+      hi = lo + less;
+    } else if (k >= lo + more) {
+      std::copy(spare.begin() + static_cast<std::ptrdiff_t>(more), spare.begin() + static_cast<std::ptrdiff_t>(hi - lo),
+                values.begin() + static_cast<std::ptrdiff_t>(lo + more));
+      lo += more;
+    } else {
+      return pivot;
+    }
+  }
+  std::sort(values.begin() + static_cast<std::ptrdiff_t>(lo), values.begin() + static_cast<std::ptrdiff_t>(hi));
+  return values[k];
+}
+
+// What the cap will keep, bounded from above: the cap-th smallest of costs that each bound the
+// final cost of a distinct state of the step from above (an offer's cost: a state's cost can only
+// fall). A state whose cost exceeds this has the cap's worth of states strictly cheaper, so it
+// cannot be kept.
 class CapLimit {
  public:
   explicit CapLimit(std::optional<std::size_t> cap) : cap_(cap ? std::max<std::size_t>(*cap, 1) : 0) {}
 
   void add(double cost) {
     if (cap_ == 0) return;
-    if (heap_.size() < cap_) {
-      heap_.push_back(cost);
-      std::push_heap(heap_.begin(), heap_.end());
-    } else if (cost < heap_.front()) {
-      std::pop_heap(heap_.begin(), heap_.end());
-      heap_.back() = cost;
-      std::push_heap(heap_.begin(), heap_.end());
-    }
+    costs_.push_back(cost);
+    unordered_ |= std::isnan(cost);
+    limit_.reset();
   }
 
-  double limit() const {
-    return cap_ > 0 && heap_.size() == cap_ ? heap_.front() : std::numeric_limits<double>::infinity();
+  // The cap-th smallest so far (infinity with fewer, without a cap, or when a cost is NaN).
+  double limit() {
+    if (cap_ == 0 || unordered_ || costs_.size() < cap_) return std::numeric_limits<double>::infinity();
+    if (!limit_) limit_ = kth_smallest(costs_, cap_ - 1, spare_);
+    return *limit_;
   }
 
-  void clear() { heap_.clear(); }
+  void clear() {
+    costs_.clear();
+    unordered_ = false;
+    limit_.reset();
+  }
 
  private:
   std::size_t cap_;
-  std::vector<double> heap_;  // max-heap of the cap smallest costs
+  std::vector<double> costs_, spare_;
+  bool unordered_ = false;
+  std::optional<double> limit_;
 };
 
 // One active of the previous step as the join loop reads it; the loop reads them in ascending
@@ -130,6 +175,7 @@ struct Predecessor {
   double key;
   double base;           // cost + 1: a join's cost before its junction term
   JunctionPoint point;   // on the axis of the diviseme being joined (when bounded)
+  SketchRef sketch;      // its exit sketch (when bounded and sketched)
   std::uint32_t index;   // into prev
   StateId state;
   const float* exit;     // its exit row
@@ -142,12 +188,16 @@ struct Diviseme {
 
 // Buffers the join loop reuses from step to step.
 struct JoinScratch {
-  std::vector<Predecessor> pred;
+  std::vector<Predecessor> pred;       // in ascending key
+  std::vector<std::pair<double, std::uint32_t>> by_key;  // (key, index into prev), to sort
   std::vector<StateId> pred_state;     // the predecessors' states, in prev order
   std::vector<JunctionPoint> pred_point;  // and their exit points on the diviseme's axis
+  std::vector<StateId> read_state;        // the states of the predecessors read past the lead
+  std::vector<SketchRef> read_sketch;     // and their exit sketches
+  std::vector<std::int16_t> sketch_buffer;  // where those are made until the class is tabled
   std::vector<double> floor;           // per target
+  std::vector<double> lead_cost;       // per target: its join from the predecessor of least key
   std::vector<double> duration;        // per target: its duration term at this step
-  std::vector<std::uint32_t> order;    // targets, the cap's worth with the lowest floor first
 };
 
 // A join's predecessor: the cheapest (cost, state), as `better` orders them.
@@ -187,17 +237,18 @@ double clearly_above(double cost) { return cost + 1e-12 * (1.0 + std::abs(cost))
 
 // Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j),
 // plus the entry's duration term at target phone t. The reference: every pair evaluated.
-void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
+void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
                       std::span<const StateId> targets, double beta, DurationTerm& duration, std::size_t t,
                       StepBuilder& step) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
-  for (StateId j : targets) {
+  for (std::size_t b = 0; b < targets.size(); ++b) {
+    const StateId j = targets[b];
     Choice best{std::numeric_limits<double>::infinity()};
     for (std::uint32_t a = 0; a < prev.size(); ++a)
       best.consider(prev[a].cost + 1.0 + beta * junction_cost(f.entry.row(j).data(), f.exit.row(prev[a].state).data(), dims),
                     a, prev[a].state);
-    step.offer(j, best.cost + duration(j, t), best.back, true);
+    step.join(b, j, best.cost + duration(j, t), best.back);
   }
 }
 
@@ -216,119 +267,166 @@ void offer_every_join(const PhoneGraph& graph, const std::vector<Active>& prev,
 // with R_v, R_t the largest distances of the v_n, t_n from their means. The targets' points
 // differ little, so the last line is small: reading predecessors in ascending key, a target
 // stops at the first whose key_n + floor_j exceeds its best join (or what the cap keeps), usually
-// after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0).
+// after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0). A predecessor read is
+// passed over when the sketch bound (junction_sketch.hpp) of its join exceeds the best so far.
 //
 // The duration term d_j of an entry does not depend on the predecessor: the best predecessor is
 // chosen on the join's cost alone and d_j is added to what is offered (as the reference does), so
 // the cap's limit L bounds the join's own cost by L - d_j (loosened by rounding: a join offered in
-// excess is pruned by the cap like in the reference, one left out never could have survived).
-void offer_pruned_joins(const PhoneGraph& graph, const std::vector<Active>& prev,
+// excess is dropped by the cap as the reference drops it; one left out never could have survived).
+//
+// Order of work: (1) the predecessor of least key (the lead) joined into every target exactly,
+// which gives the cap's limit before any target is searched further; (2) per target, its best
+// starts at the lead's join (or the limit) and the other predecessors are read in ascending key,
+// only those that some target can reach being sorted.
+void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
                         std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
-                        DurationTerm& duration, std::size_t t, std::optional<std::size_t> max_active,
-                        CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
+                        DurationTerm& duration, std::size_t t, CapLimit& cap, StepBuilder& step,
+                        JoinScratch& scratch) {
   const auto& f = graph.junction();
   const auto dims = f.entry.cols();
   const auto& bound = graph.junction_bound();
   const bool bounded = diviseme && !bound.empty();
+  const DivisemeSketches* entry_sketches = bounded ? bound.entry_sketches(graph, diviseme->from, diviseme->to) : nullptr;
+  const bool sketched = entry_sketches != nullptr;
   // A bounded sweep reads the diviseme's entry rows and points where they lie contiguously.
   const DivisemePoints* points = bounded ? &bound.points(graph, diviseme->from, diviseme->to) : nullptr;
   const std::span<const JunctionPoint> entry_point = bounded ? std::span(points->entry) : std::span<const JunctionPoint>{};
   const float* entry_rows = bounded ? points->entry_rows.data() : nullptr;
   const double half_beta = 0.5 * beta;
+  const double grid_step = sketched ? bound.sketch_grid().step : 0.0;
   const std::size_t preds = prev.size();
 
-  auto& p = scratch.pred;
-  p.resize(preds);
-  scratch.pred_point.assign(preds, JunctionPoint{});
-  if (bounded) {
-    scratch.pred_state.resize(preds);
-    for (std::uint32_t a = 0; a < preds; ++a) scratch.pred_state[a] = prev[a].state;
-    bound.exits(graph, diviseme->from, diviseme->to, scratch.pred_state, scratch.pred_point);
-  }
-  for (std::uint32_t a = 0; a < preds; ++a) {
-    const StateId i = prev[a].state;
-    const double base = prev[a].cost + 1.0;
-    p[a] = {base, base, scratch.pred_point[a], a, i, f.exit.row(i).data()};
-  }
+  auto& point = scratch.pred_point;
+  auto& by_key = scratch.by_key;
+  by_key.resize(preds);
   auto& floor = scratch.floor;
   floor.assign(targets.size(), 0.0);
   if (bounded) {
-    double u_mean = 0.0, s_mean = 0.0, v_mean = 0.0, t_mean = 0.0;
-    for (const JunctionPoint& e : entry_point) u_mean += e.along, s_mean += e.across;
-    u_mean /= static_cast<double>(targets.size()), s_mean /= static_cast<double>(targets.size());
-    for (const Predecessor& x : p) v_mean += x.point.along, t_mean += x.point.across;
+    scratch.pred_state.resize(preds);
+    point.resize(preds);
+    for (std::uint32_t a = 0; a < preds; ++a) scratch.pred_state[a] = prev[a].state;
+    bound.exits(graph, diviseme->from, diviseme->to, scratch.pred_state, point);
+    const double u_mean = points->along_mean, s_mean = points->across_mean;
+    double v_mean = 0.0, t_mean = 0.0;
+    for (const JunctionPoint& x : point) v_mean += x.along, t_mean += x.across;
     v_mean /= static_cast<double>(preds), t_mean /= static_cast<double>(preds);
     double v_reach = 0.0, t_reach = 0.0;
-    for (Predecessor& x : p) {
-      const double v = x.point.along, t = x.point.across;
+    for (std::uint32_t a = 0; a < preds; ++a) {
+      const double v = point[a].along, t = point[a].across;
       v_reach = std::max(v_reach, std::abs(v - v_mean)), t_reach = std::max(t_reach, std::abs(t - t_mean));
-      x.key = x.base + half_beta * (v * v + t * t - x.point.slack) - beta * (u_mean * v + s_mean * t);
+      by_key[a] = {prev[a].cost + 1.0 + half_beta * (v * v + t * t - point[a].slack) - beta * (u_mean * v + s_mean * t), a};
     }
     for (std::size_t b = 0; b < targets.size(); ++b) {
       const JunctionPoint& e = entry_point[b];
       const double u = e.along, s = e.across, du = u - u_mean, ds = s - s_mean;
-      floor[b] = half_beta * (u * u + s * s - e.slack) - beta * (du * v_mean + ds * t_mean) -
-                 beta * (std::abs(du) * v_reach + std::abs(ds) * t_reach);
+      floor[b] = half_beta * (u * u + s * s - e.slack) -
+                 beta * (du * v_mean + ds * t_mean + std::abs(du) * v_reach + std::abs(ds) * t_reach);
     }
+  } else {
+    point.assign(preds, JunctionPoint{});
+    for (std::uint32_t a = 0; a < preds; ++a) by_key[a] = {prev[a].cost + 1.0, a};
   }
-  auto& dur = scratch.duration;
-  dur.resize(targets.size());
-  for (std::size_t b = 0; b < targets.size(); ++b) dur[b] = duration(targets[b], t);
-  // With a cap, the targets most likely to be kept (lowest floor) go first, so that the cap's
-  // limit is tight when the others are read (order changes work, never a result).
-  auto& order = scratch.order;
-  order.resize(targets.size());
-  std::iota(order.begin(), order.end(), 0u);
-  if (bounded && max_active && *max_active < targets.size())
-    std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(*max_active), order.end(),
-                     [&](std::uint32_t x, std::uint32_t y) { return floor[x] + dur[x] < floor[y] + dur[y]; });
-  // Ascending key; ties in any order (a choice never depends on reading order, see Choice).
-  std::sort(p.begin(), p.end(), [](const Predecessor& x, const Predecessor& y) { return x.key < y.key; });
+  const auto predecessor = [&](std::pair<double, std::uint32_t> by) {
+    const auto [key, a] = by;
+    const StateId i = prev[a].state;
+    return Predecessor{key, prev[a].cost + 1.0, point[a], SketchRef{}, a, i, f.exit.row(i).data()};
+  };
 
-  join_with_width(f.entry.cols(), [&]<Eigen::Index Dims>() {
-    for (const std::uint32_t b : order) {
-      const StateId j = targets[b];
-      const float* entry = bounded ? entry_rows + static_cast<std::ptrdiff_t>(b) * dims : f.entry.row(j).data();
+  // 1. Every target's join from the predecessor of least key (the one that most often wins):
+  //    the cap's limit follows from these costs before any target is searched further.
+  const auto entry_row = [&](std::size_t b) {
+    return bounded ? entry_rows + static_cast<std::ptrdiff_t>(b) * dims : f.entry.row(targets[b]).data();
+  };
+  const auto by_key_less = [](const auto& x, const auto& y) { return x.first < y.first; };
+  std::iter_swap(by_key.begin(), std::min_element(by_key.begin(), by_key.end(), by_key_less));
+  const Predecessor lead = predecessor(by_key.front());
+  auto& lead_cost = scratch.lead_cost;
+  lead_cost.resize(targets.size());
+  join_with_width(dims, [&]<Eigen::Index Dims>() {
+    for (std::size_t b = 0; b < targets.size(); ++b)
+      lead_cost[b] = lead.base + beta * junction_cost<Dims>(entry_row(b), lead.exit, dims);
+  });
+  auto& dur = scratch.duration;
+  dur.assign(targets.size(), 0.0);
+  if (duration.on())
+    for (std::size_t b = 0; b < targets.size(); ++b) dur[b] = duration(targets[b], t);
+  for (std::size_t b = 0; b < targets.size(); ++b)
+    if (!step.has_target(b)) cap.add(lead_cost[b] + dur[b]);  // a continuation's cost is in already
+  const double limit = cap.limit();
+  // What target b's join itself may cost to be kept (its duration term comes on top).
+  const auto join_limit = [&](std::size_t b) { return std::isinf(limit) ? limit : clearly_above(limit - dur[b]); };
+  // The others in ascending key (ties in any order: a choice never depends on reading order, see
+  // Choice), as far as any target could read: its best starts at most at its lead cost.
+  double reach = -std::numeric_limits<double>::infinity();
+  for (std::size_t b = 0; b < targets.size(); ++b)
+    reach = std::max(reach, clearly_above(std::min(join_limit(b), lead_cost[b])) - floor[b]);
+  const auto readable = std::partition(by_key.begin() + 1, by_key.end(), [reach](const auto& x) { return x.first <= reach; });
+  std::sort(by_key.begin() + 1, readable, by_key_less);
+  auto& p = scratch.pred;
+  p.clear();
+  std::transform(by_key.begin() + 1, readable, std::back_inserter(p), predecessor);
+  if (sketched) {  // only those read past the lead need a sketch
+    scratch.read_state.clear();
+    for (const Predecessor& x : p) scratch.read_state.push_back(x.state);
+    scratch.read_sketch.resize(p.size());
+    bound.exit_sketches(graph, diviseme->from, scratch.read_state, scratch.read_sketch, scratch.sketch_buffer);
+    for (std::size_t r = 0; r < p.size(); ++r) p[r].sketch = scratch.read_sketch[r];
+  }
+
+  // 2. The other predecessors, in ascending key, as long as one might beat the best so far.
+  join_with_width(dims, [&]<Eigen::Index Dims>() {
+    for (std::size_t b = 0; b < targets.size(); ++b) {
+      const float* entry = entry_row(b);
       const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
-      const double limit = cap.limit();
-      Choice best{std::isinf(limit) ? limit : clearly_above(limit - dur[b])};
+      const std::int16_t* sketch = sketched ? entry_sketches->entry.data() + static_cast<std::ptrdiff_t>(b) * dims : nullptr;
+      const double sketch_error = sketched ? entry_sketches->error[b] : 0.0;
+      Choice best{join_limit(b)};
+      best.consider(lead_cost[b], lead.index, lead.state);
       double stop = clearly_above(best.cost) - floor[b];  // read no predecessor whose key exceeds this
-      for (const Predecessor& x : p) {
-        if (x.key > stop) break;
-        if (bounded && x.base + half_beta * JunctionBound::twice_cost_floor(e, x.point) > best.cost) continue;
-        if (best.consider(x.base + beta * junction_cost<Dims>(entry, x.exit, dims), x.index, x.state))
+      for (auto x = p.begin(); x != p.end() && x->key <= stop; ++x) {
+        if (sketched) {
+          const double c_floor = sketch_cost_floor(sketch_distance2<Dims>(sketch, x->sketch.values, dims),
+                                                   sketch_error + x->sketch.error, grid_step);
+          if (x->base + beta * c_floor > best.cost) continue;
+        } else if (bounded && x->base + half_beta * JunctionBound::twice_cost_floor(e, x->point) > best.cost) {
+          continue;
+        }
+        if (best.consider(x->base + beta * junction_cost<Dims>(entry, x->exit, dims), x->index, x->state))
           stop = clearly_above(best.cost) - floor[b];
       }
-      if (best.back == kNoBack) continue;  // dearer than the cap keeps
-      const bool continued = step.has(j);  // its continuation already bounds its cost
-      step.offer(j, best.cost + dur[b], best.back, true);
-      if (!continued) cap.add(best.cost + dur[b]);
+      if (best.back != kNoBack) step.join(b, targets[b], best.cost + dur[b], best.back);  // else dearer than the cap keeps
     }
   });
 }
 
 // Offers the joins into `targets` (the entries of `diviseme` when set, else any states).
 // With beta = 0 (or no features) C drops out and the cheapest active wins every join.
-void offer_joins(const PhoneGraph& graph, const std::vector<Active>& prev, std::span<const StateId> targets,
+void offer_joins(const PhoneGraph& graph, std::span<const Active> prev, std::span<const StateId> targets,
                  std::optional<Diviseme> diviseme, const SearchOptions& options, DurationTerm& duration, std::size_t t,
                  CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
   if (targets.empty() || prev.empty()) return;
+  step.begin_joins(targets);
   if (options.beta == 0.0 || !graph.has_junction_features()) {
     const auto best = std::min_element(prev.begin(), prev.end(), better);
     const auto back = static_cast<std::uint32_t>(best - prev.begin());
-    for (StateId j : targets) step.offer(j, best->cost + 1.0 + duration(j, t), back, true);
+    for (std::size_t b = 0; b < targets.size(); ++b)
+      step.join(b, targets[b], best->cost + 1.0 + duration(targets[b], t), back);
     return;
   }
   if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, duration, t, step);
-  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, duration, t, options.max_active, cap, step,
-                     scratch);
+  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, duration, t, cap, step, scratch);
 }
 
-void prune(std::vector<Active>& actives, std::optional<std::size_t> cap) {
+// Keeps the cap's worth of cheapest actives. `limit` is at least the cap-th smallest cost (see
+// CapLimit): whatever costs more is dropped before the selection.
+void prune(std::vector<Active>& actives, std::optional<std::size_t> cap, double limit) {
   if (!cap || actives.size() <= *cap) return;
-  const auto keep = static_cast<std::ptrdiff_t>(std::max<std::size_t>(*cap, 1));
-  std::nth_element(actives.begin(), actives.begin() + keep - 1, actives.end(), better);
-  actives.resize(static_cast<std::size_t>(keep));
+  const auto keep = std::max<std::size_t>(*cap, 1);
+  std::erase_if(actives, [limit](const Active& a) { return a.cost > limit; });
+  if (actives.size() <= keep) return;
+  std::nth_element(actives.begin(), actives.begin() + static_cast<std::ptrdiff_t>(keep) - 1, actives.end(), better);
+  actives.resize(keep);
 }
 
 }  // namespace
@@ -355,51 +453,61 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
                                   std::string(viseme_class_name(targets[t])) + " (target phone " +
                                   std::to_string(t) + ")");
 
-  std::vector<std::vector<Active>> steps(targets.size());
-  StepBuilder builder(graph.size());
-  for (StateId j : graph.with_viseme(targets[0])) builder.offer(j, 1.0 + duration(j, 0), kNoBack, true);
-  steps[0] = builder.take();
-  prune(steps[0], options.max_active);
-  result.stats.active_per_step.push_back(steps[0].size());
-
+  // The actives of every step, one after the other: step t is trail[begin[t], begin[t + 1]).
+  std::vector<Active> trail;
+  std::vector<std::size_t> begin{0};
+  if (options.max_active) trail.reserve(targets.size() * std::max<std::size_t>(*options.max_active, 1));
+  StepBuilder builder;
   CapLimit cap(options.max_active);
+  const auto close_step = [&] {
+    auto& actives = builder.actives();
+    // The reference path does without the cap's limit (prune's selection alone keeps the same).
+    prune(actives, options.max_active, options.prune_joins ? cap.limit() : std::numeric_limits<double>::infinity());
+    trail.insert(trail.end(), actives.begin(), actives.end());
+    begin.push_back(trail.size());
+    result.stats.active_per_step.push_back(actives.size());
+    actives.clear();
+  };
+  const auto step = [&](std::size_t t) { return std::span(trail).subspan(begin[t], begin[t + 1] - begin[t]); };
+  result.stats.active_per_step.reserve(targets.size());
+  for (StateId j : graph.with_viseme(targets[0])) builder.add(j, 1.0 + duration(j, 0), kNoBack, true);
+  close_step();
+
   JoinScratch scratch;
   for (std::size_t t = 1; t < targets.size(); ++t) {
-    const auto& prev = steps[t - 1];
+    const auto prev = step(t - 1);
     cap.clear();
     // Within a recording: the next phone, free.
     for (std::uint32_t a = 0; a < prev.size(); ++a) {
       const StateId i = prev[a].state;
-      if (graph.has_child(i) && graph.state(i + 1).viseme == targets[t]) {
+      if (graph.child_viseme(i) == targets[t]) {
         const double cost = prev[a].cost + duration(i + 1, t);
-        builder.offer(i + 1, cost, a, false);
+        builder.add(i + 1, cost, a, false);
         cap.add(cost);
       }
     }
     // Across recordings: states whose parent looks like the phone we leave.
     offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), Diviseme{targets[t - 1], targets[t]}, options,
                 duration, t, cap, builder, scratch);
-    steps[t] = builder.take();
-    if (steps[t].empty()) {  // the voice never recorded this diviseme: join anywhere that matches
+    if (builder.empty()) {  // the voice never recorded this diviseme: join anywhere that matches
       ++result.stats.hard_joins;
       offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, duration, t, cap, builder,
                   scratch);
-      steps[t] = builder.take();
     }
-    prune(steps[t], options.max_active);
-    result.stats.active_per_step.push_back(steps[t].size());
+    close_step();
   }
 
   // Back-trace from the cheapest final state.
-  const auto& last = steps.back();
+  const auto last = step(targets.size() - 1);
   std::uint32_t a = static_cast<std::uint32_t>(std::min_element(last.begin(), last.end(), better) - last.begin());
   result.cost = last[a].cost;
   result.states.resize(targets.size());
   std::vector<bool> joined(targets.size());
   for (std::size_t t = targets.size(); t-- > 0;) {
-    result.states[t] = steps[t][a].state;
-    joined[t] = steps[t][a].joined;
-    a = steps[t][a].back;
+    const Active& at = step(t)[a];
+    result.states[t] = at.state;
+    joined[t] = at.joined;
+    a = at.back;
   }
   for (std::size_t t = 0; t < targets.size(); ++t) {
     if (joined[t]) result.units.push_back({result.states[t], t, 0});

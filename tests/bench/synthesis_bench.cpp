@@ -14,6 +14,7 @@
 #include "support/synthetic_voice_graph.hpp"
 
 #include <benchmark/benchmark.h>
+#include <malloc.h>
 
 #include <algorithm>
 #include <numeric>
@@ -105,6 +106,52 @@ BENCHMARK(BM_Synthesize)
     ->Args({10, 64, 0})->Args({10, 64, 1})  // the `say` default
     ->Args({10, 16, 0})->Args({10, 16, 1})
     ->Unit(benchmark::kMillisecond);
+
+// The unit search alone of BM_Synthesize: the same graph and the same 114 target classes (read
+// off the states its search chose, so after any substitution).
+void BM_SearchOnly(benchmark::State& state) {
+  const World& w = world();
+  const auto options = options_of(state);
+  const auto track = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+  std::vector<synth::VisemeClass> targets;
+  for (const synth::StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
+  synth::SynthesizedTrack s;
+  for (auto _ : state) {
+    s.search = synth::unit_search(*w.voice.graph, targets, options.search);
+    benchmark::DoNotOptimize(s.search.cost);
+  }
+  s.timeline = track.timeline;
+  report(state, s);
+}
+BENCHMARK(BM_SearchOnly)
+    ->ArgNames({"beta100", "cap", "prune"})
+    ->Args({0, 0, 1})->Args({10, 0, 0})->Args({10, 0, 1})
+    ->Args({10, 64, 0})->Args({10, 64, 1})->Args({10, 16, 1})
+    ->Unit(benchmark::kMillisecond);
+
+// A one-sentence `fapcast say` as far as the search goes: open the graph (indices, junction
+// features, the bound's centres and axes), then one search of the same 114 targets, which makes
+// the bound's tables of the divisemes it joins into. Arg: prune joins (1) or the reference (0).
+void BM_OpenAndSearchOnce(benchmark::State& state) {
+  const World& w = world();
+  // Fixed malloc thresholds: the graph's 13 MB of junction features are then reused from one
+  // iteration to the next, not returned to the kernel and faulted in again, which glibc's
+  // dynamic thresholds do or not depending on the allocation order of the code measured.
+  mallopt(M_MMAP_THRESHOLD, 64 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  const auto track = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, {});
+  std::vector<synth::VisemeClass> targets;
+  for (const synth::StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
+  synth::SynthesizedTrack s;
+  for (auto _ : state) {
+    const synth::PhoneGraph graph(w.voice.states, synth::junction_features(w.voice.states, w.voice.frames));
+    s.search = synth::unit_search(graph, targets, {0.1, 64, state.range(0) != 0});
+    benchmark::DoNotOptimize(s.search.cost);
+  }
+  s.timeline = track.timeline;
+  report(state, s);
+}
+BENCHMARK(BM_OpenAndSearchOnce)->ArgName("prune")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Phones -> FAP frames at 25 fps (what `say` writes, without TTS and file output).
 void BM_PhonesToFaps(benchmark::State& state) {

@@ -7,6 +7,7 @@
 #include "fapcast/synth/unit_search.hpp"
 
 #include <benchmark/benchmark.h>
+#include <malloc.h>
 
 #include <memory>
 #include <numeric>
@@ -122,6 +123,11 @@ BENCHMARK(BM_GraphOpen)->ArgName("what")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark
 // or evaluate every join (0: the reference, which never makes the points).
 void BM_OpenAndSearchOnce(benchmark::State& state) {
   const World& w = world();
+  // Fixed malloc thresholds: the graph's 13 MB of junction features are then reused from one
+  // iteration to the next, not returned to the kernel and faulted in again, which glibc's
+  // dynamic thresholds do or not depending on the allocation order of the code measured.
+  mallopt(M_MMAP_THRESHOLD, 64 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
   SearchResult r;
   for (auto _ : state) {
     PhoneGraph g(w.states, junction_features(w.states, w.frames));

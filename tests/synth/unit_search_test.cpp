@@ -275,11 +275,44 @@ TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
   EXPECT_GT(hard, 0) << "no search went through a hard join";
 }
 
-// The bound the pruning rests on (junction_bound.hpp) never exceeds the cost it bounds: every
-// admissible join of random graphs, at scales from 1e-6 to 1e6 and far from the origin.
+// The same on graphs large enough that every step has hundreds of entries and a full cap (the
+// cap's selection, the sketches and the reading order all at the sizes of a voice), with class
+// shapes under light and heavy noise, as the synthesis benchmark has them; under heavy noise with
+// the duration term on.
+TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultOnLargeSteps) {
+  std::mt19937_64 rng(test_seed());
+  int searches = 0;
+  for (float noise : {0.1f, 1.0f}) {
+    // Under heavy noise the phones have random lengths and the duration term is on.
+    const bool timed = noise > 0.5f;
+    const auto voice = test::synthetic_voice_graph(200, 30, 3, 6, rng(), noise, Vs({0, 1, 2, 3, 4}), true, timed ? 8 : 0);
+    std::vector<VisemeClass> targets(40);
+    for (auto& v : targets) v = V(std::uniform_int_distribution<int>(0, 4)(rng));
+    std::vector<std::int64_t> lengths(targets.size());
+    for (auto& n : lengths) n = std::uniform_int_distribution<std::int64_t>(2, 9)(rng);
+    for (const std::optional<std::size_t> cap : {std::optional<std::size_t>{}, std::optional<std::size_t>{16},
+                                                 std::optional<std::size_t>{64}}) {
+      const double weight = timed ? 0.3 : 0.0;
+      const SearchResult reference = unit_search(*voice.graph, targets, lengths, {0.1, cap, false, weight});
+      const SearchResult pruned = unit_search(*voice.graph, targets, lengths, {0.1, cap, true, weight});
+      const std::string where = "noise " + std::to_string(noise) + " cap " + (cap ? std::to_string(*cap) : "none") +
+                                "; reproduce with FAPCAST_SEED=" + std::to_string(test_seed());
+      ASSERT_EQ(pruned.cost, reference.cost) << where;
+      ASSERT_EQ(pruned.states, reference.states) << where;
+      ASSERT_EQ(pruned.units, reference.units) << where;
+      ASSERT_EQ(pruned.stats.active_per_step, reference.stats.active_per_step) << where;
+      ++searches;
+    }
+  }
+  EXPECT_EQ(searches, 6);
+}
+
+// The bounds the pruning rests on (junction_bound.hpp, junction_sketch.hpp) never exceed the cost
+// they bound: every admissible join of random graphs, at scales from 1e-6 to 1e6 and far from the
+// origin.
 TEST(JunctionBound, NeverExceedsTheJunctionCost) {
   std::mt19937_64 rng(test_seed());
-  int pairs = 0;
+  int pairs = 0, tight = 0;
   for (float scale : {1e-6f, 1.0f, 1e6f})
     for (float offset : {0.0f, 1e3f})
       for (int graph = 0; graph < 4; ++graph) {
@@ -299,12 +332,29 @@ TEST(JunctionBound, NeverExceedsTheJunctionCost) {
             JunctionPoint exit;
             bound.exits(g, from, to, std::span(&i, 1), std::span(&exit, 1));
             const float floor = JunctionBound::twice_cost_floor(points.entry[m], exit);
-            ASSERT_LE(floor, 2.0f * junction_cost(g, i, j)) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
+            const float cost = junction_cost(g, i, j);
+            ASSERT_LE(floor, 2.0f * cost) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
+            // The sketch bound (junction_sketch.hpp), from the same tables the search reads.
+            ASSERT_TRUE(bound.sketched());
+            const DivisemeSketches* entry_sketches = bound.entry_sketches(g, from, to);
+            if (!entry_sketches) entry_sketches = bound.entry_sketches(g, from, to);  // made on the second call
+            ASSERT_NE(entry_sketches, nullptr);
+            SketchRef sketch;
+            std::vector<std::int16_t> buffer;
+            bound.exit_sketches(g, from, std::span(&i, 1), std::span(&sketch, 1), buffer);
+            const auto dims = g.junction().entry.cols();
+            const std::int32_t distance2 =
+                sketch_distance2(entry_sketches->entry.data() + m * static_cast<std::size_t>(dims), sketch.values, dims);
+            const double sketch_floor = sketch_cost_floor(
+                distance2, double{entry_sketches->error[m]} + sketch.error, bound.sketch_grid().step);
+            ASSERT_LE(sketch_floor, double{cost}) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
+            tight += sketch_floor > 0.9 * cost;
             ++pairs;
           }
         }
       }
   EXPECT_GT(pairs, 10000);
+  EXPECT_GT(tight, pairs / 2) << "the sketch bound is valid but too loose to prune";
 }
 
 TEST(UnitSearch, PrefersOneLongUnitOverPieces) {

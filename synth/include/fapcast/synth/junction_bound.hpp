@@ -14,7 +14,9 @@
 //
 // Opening a voice computes only the centres and axes (O(states x 2k)); the points of a diviseme
 // are computed the first time a search joins into it (O((states of a + entries of a b) x 2k)), so
-// a one-sentence synthesis pays for the few divisemes it uses, not for all of them.
+// a one-sentence synthesis pays for the few divisemes it uses, not for all of them. The same
+// lazy tables hold the rows' sketches, the second bound (junction_sketch.hpp).
+#include "fapcast/synth/junction_sketch.hpp"
 #include "fapcast/synth/viseme.hpp"
 
 #include <Eigen/Core>
@@ -41,6 +43,20 @@ struct JunctionPoint {
 struct DivisemePoints {
   std::vector<JunctionPoint> entry;
   Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> entry_rows;
+  double along_mean = 0.0, across_mean = 0.0;  // the entries' mean point (u', s')
+};
+
+// The sketches (junction_sketch.hpp) of a diviseme's entries, in the same order: entry_rows.cols()
+// values each, and their rounding norms.
+struct DivisemeSketches {
+  std::vector<std::int16_t> entry;
+  std::vector<float> error;
+};
+
+// A state's exit sketch: its values and rounding norm.
+struct SketchRef {
+  const std::int16_t* values = nullptr;
+  float error = 0.0f;
 };
 
 class JunctionBound {
@@ -64,6 +80,22 @@ class JunctionBound {
   void exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to, std::span<const std::uint32_t> states,
              std::span<JunctionPoint> out) const;
 
+  // Whether there are sketches (junction_sketch.hpp): rows of at most kSketchMaxDims values.
+  bool sketched() const { return shared_ && shared_->sketched; }
+  const SketchGrid& sketch_grid() const { return shared_->grid; }
+
+  // The entry sketches of diviseme (from, to), made on its second call (safe from several
+  // threads); nullptr on the first, and without sketches. A one-sentence search joins into most
+  // of its divisemes once, where making sketches would cost more than they spare.
+  const DivisemeSketches* entry_sketches(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const;
+
+  // The exit sketches of `states` (all of class `from`), into `out`. Like exits(): made per call
+  // into `buffer` until the class has made as many as it has states, then read from a table of
+  // every exit of the class made once (safe from several threads). `buffer` must stay alive and
+  // untouched while `out` is read.
+  void exit_sketches(const PhoneGraph& graph, VisemeClass from, std::span<const std::uint32_t> states,
+                     std::span<SketchRef> out, std::vector<std::int16_t>& buffer) const;
+
   // A lower bound on 2 C(i, j) for exit point x and entry point e of the same diviseme; may be
   // negative (then it bounds nothing).
   static float twice_cost_floor(const JunctionPoint& e, const JunctionPoint& x) {
@@ -74,12 +106,16 @@ class JunctionBound {
  private:
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   struct Lazy;
+  struct ClassSketches;
   struct Shared {
     Rows centre;                       // c_a, per class
     Rows axis;                         // q_ab, per diviseme (zero when not recorded)
     double slack_per_spread = 0.0;
     std::vector<std::uint32_t> rank;   // a state's index in PhoneGraph::with_viseme(its class)
     std::unique_ptr<Lazy[]> divisemes; // per diviseme, filled on first use
+    bool sketched = false;
+    SketchGrid grid;
+    std::unique_ptr<ClassSketches[]> sketches;  // per class (of the exits), filled on first use
     ~Shared();
   };
   // Shared by copies of the graph (the points depend only on the features, which copies share).

@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -84,6 +85,12 @@ class PhoneGraph {
   bool has_child(StateId i) const {
     return i + 1 < states_.size() && states_[i + 1].utterance == states_[i].utterance;
   }
+  // The class of the next phone in the same recording, if any (one byte per state: the search
+  // asks it of every active state at every phone).
+  std::optional<VisemeClass> child_viseme(StateId i) const {
+    const std::uint8_t v = child_viseme_[i];
+    return v < kVisemeClassCount ? std::optional<VisemeClass>(static_cast<VisemeClass>(v)) : std::nullopt;
+  }
 
   // Every state of class v.
   std::span<const StateId> with_viseme(VisemeClass v) const;
@@ -98,6 +105,7 @@ class PhoneGraph {
 
  private:
   std::vector<PhoneState> states_;
+  std::vector<std::uint8_t> child_viseme_;  // per state: its child's class, kVisemeClassCount if none
   JunctionFeatures features_;
   JunctionBound bound_;
   // CSR-style indices: by_viseme_[offsets_[v] .. offsets_[v+1]) and the same for divisemes.

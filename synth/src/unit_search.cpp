@@ -313,9 +313,9 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
     v_mean /= static_cast<double>(preds), t_mean /= static_cast<double>(preds);
     double v_reach = 0.0, t_reach = 0.0;
     for (std::uint32_t a = 0; a < preds; ++a) {
-      const double v = point[a].along, t = point[a].across;
-      v_reach = std::max(v_reach, std::abs(v - v_mean)), t_reach = std::max(t_reach, std::abs(t - t_mean));
-      by_key[a] = {prev[a].cost + 1.0 + half_beta * (v * v + t * t - point[a].slack) - beta * (u_mean * v + s_mean * t), a};
+      const double v = point[a].along, w = point[a].across;  // v_n, t_n (t names the target phone here)
+      v_reach = std::max(v_reach, std::abs(v - v_mean)), t_reach = std::max(t_reach, std::abs(w - t_mean));
+      by_key[a] = {prev[a].cost + 1.0 + half_beta * (v * v + w * w - point[a].slack) - beta * (u_mean * v + s_mean * w), a};
     }
     for (std::size_t b = 0; b < targets.size(); ++b) {
       const JunctionPoint& e = entry_point[b];

@@ -11,13 +11,20 @@ namespace fapcast::transport {
 namespace {
 __extension__ typedef __int128 Int128;
 
-// round(a + (b - a) * num / den), half away from zero, in exact integer arithmetic (0 <= num < den).
-template <class Int>
-std::int32_t lerp_rounded(std::int32_t a, std::int32_t b, std::int64_t num, std::int64_t den) {
+// round(a + (b - a) * num / den), half away from zero (0 <= num < den): the exact numerator in
+// Int, and `floor_quotient(n)` = floor(n / den) for the non-negative numerators it is given.
+template <class Int, class FloorQuotient>
+std::int32_t lerp_rounded(std::int32_t a, std::int32_t b, std::int64_t num, std::int64_t den,
+                          FloorQuotient floor_quotient) {
   const Int scaled = static_cast<Int>(a) * den + static_cast<Int>(b - std::int64_t{a}) * num;
   const Int half = den / 2;
-  const Int q = scaled >= 0 ? (scaled + half) / den : -((-scaled + half) / den);
-  return static_cast<std::int32_t>(q);
+  return static_cast<std::int32_t>(scaled >= 0 ? floor_quotient(scaled + half) : -floor_quotient(-scaled + half));
+}
+
+// The same in exact integer arithmetic.
+template <class Int>
+std::int32_t lerp_rounded(std::int32_t a, std::int32_t b, std::int64_t num, std::int64_t den) {
+  return lerp_rounded<Int>(a, b, num, den, [den](Int n) { return n / den; });
 }
 
 // Up to this denominator the lerp fits 64 bits: |a| den <= 2^61, |b - a| num < 2^62, so the sum
@@ -33,15 +40,10 @@ constexpr std::int64_t kMaxDenominator64 = std::int64_t{1} << 30;
 // floating-point division is several times cheaper than an integer one.
 constexpr std::int64_t kMaxDenominatorDouble = std::int64_t{1} << 20;
 
-std::int64_t floor_quotient(std::int64_t n, double den) {  // 0 <= n < 2^53
-  return static_cast<std::int64_t>(static_cast<double>(n) / den);
-}
-
 std::int32_t lerp_rounded_double(std::int32_t a, std::int32_t b, std::int64_t num, std::int64_t den, double den_d) {
-  const std::int64_t scaled = std::int64_t{a} * den + (std::int64_t{b} - a) * num;
-  const std::int64_t half = den / 2;
-  const std::int64_t q = scaled >= 0 ? floor_quotient(scaled + half, den_d) : -floor_quotient(-scaled + half, den_d);
-  return static_cast<std::int32_t>(q);
+  return lerp_rounded<std::int64_t>(a, b, num, den, [den_d](std::int64_t n) {  // 0 <= n < 2^53
+    return static_cast<std::int64_t>(static_cast<double>(n) / den_d);
+  });
 }
 
 // The low-level FAPs (3..68) masked in both of two frames, listed once per pair of masks.

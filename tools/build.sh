@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Installs what is missing and builds an optimised `fapcast` into build/release/tools/fapcast.
+# Installs what is missing and builds an optimised `fapcast` into build/release/cli/fapcast.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // How the mask lines are laid out.
 enum class FapTextDialect {
@@ -75,4 +75,4 @@ FapFrame as_mask69(const FapFrame& frame);
 // How many frames the 69-token dialect cannot carry exactly (as_mask69(f) != f).
 std::size_t mask69_lossy_frames(const FapSequence& seq);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 inline constexpr std::string_view kFapJsonFormat = "fapcast-fap-json";
 inline constexpr int kFapJsonVersion = 1;
@@ -38,4 +38,4 @@ struct FapJsonRead {
 // pointer of the offending value ("/frames/3/faps/open_jaw") for everything else.
 FapJsonRead read_fap_json(std::string_view bytes, std::string_view source);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

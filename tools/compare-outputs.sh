@@ -4,7 +4,10 @@
 # with its own voice cache, and compares the sha256 of every output:
 #   output  base  new  same|DIFFERENT
 # Exit 0 when every output is the same, 1 when any differs (or a side fails to produce it).
-#   tools/compare-outputs.sh [BASE_REV]     BASE_REV defaults to `git merge-base HEAD main`
+#   tools/compare-outputs.sh [BASE_REV [NEW_REV]]
+# BASE_REV defaults to `git merge-base HEAD main`; NEW_REV (a commit) builds that revision in a
+# worktree of its own (build/compare/src-next/, reused and moved to each NEW_REV, so its build
+# build/compare/next/ stays incremental) instead of the working tree, which may then change.
 #   FAPCAST_COMPARE_NEW_EXE=PATH  use this executable as the new side instead of building the
 #                                 tree (to check the script: the base's own binary must say same)
 # Build trees live under build/compare/ and are reused: base-<rev>/ (from a detached worktree
@@ -15,6 +18,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 base_rev=$(git rev-parse --short "${1:-$(git merge-base HEAD main)}")
+new_rev=${2:+$(git rev-parse --short "$2")}
 work=$root/build/compare
 mkdir -p "$work"
 
@@ -48,6 +52,14 @@ build "$base_src" "$work/base-$base_rev"
 base_exe=$(exe_in "$work/base-$base_rev")
 if [ -n "${FAPCAST_COMPARE_NEW_EXE:-}" ]; then
   new_exe=$(realpath "$FAPCAST_COMPARE_NEW_EXE")
+elif [ -n "$new_rev" ]; then
+  if [ ! -d "$work/src-next" ]; then
+    git worktree add --detach "$work/src-next" "$new_rev" >/dev/null 2>&1
+  else
+    git -C "$work/src-next" checkout -q --detach "$new_rev"
+  fi
+  build "$work/src-next" "$work/next"
+  new_exe=$(exe_in "$work/next")
 else
   build "$root" "$work/new"
   new_exe=$(exe_in "$work/new")
@@ -190,7 +202,7 @@ row() {  # row NAME BASE_PATH NEW_PATH
       grep '^[<>]' | awk '{print "    " $1 " " $3}' | sort -u -k2 | head -n 10
   fi
 }
-printf '%-34s %-16s %-16s %s\n' output "base $base_rev" new verdict
+printf '%-34s %-16s %-16s %s\n' output "base $base_rev" "new ${new_rev:-tree}" verdict
 for f in $(cd "$work/run/base" && ls -1 | grep -v '^cache$'); do
   row "$f" "$work/run/base/$f" "$work/run/new/$f"
 done

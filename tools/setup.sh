@@ -11,6 +11,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev libsndfile1-dev libespeak-ng-dev libtinygltf-dev
   # run time: the text front-end, the recording script's pronunciations, format checks in tests
   espeak-ng festlex-cmu sox tshark xz-utils gzip
+  # tests: the layer check (tools/check-layers.py)
+  python3
   # tests: a standard glTF viewer (three.js r111 and its GLTFLoader) run by Node, no network
   nodejs libjs-three
   # the BVH export's cross-check: Blender's own importer, run headless (tests/codec/bvh_blender_test.cpp)

@@ -1,6 +1,6 @@
 // `fapcast eval synth`: its refusals of bad input and bad usage. (The run itself needs a voice
 // covering every viseme class - the full default voice, minutes to build - so it is tested at the
-// library level: tests/synth/synthesis_evaluation_test.cpp, tests/tools/synthesis_report_test.cpp.)
+// library level: tests/eval/synthesis_evaluation_test.cpp, tests/eval/synthesis_report_test.cpp.)
 #include "cli/fapcast_command.hpp"
 #include "support/run_command.hpp"
 

@@ -71,7 +71,7 @@ TEST(ReferenceTalker, C3dAndTextGridReadBackWhatWasRecorded) {
 }
 
 // Reproducibility across runs is a property of whole processes (espeak-ng keeps state between
-// calls): tests/tools/corpus_cli_test.cpp records the same corpus twice and compares the bytes.
+// calls): tests/cli/corpus_cli_test.cpp records the same corpus twice and compares the bytes.
 TEST(ReferenceTalker, AnotherSeedGivesAnotherTake) {
   PortableRandom a(5), c(6);
   const ReferenceTake ta = record_take(word("moon"), "x", actor(), a);

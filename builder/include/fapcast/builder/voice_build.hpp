@@ -4,6 +4,7 @@
 // lambda by GCV) -> PCA of the retargeted corpus (exact route, or EM-PCA) -> every frame's
 // coefficients -> phone graph -> one voice file. Deterministic: the same corpus and options give
 // the same bytes.
+#include "fapcast/core/input_error.hpp"
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>

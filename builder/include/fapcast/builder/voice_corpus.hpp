@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/marker_frames.hpp"
 #include "fapcast/phonetics/phone.hpp"
 #include "fapcast/select/phone_graph.hpp"

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/select/phone_graph.hpp"
 #include "fapcast/phonetics/viseme.hpp"

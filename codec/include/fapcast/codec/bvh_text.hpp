@@ -2,6 +2,7 @@
 // Reading and writing BVH text in the layout Blender's importer expects (spec/bvh.md): HIERARCHY,
 // ROOT/JOINT blocks with OFFSET then CHANNELS, End Site, MOTION, Frames:, Frame Time:, one line
 // of values per frame.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/bvh_document.hpp"
 
 #include <string>

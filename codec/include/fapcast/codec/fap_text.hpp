@@ -1,5 +1,6 @@
 #pragma once
 // Reading and writing `.fap` text files in every dialect real players write (spec/fap-text.md).
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 
 #include <cstdint>

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/core/frame_rate.hpp"
 
 namespace fapcast {

@@ -3,6 +3,7 @@
 // rate, frame count, optional sample rate and FAPU) and one object per frame with its time in
 // seconds, its WAV sample when a sample rate is given, its named FAP values and the viseme and
 // expression fields. Output is deterministic: fixed key order, FAPs in FAP-number order.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/fapu_values.hpp"
 

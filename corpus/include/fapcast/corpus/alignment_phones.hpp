@@ -1,6 +1,7 @@
 #pragma once
 // Timed phones from a phone alignment (a TextGrid's phone tier or a .lab file) on the WAV
 // timeline, for synthesis from recorded speech (`fapcast animate`).
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/alignment.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
 

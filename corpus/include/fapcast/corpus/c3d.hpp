@@ -5,6 +5,7 @@
 // (POINT:SCALE > 0) and float storage (POINT:SCALE < 0) are read; only Intel byte order
 // (processor type 84) is supported, DEC (85) and MIPS (86) files are refused by name. Every
 // offset and count is checked against the file size before use. Rules in spec/corpus.md.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/marker_set.hpp"
 
 #include <map>

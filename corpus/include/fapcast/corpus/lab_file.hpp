@@ -2,6 +2,7 @@
 // HTK and MOCHA-TIMIT label files (.lab): one segment per line, "start end label [score]".
 // HTK writes times as integers in 100 ns units; MOCHA-TIMIT (and ESPS/Festival-style exports)
 // as decimal seconds. The reader detects which: every time an integer -> HTK, otherwise seconds.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/label_tier.hpp"
 
 #include <cstdint>

@@ -7,6 +7,7 @@
 // Comma-separated, UTF-8; columns after frame,time_s come in x,y,z triples named LABEL.x LABEL.y
 // LABEL.z; all three cells empty = missing sample; frame numbers consecutive. Without a
 // frame_rate_hz setting the rate is (frames - 1) / (last time - first time). See spec/corpus.md.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/marker_set.hpp"
 
 #include <string>

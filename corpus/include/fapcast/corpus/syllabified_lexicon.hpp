@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/phonetics/phone.hpp"
 
 namespace fapcast {

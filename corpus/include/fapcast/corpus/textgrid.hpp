@@ -2,6 +2,7 @@
 // Praat TextGrid text files: read the long ("ooTextFile" with keys) and short (values only)
 // forms in UTF-8 (BOM optional) or UTF-16 (LE or BE, BOM required, as Praat writes for
 // non-ASCII labels); write either form in UTF-8. Rules refused are listed in spec/corpus.md.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/alignment.hpp"
 
 #include <string>

@@ -3,6 +3,7 @@
 // "PathFileType" line, a line of keys (DataRate CameraRate NumFrames NumMarkers Units
 // OrigDataRate OrigDataStartFrame OrigNumFrames) and their values, a "Frame# Time name ..." row,
 // an "X1 Y1 Z1 ..." row, then one row per frame; empty cells mark a missing sample.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/marker_set.hpp"
 
 #include <string>

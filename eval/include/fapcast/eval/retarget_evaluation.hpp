@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <functional>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/eval/lip_measures.hpp"
 #include "fapcast/voice/voice.hpp"
 

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/face/blendshape.hpp"
 #include "fapcast/face/mesh_types.hpp"
 #include "fapcast/face/obj_mesh.hpp"

@@ -5,6 +5,7 @@
 #include <string>
 #include <string_view>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/face/mesh_types.hpp"
 
 namespace fapcast {

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/face/face_model.hpp"
 
 namespace fapcast {

@@ -22,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/core/mono_audio.hpp"
 #include "fapcast/phonetics/phone.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"

@@ -4,6 +4,7 @@
 // (unit_search.hpp) -> warped, cross-faded, smoothed PCA frames (unit_render.hpp), with the
 // parametric tongue (tongue.hpp) on the same frames. The jaw travels in the PCA frames (the chin
 // feature point 2.1 is on the mesh); codec turns both into FAPs.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/select/phone_graph.hpp"
 #include "fapcast/synthesis/unit_render.hpp"
 #include "fapcast/select/unit_search.hpp"

@@ -1,6 +1,7 @@
 #pragma once
 // FAP tracks in files, chosen by extension: .fap (text, spec/fap-text.md), .fba (bitstream,
 // spec/fba.md) and .json (spec/json.md). Reads are size-limited, writes atomic.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 
 #include <cstdint>

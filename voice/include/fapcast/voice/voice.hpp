@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/phonetics/phone.hpp"
 #include "fapcast/select/phone_graph.hpp"
 #include "fapcast/math/rbf_retarget.hpp"

@@ -7,6 +7,7 @@
 // All integers little-endian. VoiceFileWriter produces the bytes; VoiceFileView maps a file
 // read-only, checks every rule before handing anything out, and refuses a bad file with an
 // InputError naming the file, the byte offset, the rule and the section.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/core/eigen_types.hpp"
 
 #include <Eigen/Core>

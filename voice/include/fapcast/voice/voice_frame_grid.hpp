@@ -3,6 +3,7 @@
 // shown from sample round(n * rate / 60) (halves up), the rule of frame_to_sample; it is
 // restated here in exact integers because synth must not include codec (a test checks that the
 // two agree). Timed phones -> target phones for the unit search and the renderer.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
 #include "fapcast/phonetics/viseme.hpp"
 

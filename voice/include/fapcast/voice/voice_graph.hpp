@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/phonetics/phone.hpp"
 #include "fapcast/select/phone_graph.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The default voice (VOICE-API.md): built from the SYNTHETIC reference corpus (seed 1) on first
+// The default voice (spec/voice.md): built from the SYNTHETIC reference corpus (seed 1) on first
 // use and cached, so `say` and `animate` work without --voice.
 #include <filesystem>
 #include <string>

@@ -100,7 +100,7 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
   options.search.beta = args.beta;
   if (args.max_active > 0) options.search.max_active = args.max_active;
   options.search.duration_weight = args.duration_weight;
-  options.render.join_mid_phone = !args.boundary_joins;
+  options.concatenation.join_mid_phone = !args.boundary_joins;
   const auto start = std::chrono::steady_clock::now();
   SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones,
                                                     sample_rate_hz, audio_samples, options, source);

@@ -6,7 +6,7 @@
 
 #include "fapcast/corpus/alignment_phones.hpp"
 #include "fapcast/corpus/lab_file.hpp"
-#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/core/wav_file.hpp"
 #include "fapcast/corpus/textgrid.hpp"
 #include "fapcast/core/file_io.hpp"
 
@@ -44,7 +44,7 @@ const cli::Registration reg{"21-animate", [](CLI::App& app) {
         const std::string ext = cli::lower_extension(args->align);
         if (ext != ".textgrid" && ext != ".lab")
           throw cli::UsageError("animate: alignment '" + args->align + "' must end in .TextGrid or .lab");
-        const MonoAudio audio = read_wav(args->wav);
+        const Audio audio = read_mono_wav(args->wav);
         const Alignment alignment = read_alignment(args->align);
         const LabelTier* tier = phone_tier(alignment);
         if (tier == nullptr || tier->intervals.empty())

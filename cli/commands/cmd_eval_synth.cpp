@@ -24,7 +24,7 @@ namespace {
 using namespace fapcast;
 
 // The method under test: synthesize() - the Viterbi search over the voice's phone graph and
-// render_units - from the utterance's own timed phones, as `fapcast say` runs it.
+// concatenate_units - from the utterance's own timed phones, as `fapcast say` runs it.
 NamedSystem variable_length_system(const Voice& voice, SynthesisOptions options) {
   return {"variable-length", [&voice, options](const HeldOutUtterance& u) {
             const auto track = synthesize(voice.graph(), voice.frame_coefficients(), u.speech.phones,
@@ -87,7 +87,7 @@ const cli::Registration reg{"71-eval-synth", [](CLI::App& app) {
     options.search.beta = args->beta;
     if (args->max_active > 0) options.search.max_active = args->max_active;
     options.search.duration_weight = args->duration_weight;
-    options.render.join_mid_phone = !args->boundary_joins;
+    options.concatenation.join_mid_phone = !args->boundary_joins;
     const std::vector<NamedSystem> systems{
         variable_length_system(voice, options),
         diviseme_system(voice.graph(), voice.frame_coefficients()),

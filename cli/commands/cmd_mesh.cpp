@@ -3,7 +3,7 @@
 //   fapcast expressions -o DIR | OUT.glb [--intensity N] [--fps N] [--seconds S] [--obj-frames DIR]
 //   fapcast render IN.glb -o DIR [--view face|mouth] [--width PX] [--every N]
 // Argument parsing only; synth adapts and builds expressions, codec writes and reads glTF, the
-// rasteriser (tools/software_render) draws.
+// rasteriser (render/rasteriser) draws.
 #include "animation.hpp"
 #include "command.hpp"
 #include "fapcast/render/mesh_export.hpp"

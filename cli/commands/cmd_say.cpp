@@ -3,7 +3,7 @@
 #include "command.hpp"
 #include "synthesis_cli.hpp"
 
-#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/core/wav_file.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
 
 #include <filesystem>

@@ -8,7 +8,7 @@
 #include "fapcast/transport/timeline.hpp"
 #include "fapcast/transport/track_file.hpp"
 #include "fapcast/transport/udp_url.hpp"
-#include "fapcast/core/wav_audio.hpp"
+#include "fapcast/core/wav_file.hpp"
 
 #include <iostream>
 #include <memory>
@@ -37,12 +37,12 @@ void run_stream(const StreamArgs& a) {
   if (a.payload_type == a.audio_payload_type)
     throw cli::UsageError("--payload-type and --audio-payload-type must differ");
   const FapSequence seq = read_track_file(a.input);
-  std::unique_ptr<WavAudio> audio;
-  if (!a.wav.empty()) audio = std::make_unique<WavAudio>(read_multichannel_wav(a.wav));
+  std::unique_ptr<Audio> audio;
+  if (!a.wav.empty()) audio = std::make_unique<Audio>(read_wav(a.wav));
 
   StreamOptions options;
   options.pace = !a.no_pace;
-  options.clock_rate = audio ? audio->sample_rate : kDefaultSampleRate;
+  options.clock_rate = audio ? audio->sample_rate_hz : kDefaultSampleRate;
   options.animation_payload_type = static_cast<std::uint8_t>(a.payload_type);
   options.audio_payload_type = static_cast<std::uint8_t>(a.audio_payload_type);
   options.rtcp_interval = std::chrono::milliseconds(a.rtcp_ms);
@@ -68,7 +68,7 @@ void run_stream(const StreamArgs& a) {
   if (audio)
     std::cout << "audio:     " << r.audio.packets << " packets, " << r.audio.payload_octets
               << " payload octets, ssrc " << options.audio_ids.ssrc << ", pt "
-              << a.audio_payload_type << " (L16/" << audio->sample_rate << "/" << audio->channels
+              << a.audio_payload_type << " (L16/" << audio->sample_rate_hz << "/" << audio->channels
               << ")\n";
   std::cout << "rtcp:      " << r.animation.sender_reports + r.audio.sender_reports
             << " sender reports\n";

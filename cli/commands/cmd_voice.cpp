@@ -7,7 +7,7 @@
 #include "fapcast/voice/voice.hpp"
 #include "fapcast/face/obj_mesh.hpp"
 #include "fapcast/builder/voice_build.hpp"
-#include "fapcast/voice/voice_retarget.hpp"
+#include "fapcast/voice/voice_adaptation.hpp"
 #include "fapcast/core/file_io.hpp"
 
 #include <filesystem>
@@ -159,9 +159,9 @@ const fapcast::cli::Registration retarget_reg{"63-voice-retarget", [](CLI::App& 
     const auto specific = fapcast::read_obj_mesh(args->specific);
     fapcast::require_same_topology(generic, args->generic, specific, args->specific);
     const auto voice = fapcast::Voice::open(args->voice);
-    fapcast::RetargetedVoice out;
+    fapcast::AdaptedVoice out;
     try {
-      out = fapcast::retarget_voice(voice, metres * generic.vertices, metres * specific.vertices, generic.faces,
+      out = fapcast::adapt_voice(voice, metres * generic.vertices, metres * specific.vertices, generic.faces,
                                            std::filesystem::path(args->specific).filename().string());
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error(args->generic + ": " + e.what());

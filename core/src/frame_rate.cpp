@@ -28,4 +28,12 @@ std::int64_t sample_to_frame(std::int64_t sample, FrameRate rate, std::int64_t s
   return k;
 }
 
+std::int64_t first_frame_at(std::int64_t sample, FrameRate rate, std::int64_t sample_rate) {
+  // frame_to_sample(k) = floor((2 k R d + n) / 2n) >= s  <=>  2 k R d >= 2 n s - n.
+  const Int128 need = static_cast<Int128>(2) * rate.numerator * sample - rate.numerator;
+  if (need <= 0) return 0;
+  const Int128 step = static_cast<Int128>(2) * sample_rate * rate.denominator;
+  return static_cast<std::int64_t>((need + step - 1) / step);
+}
+
 }  // namespace fapcast

@@ -54,10 +54,9 @@ std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, std::int64_t sam
     const std::int64_t start = to_sample(in.start_s, sample_rate_hz);
     const std::int64_t end = to_sample(in.end_s, sample_rate_hz);
     if (previous_closure && !p.closure && out.back().phone == p.phone && out.back().end_sample == start) {
-      out.back().end_sample = end;  // closure + release: one phone, released here
-      out.back().event_sample = out.back().release_sample = start;
+      out.back().end_sample = end;  // closure + release: one phone
     } else {
-      out.push_back({p.phone, start, end, start, start, kNoWord, ""});
+      out.push_back({p.phone, start, end});
     }
     previous_closure = p.closure;
   }

@@ -52,12 +52,12 @@ std::vector<HeldOutUtterance> record_held_out(const FaceModel& actor, std::uint6
 }
 
 NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
-                            RenderOptions options, DivisemeChoiceRule rule) {
+                            ConcatenationOptions options, DivisemeChoiceRule rule) {
   return {rule == DivisemeChoiceRule::kFirst ? "diviseme-first" : "diviseme",
           [&graph, &pca_frames, options, rule](const HeldOutUtterance& u) {
             const auto targets = covered(graph, u.targets);
             const auto selection = select_divisemes(graph, targets, rule);
-            return SystemOutput{render_divisemes(graph, pca_frames, selection, targets, options),
+            return SystemOutput{concatenate_divisemes(graph, pca_frames, selection, targets, options),
                                 selection.divisemes.size() + selection.unrecorded};
           }};
 }

@@ -23,7 +23,7 @@ class FrequencyModel {
  public:
   static constexpr int kMaxSymbols = 4096;      // > 2*1860+1, the widest FAP range
   static constexpr std::uint16_t kMaxTotal = 16383;
-  static constexpr int kIncrement = 8;  // fapcast; the notes' codec adds 1
+  static constexpr int kIncrement = 8;  // fapcast; the published FBA codec (spec/fba.md) adds 1
   // The table is stored in blocks of kLanes entries (one 16-byte vector each), zero-padded to an
   // even number of blocks, so that searching and updating run over whole blocks without a scalar
   // tail.

@@ -44,7 +44,7 @@ struct FbaRateFields {
 std::optional<FbaRateFields> fba_rate_fields(FrameRate rate);
 
 // fapcast: P prediction (spec/fba.md §6). Predictor 0 is the previous reconstructed value r1
-// (the notes' codec). Predictor k = 1..31 is r3 + (k - 7) * (r1 - r2) / 8 over the last three
+// (the published FBA codec of spec/fba.md). Predictor k = 1..31 is r3 + (k - 7) * (r1 - r2) / 8 over the last three
 // reconstructed values r1, r2, r3: exact for a constant plus one sinusoid of w radians per frame
 // when (k - 7) / 8 = 1 + 2 cos w, and for any quadratic at k = 31. Computed in 64 bits, rounded
 // half up (floor((d * (k - 7) + 4) / 8)), saturated to int32.

@@ -69,7 +69,7 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& fram
     out.tongue.resize(0, static_cast<Eigen::Index>(kTongueFapCount));
     return out;
   }
-  // The search and the renderer see the covered classes; the timeline keeps what was asked for.
+  // The search and the concatenation see the covered classes; the timeline keeps what was asked for.
   std::vector<TargetPhone> covered(targets.begin(), targets.end());
   std::vector<VisemeClass> classes(covered.size());
   std::vector<std::int64_t> lengths(covered.size());
@@ -80,7 +80,7 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& fram
     lengths[t] = covered[t].end_frame - covered[t].first_frame;
   }
   out.search = unit_search(graph, classes, lengths, options.search);
-  out.pca_frames = render_units(graph, frame_coefficients, out.search, covered, options.render);
+  out.pca_frames = concatenate_units(graph, frame_coefficients, out.search, covered, options.concatenation);
   out.tongue = tongue_track(targets, out.timeline.phone_of);
   return out;
 }

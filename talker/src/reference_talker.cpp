@@ -3,7 +3,6 @@
 #include "fapcast/corpus/c3d.hpp"
 #include "fapcast/talker/capture_imperfections.hpp"
 #include "fapcast/talker/coarticulation.hpp"
-#include "fapcast/corpus/marker_conversion.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/core/synthetic_label.hpp"
 #include "fapcast/talker/talker_markers.hpp"
@@ -46,7 +45,7 @@ PhoneTimeline timeline_of(const Speech& speech) {
   PhoneTimeline timeline;
   timeline.sample_rate_hz = speech.audio.sample_rate_hz;
   for (const auto& p : speech.phones)
-    if (p.end_sample > p.start_sample) timeline.phones.push_back({phone_label(p.phone), p.start_sample, p.end_sample});
+    if (p.end_sample > p.start_sample) timeline.phones.push_back(p);
   return timeline;
 }
 
@@ -136,7 +135,7 @@ ReferenceCorpusSummary record_reference_corpus(
     const std::string stem = id;
     write_wav(directory / (stem + ".wav"), take.audio);
     summary.bytes += std::filesystem::file_size(directory / (stem + ".wav"));
-    write(stem + ".c3d", write_c3d(to_marker_set(take.captured),
+    write(stem + ".c3d", write_c3d(to_millimetres(take.captured),
                                    {c3d_synthetic_parameter(),
                                     {"FAPCAST", "TEXT", item.text.substr(0, 255), "the script item spoken"}}));
     write(stem + ".TextGrid", write_textgrid(take.alignment));

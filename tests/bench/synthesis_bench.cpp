@@ -48,7 +48,7 @@ const World& world() {
     while (at < end) {
       const std::int64_t len = std::min<std::int64_t>(end - at, ms(rng) * kRate / 1000);
       const auto p = (at == 0 || at + len >= end) ? Phone::SIL : static_cast<Phone>(phone(rng));
-      w.phones.push_back({p, at, at + len, at, at, kNoWord, ""});
+      w.phones.push_back({p, at, at + len});
       at += len;
     }
     // A mesh basis whose feature-point vertices sit on the generic face (cm).
@@ -129,12 +129,12 @@ BENCHMARK(BM_SearchOnly)
     ->Args({10, 64, 0})->Args({10, 64, 1})->Args({10, 16, 1})
     ->Unit(benchmark::kMillisecond);
 
-// A one-sentence `fapcast say` as far as the search goes: open the graph (indices, junction
+// A one-sentence `fapcast say` as far as the search goes: open the graph (indices, join
 // features, the bound's centres and axes), then one search of the same 114 targets, which makes
 // the bound's tables of the divisemes it joins into. Arg: prune joins (1) or the reference (0).
 void BM_OpenAndSearchOnce(benchmark::State& state) {
   const World& w = world();
-  // Fixed malloc thresholds: the graph's 13 MB of junction features are then reused from one
+  // Fixed malloc thresholds: the graph's 13 MB of join features are then reused from one
   // iteration to the next, not returned to the kernel and faulted in again, which glibc's
   // dynamic thresholds do or not depending on the allocation order of the code measured.
   mallopt(M_MMAP_THRESHOLD, 64 << 20);
@@ -144,7 +144,7 @@ void BM_OpenAndSearchOnce(benchmark::State& state) {
   for (const StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
   SynthesizedTrack s;
   for (auto _ : state) {
-    const PhoneGraph graph(w.voice.states, junction_features(w.voice.states, w.voice.frames));
+    const PhoneGraph graph(w.voice.states, join_features(w.voice.states, w.voice.frames));
     s.search = unit_search(graph, targets, {0.1, 64, state.range(0) != 0});
     benchmark::DoNotOptimize(s.search.cost);
   }
@@ -172,7 +172,7 @@ BENCHMARK(BM_PhonesToFaps)
     ->Unit(benchmark::kMillisecond);
 
 // The work after the search, at the `say` default, from one fixed search result: what
-// synthesize() does besides unit_search (voice grid, render: warp, cross-fade, smoothing; tongue)
+// synthesize() does besides unit_search (voice grid, concatenation: warp, cross-fade, smoothing; tongue)
 // and what follows it (PCA -> FAPs at 60 fps, resampled to 25 fps). Together they are
 // BM_PhonesToFaps minus the search.
 const SynthesizedTrack& default_track() {
@@ -186,13 +186,13 @@ const SynthesizedTrack& default_track() {
   return s;
 }
 
-void BM_RenderAfterSearch(benchmark::State& state) {
+void BM_AfterSearch(benchmark::State& state) {
   const World& w = world();
   const SynthesizedTrack& s = default_track();
   for (auto _ : state) {
     // The bench graph covers every class, so the covered targets are the timeline's own.
     const auto timeline = place_on_voice_grid(w.phones, kRate);
-    auto pca = render_units(*w.voice.graph, w.voice.frames, s.search, timeline.phones);
+    auto pca = concatenate_units(*w.voice.graph, w.voice.frames, s.search, timeline.phones);
     auto tongue = tongue_track(timeline.phones, timeline.phone_of);
     benchmark::DoNotOptimize(pca.data());
     benchmark::DoNotOptimize(tongue.data());
@@ -200,7 +200,7 @@ void BM_RenderAfterSearch(benchmark::State& state) {
   state.counters["anim_s_per_cpu_s"] =
       benchmark::Counter(kSentenceS * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_RenderAfterSearch)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AfterSearch)->Unit(benchmark::kMillisecond);
 
 void BM_FapsAt25(benchmark::State& state) {
   const World& w = world();

@@ -13,7 +13,7 @@
 #include "fapcast/synthesis/synthesis.hpp"
 #include "fapcast/voice/voice.hpp"
 #include "fapcast/corpus/lab_file.hpp"
-#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/core/wav_file.hpp"
 #include "fapcast/corpus/textgrid.hpp"
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/transport/track_file.hpp"
@@ -57,7 +57,7 @@ std::string take(const std::string& ext) { return SayCli::take(ext); }
 
 // The frames shown while the audio plays: every j whose first sample (frame_to_sample)
 // lies before the audio's end.
-std::int64_t frames_for(const MonoAudio& a, std::uint32_t fps) {
+std::int64_t frames_for(const Audio& a, std::uint32_t fps) {
   const auto n = static_cast<std::int64_t>(a.samples.size());
   std::int64_t j = 0;
   while (frame_to_sample(j, {fps, 1}, a.sample_rate_hz) < n) ++j;
@@ -69,7 +69,7 @@ void SayWritesTheTrackInSyncWithTheWav() {
                                      out("say.fap") + " --wav " + out("say.wav") + " --viseme"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("frames at 25 fps"), std::string::npos) << r.out;
-  const MonoAudio audio = read_wav(out("say.wav"));
+  const Audio audio = read_wav(out("say.wav"));
   const FapSequence seq = read_track_file(out("say.fap"));
   EXPECT_EQ(seq.rate, (FrameRate{25, 1}));
   ASSERT_EQ(static_cast<std::int64_t>(seq.frames.size()), frames_for(audio, 25));
@@ -95,7 +95,7 @@ void EveryFormatAndRate() {
                                        out(name) + " --wav " + out("hello.wav")));
     ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
   }
-  const MonoAudio audio = read_wav(out("hello.wav"));
+  const Audio audio = read_wav(out("hello.wav"));
   EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("a.fba")).frames.size()), frames_for(audio, 25));
   EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("b.fap")).frames.size()), frames_for(audio, 30));
   const auto j = nlohmann::json::parse(read_file(out("a.json")));
@@ -104,7 +104,7 @@ void EveryFormatAndRate() {
 }
 
 void AnimateFromTextGridAndLab() {
-  const MonoAudio audio = read_wav(take("wav"));
+  const Audio audio = read_wav(take("wav"));
   auto r = run_command(fapcast("animate --wav " + take("wav") + " --align " + take("TextGrid") + " --voice " + voice() +
                                " --fps 60 -o " + out("anim.fap")));
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -172,7 +172,7 @@ void BadInputExitsOneAndNamesIt() {
 }
 
 // The take's phones as `animate` reads them, synthesised by the library with the CLI's defaults.
-SynthesizedTrack library_track(const Voice& v, const MonoAudio& audio) {
+SynthesizedTrack library_track(const Voice& v, const Audio& audio) {
   const Alignment a = read_textgrid(read_file(take("TextGrid")), take("TextGrid"));
   const auto samples = static_cast<std::int64_t>(audio.samples.size());
   const auto phones = fit_phones_to_audio(phones_from_tier(*phone_tier(a), audio.sample_rate_hz, "t"),
@@ -228,7 +228,7 @@ void ExpressionBlendsWithSpeech() {
 // frames the weights at 60 fps; --expression adds one target with weight 1; three.js loads it.
 void GlbCarriesThePcaFrames() {
   const Voice v = Voice::open(voice());
-  const MonoAudio audio = read_wav(take("wav"));
+  const Audio audio = read_wav(take("wav"));
   const std::string animate = "animate --wav " + take("wav") + " --align " + take("TextGrid") + " --voice " + voice();
   auto r = run_command(fapcast(animate + " -o " + out("anim.glb")));
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -265,7 +265,7 @@ void GlbCarriesThePcaFrames() {
   r = run_command(fapcast("say \"Hello.\" --voice " + voice() + " --expression joy:40 -o " + out("hello.glb") +
                           " --obj-frames " + out("hello-obj")));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const MonoAudio hello = read_wav(out("hello.wav"));
+  const Audio hello = read_wav(out("hello.wav"));
   const auto h = read_glb(read_file(out("hello.glb")), "hello.glb");
   EXPECT_EQ(h.weights.rows(), frames_for(hello, 60));
   // --obj-frames: every frame as an OBJ of the mesh the .glb shows.

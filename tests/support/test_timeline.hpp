@@ -18,7 +18,7 @@ inline PhoneTimeline timeline(const std::vector<std::pair<std::string, int>>& ph
   std::int64_t at = 0;
   for (const auto& [phone, ms] : phones) {
     const std::int64_t end = at + std::int64_t{ms} * kRate / 1000;
-    t.phones.push_back({phone, at, end});
+    t.phones.push_back({parse_arpabet(phone, "test timeline").phone, at, end});
     at = end;
   }
   return t;

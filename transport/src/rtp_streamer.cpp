@@ -59,14 +59,14 @@ RtpStreamer::RtpStreamer(asio::io_context& io, udp::endpoint destination, Stream
                             "destination port must be 1..65532 (P..P+3 are used)");
 }
 
-StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const WavAudio* audio) {
+StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Audio* audio) {
   std::error_code ec;
   StreamReport report = run(animation, audio, ec);
   if (ec) throw std::system_error(ec, "stream to " + destination_.address().to_string());
   return report;
 }
 
-StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const WavAudio* audio,
+StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Audio* audio,
                               std::error_code& ec) {
   using Clock = std::chrono::steady_clock;
   ec.clear();
@@ -77,7 +77,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Wav
     audio_rtcp_.emplace(io_, offset_port(destination_, 3), options_.socket);
   }
   const std::size_t audio_step =
-      audio ? l16_frames_per_packet(audio->sample_rate, audio->channels) : 1;
+      audio ? l16_frames_per_packet(audio->sample_rate_hz, audio->channels) : 1;
   const std::int64_t audio_instants = audio ? audio->instants() : 0;
   const std::int64_t rtcp_step =
       options_.rtcp_interval.count() > 0 ? clock * options_.rtcp_interval.count() / 1000 : 0;

@@ -29,4 +29,8 @@ std::int64_t frame_to_sample(std::int64_t k, FrameRate rate, std::int64_t sample
 // The frame shown at `sample`: the last frame k with frame_to_sample(k) <= sample.
 std::int64_t sample_to_frame(std::int64_t sample, FrameRate rate, std::int64_t sample_rate);
 
+// The first frame shown at or after `sample` (>= 0): the smallest k with
+// frame_to_sample(k) >= sample, in closed form (the frame a phone starting at `sample` owns).
+std::int64_t first_frame_at(std::int64_t sample, FrameRate rate, std::int64_t sample_rate);
+
 }  // namespace fapcast

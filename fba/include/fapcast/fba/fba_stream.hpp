@@ -22,7 +22,7 @@ struct FbaEncoderOptions {
   int fap_quant = 1;      // 0 (lossless) .. 31; quantiser step = QP[fap] * fap_quant
   int intra_period = 25;  // an intra frame at least every this many frames (>= 1)
   // Whole files only: choose each FAP's P predictor per intra period (spec/fba.md §6); false
-  // predicts every P value from the previous one, as the notes' codec does.
+  // predicts every P value from the previous one, as the published FBA codec of spec/fba.md does.
   bool choose_predictors = true;
 };
 

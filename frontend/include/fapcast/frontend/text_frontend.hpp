@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "fapcast/core/input_error.hpp"
-#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/core/audio.hpp"
 #include "fapcast/phonetics/phone.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
 
@@ -32,6 +32,17 @@ namespace fapcast {
 // Longest accepted text: 32 KiB is about 5,000 words, half an hour of speech, 80 MB of audio.
 // Longer texts must be split by the caller (e.g. per paragraph).
 inline constexpr std::size_t kMaxTextBytes = 32 * 1024;
+
+inline constexpr int kNoWord = -1;
+
+// What espeak-ng said of a phone, beside its TimedPhone.
+struct PhoneEvent {
+  std::int64_t event_sample;    // where espeak-ng's phoneme event put the phone
+  std::int64_t release_sample;  // end of the closure's quiet stretch; = the phone's start for other phones
+  int word;                     // index into Speech::words, kNoWord for silence
+  std::string espeak;           // the espeak-ng mnemonic reported
+  friend bool operator==(const PhoneEvent&, const PhoneEvent&) = default;
+};
 
 struct TimedWord {
   std::string text;             // the word as written in the input (UTF-8)
@@ -42,8 +53,9 @@ struct TimedWord {
 };
 
 struct Speech {
-  MonoAudio audio;              // espeak-ng's own rate (22050 Hz for its voices), mono int16
+  Audio audio;              // espeak-ng's own rate (22050 Hz for its voices), mono int16
   std::vector<TimedPhone> phones;
+  std::vector<PhoneEvent> events;  // one per phone
   std::vector<TimedWord> words;
 };
 

@@ -21,7 +21,7 @@ struct SearchOptions {
   // active state and entry state, the reference the tests and the benchmark compare against.
   bool prune_joins = true;
   // Weight of the duration term: state j serving a target phone of n_t frames adds
-  // duration_weight * ln^2(n_j / n_t), n_j its recorded frames. The renderer warps every phone to
+  // duration_weight * ln^2(n_j / n_t), n_j its recorded frames. The concatenation warps every phone to
   // its target's length, and a large warp distorts the timing of lip opening and closure most;
   // the term prefers units whose phones already last about as long. 0 = the paper's cost.
   double duration_weight = 0.0;
@@ -43,7 +43,7 @@ struct SearchStats {
 struct SearchResult {
   std::vector<StateId> states;  // one per target phone
   std::vector<Unit> units;
-  double cost = 0.0;  // number of units + beta * sum of junction costs + the duration terms
+  double cost = 0.0;  // number of units + beta * sum of join costs + the duration terms
   SearchStats stats;
 };
 

@@ -1,12 +1,12 @@
 #pragma once
 // Synthesis, paper sections 3.7-3.8 end to end: timed phones on the WAV timeline -> target
 // phones on the voice's 60 fps grid (voice_frame_grid.hpp) -> Viterbi unit search
-// (unit_search.hpp) -> warped, cross-faded, smoothed PCA frames (unit_render.hpp), with the
+// (unit_search.hpp) -> warped, cross-faded, smoothed PCA frames (unit_concatenation.hpp), with the
 // parametric tongue (tongue.hpp) on the same frames. The jaw travels in the PCA frames (the chin
 // feature point 2.1 is on the mesh); codec turns both into FAPs.
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/select/phone_graph.hpp"
-#include "fapcast/synthesis/unit_render.hpp"
+#include "fapcast/synthesis/unit_concatenation.hpp"
 #include "fapcast/select/unit_search.hpp"
 #include "fapcast/voice/voice_frame_grid.hpp"
 
@@ -33,13 +33,13 @@ VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v);
 
 struct SynthesisOptions {
   SearchOptions search;  // beta, max_active
-  RenderOptions render;  // cross-fade, smoothing, hold weight
+  ConcatenationOptions concatenation;  // cross-fade, smoothing, hold weight
 };
 
 struct SynthesizedTrack {
   TargetTimeline timeline;     // the target phones on the 60 fps grid (before substitution)
   // k columns, one row per voice frame 0..timeline.frame_count()-1; row n is shown from sample
-  // voice_frame_sample(n, timeline.sample_rate_hz): the first frame is at sample 0.
+  // frame_to_sample(n, kVoiceFrameRate, timeline.sample_rate_hz): the first frame is at sample 0.
   Eigen::MatrixXf pca_frames;
   Eigen::MatrixXf tongue;      // frames x 5: FAP 43..47 values (tongue.hpp)
   SearchResult search;         // states, units, cost, active states per phone

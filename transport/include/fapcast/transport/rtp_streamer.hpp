@@ -8,7 +8,7 @@
 #include "fapcast/transport/rtcp_sender_report.hpp"
 #include "fapcast/transport/rtp_packet.hpp"
 #include "fapcast/transport/udp_sender.hpp"
-#include "fapcast/core/wav_audio.hpp"
+#include "fapcast/core/wav_file.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -69,8 +69,8 @@ class RtpStreamer {
 
   // Sends `animation` (sorted by sample) and, when given, `audio` (whose rate must equal
   // options.clock_rate). Blocks until the last packet is sent. Throws std::system_error.
-  StreamReport run(const std::vector<MediaUnit>& animation, const WavAudio* audio = nullptr);
-  StreamReport run(const std::vector<MediaUnit>& animation, const WavAudio* audio,
+  StreamReport run(const std::vector<MediaUnit>& animation, const Audio* audio = nullptr);
+  StreamReport run(const std::vector<MediaUnit>& animation, const Audio* audio,
                    std::error_code& ec);
 
  private:

@@ -29,6 +29,10 @@ CLI::App* command_group(CLI::App& top, const std::string& name, const std::strin
 // The registered commands, sorted by their order keys so that --help lists them stably.
 std::vector<AddCommand> registered_commands();
 
+// Flushes standard output: kOk, or kBadInput with a message when the output could not be
+// written (a full disk, a closed pipe). main() returns it after a command succeeded.
+int standard_output_written();
+
 // Exit codes of the command line.
 enum ExitCode : int { kOk = 0, kBadInput = 1, kBadUsage = 2 };
 

@@ -2,6 +2,9 @@
 #include "command.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <map>
@@ -39,6 +42,19 @@ CLI::App* command_group(CLI::App& top, const std::string& name, const std::strin
   return group;
 }
 
+int standard_output_written() {
+  // Output that never reached its destination (`> /dev/full`, a closed pipe) is a failed run.
+  std::cout.flush();
+  errno = 0;
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    const int err = errno;
+    std::cerr << "fapcast: error: standard output: write failed"
+              << (err != 0 ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
+    return kBadInput;
+  }
+  return kOk;
+}
+
 std::vector<AddCommand> registered_commands() {
   std::vector<AddCommand> out;
   for (auto& [key, add] : registry()) out.push_back(add);
@@ -67,5 +83,5 @@ int main(int argc, char** argv) {
     std::cerr << "\n";
     return kBadInput;
   }
-  return kOk;
+  return standard_output_written();
 }

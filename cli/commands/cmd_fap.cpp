@@ -103,9 +103,12 @@ FapTextRead read_fba_file(const std::string& path, const std::string& bytes, Sou
   FapTextRead r;
   r.sequence = std::move(d.sequence);
   r.sequence.name = std::filesystem::path(path).stem().string();  // .fba carries no name
-  for (const auto& e : d.report.errors) r.info.warnings.push_back(path + ": " + e.message());
-  for (const auto& w : r.info.warnings) std::cerr << "fapcast: warning: " << w << "\n";
-  if (d.report.frames_decoded == 0 && !d.report.ok()) throw std::runtime_error(path + ": no frame could be decoded");
+  // A corrupt or truncated stream is bad input, not a summary with warnings: its first error.
+  if (!d.report.ok())
+    throw std::runtime_error(path + ": " + (d.report.errors.empty() ? std::string("fba: corrupt stream")
+                                                                    : d.report.errors.front().message()) +
+                             " (" + std::to_string(d.report.errors_total) + " errors, " +
+                             std::to_string(d.report.frames_lost) + " frames lost)");
   src = {"fba", "predictive", std::to_string(d.report.frames_lost) + " frames lost, " +
                                   std::to_string(d.report.bytes) + " bytes",
          d.report.frames_decoded + d.report.frames_lost + d.report.frames_skipped};
@@ -116,7 +119,11 @@ void info(const std::string& path, bool json) {
   const std::string bytes = read_file(path);
   SourceSummary src;
   FapTextRead r;
-  if (bytes.starts_with(std::string_view("\0\0\1\xBA", 4))) {
+  // An FBA stream by its start-code prefix or its extension (a corrupt first start code is still
+  // an FBA stream, reported as one, not as "not a text file").
+  const bool fba = bytes.starts_with(std::string_view("\0\0\1", 3)) ||
+                   std::filesystem::path(path).extension() == ".fba";
+  if (fba) {
     r = read_fba_file(path, bytes, src);
   } else {
     r = read_fap_text(bytes, path);

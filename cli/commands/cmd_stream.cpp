@@ -36,6 +36,11 @@ void run_stream(const StreamArgs& a) {
     throw cli::UsageError(a.input + ": expected a .fap, .fba or .json track");
   if (a.payload_type == a.audio_payload_type)
     throw cli::UsageError("--payload-type and --audio-payload-type must differ");
+  UdpUrl url;
+  if (const auto ec = parse_udp_url(a.to, url)) throw cli::UsageError(a.to + ": " + ec.message());
+  boost::system::error_code address_error;
+  if (!a.interface.empty()) (void)asio::ip::make_address(a.interface, address_error);
+  if (address_error) throw cli::UsageError("--interface " + a.interface + ": not an IP address");
   const FapSequence seq = read_track_file(a.input);
   std::unique_ptr<Audio> audio;
   if (!a.wav.empty()) audio = std::make_unique<Audio>(read_wav(a.wav));
@@ -57,6 +62,11 @@ void run_stream(const StreamArgs& a) {
   std::int64_t bad_frame = 0;
   if (const auto ec = encode_track_units(seq, options.clock_rate, fba, units, &bad_frame))
     throw std::runtime_error(a.input + ": frame " + std::to_string(bad_frame) + ": " + ec.message());
+  // The audio is the timeline: every frame must start within it (a cut-off or wrong WAV).
+  if (audio && !units.empty() && audio->instants() <= units.back().sample)
+    throw std::runtime_error(a.wav + ": stream-audio-short: " + std::to_string(audio->instants()) +
+                             " sampling instants end before the last frame of " + a.input +
+                             " starts (sample " + std::to_string(units.back().sample) + ")");
 
   asio::io_context io;
   const auto destination = resolve_udp_url(io, a.to);

@@ -192,6 +192,7 @@ class Parser {
     const Token tiers = expect(TokenKind::flag, "tiers?", "whether tiers exist");
     if (tiers.text == "exists") {
       const std::int64_t n = count("size =", "the number of tiers");
+      claim(n);
       for (std::int64_t i = 0; i < n; ++i) grid.tiers.push_back(tier(grid, i + 1));
     } else if (tiers.text != "absent") {
       fail(tiers.line, "textgrid-syntax", "flag <" + excerpt(tiers.text) + "> is neither <exists> nor <absent>");
@@ -223,6 +224,7 @@ class Parser {
     if (auto p = check_tier_span(grid, t)) fail(end.line, *p);
     if (t.kind == TierKind::intervals) {
       const std::int64_t n = count("intervals: size =", "the interval count of " + which);
+      claim(n);
       for (std::int64_t i = 0; i < n; ++i) {
         Interval v;
         v.start_s = number("xmin =", "an interval's xmin");
@@ -234,6 +236,7 @@ class Parser {
       }
     } else {
       const std::int64_t n = count("points: size =", "the point count of " + which);
+      claim(n);
       for (std::int64_t i = 0; i < n; ++i) {
         TimePoint p;
         p.time_s = number("number =", "a point's time");
@@ -291,17 +294,29 @@ class Parser {
     if (!parse_count(t.text, n)) {
       fail(t.line, "textgrid-bad-count", what + " \"" + excerpt(t.text) + "\" is not a count");
     }
+    count_line_ = t.line;
     return n;  // never used to allocate: items are appended as they are read
   }
 
   [[noreturn]] void fail(std::uint64_t line, const std::string& rule, const std::string& detail) {
     throw InputError({source_, line, std::nullopt}, rule, detail);
   }
+
+  // Tiers, intervals and points claimed so far, all tiers together, against the bound.
+  void claim(std::int64_t n) {
+    claimed_ += n;
+    if (n > kMaxAlignmentIntervals || claimed_ > kMaxAlignmentIntervals)
+      fail(count_line_, "alignment-too-many-intervals",
+           "the file claims " + std::to_string(claimed_) + " tiers, intervals and points, more than " +
+               std::to_string(kMaxAlignmentIntervals));
+  }
   [[noreturn]] void fail(std::uint64_t line, const Problem& p) { fail(line, p.rule, p.detail); }
 
   Tokenizer tokens_;
   const std::string& source_;
   std::optional<Token> pending_;
+  std::int64_t claimed_ = 0;
+  std::uint64_t count_line_ = 0;
   bool long_form_ = true;
 };
 

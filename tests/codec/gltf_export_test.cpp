@@ -222,6 +222,13 @@ TEST(GltfExport, ReadGlbNamesTheRuleBroken) {
   std::string json = glb;
   json[20] = '[';
   EXPECT_EQ(rule_of(json), "glb-syntax");
+  // Key times 1/1,310,000 s apart (the fuzzer's input of issue #17: it read as 1.31 MHz, wrote
+  // back other times and `render` took it): outside the 1..1000 fps a .glb may claim.
+  EXPECT_EQ(rule_of(write_glb(square(5, {1'310'000, 1}))), "gltf-frame-rate");
+  EXPECT_EQ(rule_of(write_glb(square(5, {1001, 1}))), "gltf-frame-rate");
+  // A rate at the bound reads back as itself; ten minutes at 1000 fps are past float key times.
+  EXPECT_EQ(read_glb(write_glb(square(5, {1000, 1})), "k.glb").rate, (FrameRate{1000, 1}));
+  EXPECT_EQ(rule_of(write_glb(square(600'000, {1000, 1}))), "gltf-key-times");
 }
 
 }  // namespace

@@ -88,10 +88,16 @@ TEST_P(LossyLoopback, RecoversAtTheNextIntraUnitAndCountsTheLoss) {
   std::set<int> got;
   for (const auto seq : shim.forwarded) got.insert(index_of(seq));
   ASSERT_FALSE(got.empty());
+  // The stream starts where the source was validated (two in sequence, RFC 3550 A.1); what was
+  // forwarded before that is discarded on probation or late.
+  ASSERT_TRUE(rx.stream.first_sequence());
+  const int start = index_of(static_cast<std::uint16_t>(*rx.stream.first_sequence()));
+  std::uint64_t before_start = 0;
+  for (const int i : got) before_start += i < start;
   std::vector<int> expected;
   std::uint64_t expected_lost = 0;
   bool need_intra = true;
-  for (int i = *got.begin(); i <= *got.rbegin(); ++i) {
+  for (int i = start; i <= *got.rbegin(); ++i) {
     if (!got.contains(i)) {
       ++expected_lost;
       need_intra = true;
@@ -112,8 +118,8 @@ TEST_P(LossyLoopback, RecoversAtTheNextIntraUnitAndCountsTheLoss) {
   const ReceiverStats& s = rx.stream.stats();
   EXPECT_EQ(delivered, expected) << s << "\n  reproduce: FAPCAST_SEED=" << seed;
   EXPECT_EQ(s.lost, expected_lost) << s;
-  EXPECT_EQ(s.duplicates, shim.duplicates_sent) << s;
-  EXPECT_EQ(s.late, 0u) << s;
+  EXPECT_LE(s.duplicates, shim.duplicates_sent) << s;  // a duplicate of a discarded one is late
+  EXPECT_LE(s.late, before_start + shim.duplicates_sent) << s;
   EXPECT_GT(shim.dropped, 0u);
   std::cerr << "[loss] " << c.name << ": dropped " << shim.dropped << ", swapped " << shim.swaps
             << ", duplicated " << shim.duplicates_sent << "; receiver: " << s << "\n";
@@ -191,7 +197,7 @@ TEST(Loopback, HostileDatagramsDoNotDisturbTheStream) {
   const ReceiverStats& s = rx.stream.stats();
   EXPECT_EQ(rx.units.size(), units.size()) << s;
   EXPECT_EQ(s.malformed, sent_hostile) << s;
-  EXPECT_EQ(s.foreign_ssrc, foreign) << s;
+  EXPECT_EQ(s.foreign_ssrc + s.probation_discarded, foreign) << s;  // the first one is on probation
   EXPECT_EQ(s.lost, 0u);
 }
 

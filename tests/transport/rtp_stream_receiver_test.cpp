@@ -116,8 +116,11 @@ TEST(RtpStreamReceiver, AGapIsHeldNoLongerThanTheBufferAllows) {
 TEST(RtpStreamReceiver, LocksOnOneSourceAndOnePayloadType) {
   Feed f;
   EXPECT_FALSE(f.offer(packet(0, true)));
-  EXPECT_EQ(f.offer(packet(1, true, kSsrc + 1)), make_error_code(RtpErrc::kForeignSsrc));
-  EXPECT_EQ(f.offer(packet(1, true, kSsrc, 97)), make_error_code(RtpErrc::kWrongPayloadType));
+  EXPECT_FALSE(f.rx.locked_ssrc());  // one packet is no run (RFC 3550 A.1 MIN_SEQUENTIAL 2)
+  EXPECT_FALSE(f.offer(packet(1, false)));
+  EXPECT_EQ(f.rx.locked_ssrc(), kSsrc);
+  EXPECT_EQ(f.offer(packet(2, true, kSsrc + 1)), make_error_code(RtpErrc::kForeignSsrc));
+  EXPECT_EQ(f.offer(packet(2, true, kSsrc, 97)), make_error_code(RtpErrc::kWrongPayloadType));
   EXPECT_EQ(f.rx.locked_ssrc(), kSsrc);
   ReceiverOptions given;
   given.ssrc = 42;
@@ -179,7 +182,7 @@ TEST(RtpStreamReceiver, HostileDatagramsAreBoundedAndCounted) {
   const ReceiverStats& s = f.rx.stats();
   EXPECT_EQ(s.datagrams, 50000u);
   EXPECT_EQ(s.datagrams, s.accepted + s.late + s.duplicates + s.malformed + s.foreign_ssrc +
-                             s.wrong_payload_type + s.sequence_jumps);
+                             s.wrong_payload_type + s.sequence_jumps + s.probation_discarded);
   EXPECT_EQ(f.rx.held_packets(), 0u);
 }
 

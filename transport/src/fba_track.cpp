@@ -3,6 +3,7 @@
 #include "fapcast/core/frame_rate.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fapcast {
 namespace {
@@ -37,8 +38,46 @@ std::error_code encode_track_units(const FapSequence& seq, std::int64_t clock_ra
   return {};
 }
 
-ReceivedTrack::ReceivedTrack(std::int64_t clock_rate, std::int64_t max_frames)
-    : clock_rate_(std::max<std::int64_t>(1, clock_rate)), max_frames_(std::max<std::int64_t>(1, max_frames)) {}
+bool FbaUnitValidator::decodes(const ReceivedUnit& unit) {
+  if (unit.bytes.empty() || (decoder_.needs_intra() && !unit.intra)) return false;
+  if (decoder_.decode(unit.bytes, frame_)) {
+    decoder_.reset();
+    return false;
+  }
+  return true;
+}
+
+std::unique_ptr<UnitValidator> make_fba_unit_validator() {
+  return std::make_unique<FbaUnitValidator>();
+}
+
+ReceivedTrack::ReceivedTrack(std::int64_t clock_rate, double max_seconds)
+    : clock_rate_(std::max<std::int64_t>(1, clock_rate)), max_seconds_(std::max(0.0, max_seconds)) {}
+
+std::int64_t ReceivedTrack::frames_in(std::int64_t samples) const {
+  return nearest_frame(samples, seq_.rate, clock_rate_);
+}
+
+std::int64_t ReceivedTrack::max_gap() const {
+  return static_cast<std::int64_t>(seq_.rate.fps() * kMaxFilledGapSeconds);
+}
+
+bool ReceivedTrack::full() const {
+  return anchored_ && static_cast<std::int64_t>(seq_.frames.size()) >= max_frames_;
+}
+
+void ReceivedTrack::append(const FapFrame& frame, std::int64_t index) {
+  for (std::int64_t i = last_index_ + 1; i < index && !full(); ++i) {
+    seq_.frames.push_back(seq_.frames.back());
+    ++stats_.held_frames;
+  }
+  last_index_ = index;
+  if (full()) {
+    ++stats_.over_limit;
+    return;
+  }
+  seq_.frames.push_back(frame);
+}
 
 std::error_code ReceivedTrack::add(const ReceivedUnit& unit) {
   if (unit.after_loss) decoder_.reset();  // prediction across a gap would be wrong
@@ -48,40 +87,83 @@ std::error_code ReceivedTrack::add(const ReceivedUnit& unit) {
     return ec;
   }
   ++stats_.decoded;
-  const FrameRate rate = decoder_.rate();
-  if (!last_timestamp_) {
-    seq_.rate = rate;
-    seq_.frames.push_back(frame);
+  if (!anchored_) {
+    // The first decoded unit is an intra one (the decoder refuses P units before it), and its
+    // frame_number is the sender's index of this frame: the frames before it were lost.
+    seq_.rate = decoder_.rate();
+    max_frames_ = std::max<std::int64_t>(
+        1, static_cast<std::int64_t>(std::floor(max_seconds_ * seq_.rate.fps() + 1e-9)));
+    const std::int64_t number = std::max(0, decoder_.last_frame_number());
+    const std::int64_t lead = number <= max_gap() ? number : 0;  // a late joiner starts at its join
+    stats_.first_sender_frame = number - lead;
+    anchored_ = true;
     last_timestamp_ = unit.timestamp;
-    last_frame_ = 0;
-    return {};
-  }
-  // Unwrap the 32-bit timestamp: the signed difference to the previous unit.
-  const auto step = static_cast<std::int32_t>(unit.timestamp - *last_timestamp_);
-  const std::int64_t frame_index = nearest_frame(position_ + step, seq_.rate, clock_rate_);
-  if (step <= 0 || frame_index <= last_frame_) {
-    ++stats_.out_of_order;
-    return {};
-  }
-  last_timestamp_ = unit.timestamp;
-  position_ += step;
-  const std::int64_t gap = frame_index - last_frame_ - 1;
-  const std::int64_t max_gap = static_cast<std::int64_t>(seq_.rate.fps() * kMaxFilledGapSeconds);
-  if (gap > max_gap) {
-    ++stats_.discontinuities;
-  } else {
-    for (std::int64_t i = 0; i < gap && static_cast<std::int64_t>(seq_.frames.size()) < max_frames_; ++i) {
-      seq_.frames.push_back(seq_.frames.back());
-      ++stats_.held_frames;
+    position_ = 0;
+    anchor_index_ = lead;
+    for (std::int64_t i = 0; i < lead && !full(); ++i) {
+      seq_.frames.push_back(frame);
+      ++stats_.leading_frames;
     }
+    last_index_ = lead - 1;
+    append(frame, lead);
+    return {};
   }
-  last_frame_ = frame_index;
-  if (static_cast<std::int64_t>(seq_.frames.size()) >= max_frames_) {
+  if (full()) {
     ++stats_.over_limit;
     return {};
   }
-  seq_.frames.push_back(frame);
+  // Unwrap the 32-bit timestamp: the signed difference to the last placed unit.
+  const auto step = static_cast<std::int32_t>(unit.timestamp - last_timestamp_);
+  const std::int64_t index = anchor_index_ + frames_in(position_ + step);
+  if (step > 0 && index > last_index_ && index - last_index_ - 1 <= max_gap()) {
+    if (jump_) {  // the unit before jumped and this one did not follow it
+      ++stats_.timestamp_jumps;
+      jump_.reset();
+    }
+    if (unit.intra && decoder_.last_frame_number() >= 0 &&
+        ((stats_.first_sender_frame + index) & 0xffff) != decoder_.last_frame_number())
+      ++stats_.frame_number_mismatches;
+    last_timestamp_ = unit.timestamp;
+    position_ += step;
+    append(frame, index);
+    return {};
+  }
+  if (jump_) {
+    const auto from_jump = static_cast<std::int32_t>(unit.timestamp - jump_->timestamp);
+    const std::int64_t after = frames_in(from_jump);
+    if (from_jump > 0 && after >= 1 && after - 1 <= max_gap()) {
+      // Two units agree: the sender's timeline jumped. Its frames go on after the last one.
+      ++stats_.discontinuities;
+      anchor_index_ = last_index_ + 1;
+      last_timestamp_ = jump_->timestamp;
+      position_ = 0;
+      append(jump_->frame, anchor_index_);
+      jump_.reset();
+      last_timestamp_ = unit.timestamp;
+      position_ = from_jump;
+      append(frame, anchor_index_ + after);
+      return {};
+    }
+    ++stats_.timestamp_jumps;
+  }
+  jump_ = Pending{unit.timestamp, frame};
   return {};
+}
+
+void ReceivedTrack::finish(std::optional<std::uint32_t> sender_packets) {
+  if (jump_) {
+    ++stats_.timestamp_jumps;
+    jump_.reset();
+  }
+  if (!anchored_ || !sender_packets || stats_.discontinuities > 0) return;
+  const std::int64_t target = static_cast<std::int64_t>(*sender_packets) - stats_.first_sender_frame;
+  const std::int64_t missing = target - (last_index_ + 1);
+  if (missing <= 0 || missing > max_gap()) return;
+  for (std::int64_t i = 0; i < missing && !full(); ++i) {
+    seq_.frames.push_back(seq_.frames.back());
+    ++stats_.trailing_frames;
+  }
+  last_index_ += missing;
 }
 
 }  // namespace fapcast

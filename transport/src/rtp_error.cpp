@@ -24,6 +24,8 @@ class RtpCategory final : public std::error_category {
       case RtpErrc::kPayloadTooLarge: return "rtp-too-large: does not fit in one datagram";
       case RtpErrc::kBadRtcp: return "rtcp-malformed: not a well-formed RTCP sender report";
       case RtpErrc::kBadEndpoint: return "udp-url: expected udp://HOST:PORT";
+      case RtpErrc::kUndecodable: return "rtp-probation-undecodable: a unit of a source on probation does not decode";
+      case RtpErrc::kOutOfRun: return "rtp-probation-sequence: not in sequence with the source's probation run";
     }
     return "rtp: unknown error " + std::to_string(value);
   }

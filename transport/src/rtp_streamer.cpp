@@ -1,6 +1,7 @@
 #include "fapcast/transport/rtp_streamer.hpp"
 
 #include "fapcast/transport/fba_payload.hpp"
+#include "fapcast/transport/rtcp_compound.hpp"
 #include "fapcast/transport/l16.hpp"
 #include "fapcast/transport/rtp_error.hpp"
 #include "fapcast/transport/timeline.hpp"
@@ -10,6 +11,9 @@
 
 namespace fapcast {
 namespace {
+constexpr int kClosingReports = 3;
+constexpr std::chrono::milliseconds kClosingGap{10};
+
 udp::endpoint offset_port(udp::endpoint e, int offset) {
   return {e.address(), static_cast<std::uint16_t>(e.port() + offset)};
 }
@@ -94,7 +98,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
   std::size_t audio_index = 0;
   std::int64_t next_report = 0;
 
-  const auto send_reports = [&](std::int64_t s) {
+  const auto send_reports = [&](std::int64_t s, bool bye) {
     const NtpTimestamp ntp = to_ntp(wall_start + std::chrono::duration_cast<
                                                      std::chrono::system_clock::duration>(media_time(s)));
     packet.clear();
@@ -102,6 +106,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
                         report.animation.packets, report.animation.payload_octets},
                        packet);
     pack_sdes_cname(options_.animation_ids.ssrc, options_.cname, packet);
+    if (bye) pack_bye(options_.animation_ids.ssrc, packet);
     animation_rtcp_.send(packet, ec);
     if (!ec) ++report.animation.sender_reports;
     if (audio && !ec) {
@@ -110,6 +115,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
                           report.audio.packets, report.audio.payload_octets},
                          packet);
       pack_sdes_cname(options_.audio_ids.ssrc, options_.cname, packet);
+      if (bye) pack_bye(options_.audio_ids.ssrc, packet);
       audio_rtcp_->send(packet, ec);
       if (!ec) ++report.audio.sender_reports;
     }
@@ -136,7 +142,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
       }
     }
     if (at == report_at) {
-      send_reports(at);
+      send_reports(at, false);
       next_report += rtcp_step;
     } else if (at == unit_at) {
       packet.clear();
@@ -172,11 +178,20 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
     }
     if (ec) return report;
   }
-  // A closing report so that a receiver has counts for the whole stream.
+  // A closing report with BYE (RFC 3550 6.6) so that a receiver has counts for the whole stream
+  // and knows it ended; sent kClosingReports times, kClosingGap apart when paced, since one lost
+  // datagram would otherwise cost the receiver the stream's last frames and its end.
   if (rtcp_step > 0) {
     const std::int64_t end_sample =
         std::max(audio_instants, animation.empty() ? 0 : animation.back().sample);
-    send_reports(end_sample);
+    for (int i = 0; i < kClosingReports && !ec; ++i) {
+      if (i > 0 && options_.pace) {
+        timer.expires_after(kClosingGap);
+        boost::system::error_code wait_error;
+        timer.wait(wait_error);
+      }
+      send_reports(end_sample, true);
+    }
   }
   return report;
 }

@@ -41,19 +41,17 @@ FapSequence read_track_file(const std::filesystem::path& path) {
   throw std::logic_error("unreachable");
 }
 
-void write_track_file(const std::filesystem::path& path, const FapSequence& seq,
-                      std::optional<std::int64_t> sample_rate) {
+std::string track_file_bytes(const std::filesystem::path& path, const FapSequence& seq,
+                             std::optional<std::int64_t> sample_rate) {
   const auto format = track_format_of(path);
   if (!format) throw std::runtime_error(path.string() + ": track-format: expected .fap, .fba or .json");
   switch (*format) {
     case TrackFormat::kFapText:
-      write_file_atomically(path, write_fap_text(seq));
-      return;
+      return write_fap_text(seq);
     case TrackFormat::kJson: {
       FapJsonOptions options;
       options.sample_rate = sample_rate;
-      write_file_atomically(path, write_fap_json(seq, options));
-      return;
+      return write_fap_json(seq, options);
     }
     case TrackFormat::kFba: {
       // fap_quant 0 is lossless but has a narrower codable range; values it refuses were received
@@ -69,10 +67,16 @@ void write_track_file(const std::filesystem::path& path, const FapSequence& seq,
         options.choose_predictors = false;
         bytes = encode_fba(seq, options);
       }
-      write_file_atomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
-      return;
+      return {reinterpret_cast<const char*>(bytes.data()), bytes.size()};
     }
   }
+  throw std::logic_error("unreachable");
+}
+
+void write_track_file(const std::filesystem::path& path, const FapSequence& seq,
+                      std::optional<std::int64_t> sample_rate) {
+  const std::string bytes = track_file_bytes(path, seq, sample_rate);
+  write_file_atomically(path, bytes);
 }
 
 }  // namespace fapcast

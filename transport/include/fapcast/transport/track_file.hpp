@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 namespace fapcast {
 
@@ -18,6 +19,10 @@ std::optional<TrackFormat> track_format_of(const std::filesystem::path& path);
 // Reads a whole track. Throws (std::runtime_error, InputError) naming the file and the
 // rule broken; an .fba with any corrupt plane is refused with its first error.
 FapSequence read_track_file(const std::filesystem::path& path);
+
+// The bytes of `seq` in the format of the extension of `path` (which is not written).
+std::string track_file_bytes(const std::filesystem::path& path, const FapSequence& seq,
+                             std::optional<std::int64_t> sample_rate = std::nullopt);
 
 // Writes `seq` atomically in the format of the extension. `sample_rate` adds each frame's WAV
 // sample to JSON output. Throws std::runtime_error naming the file on failure.

@@ -77,7 +77,7 @@ MorphAnimation mesh_animation(const SynthesisArgs& args, const SpeechBasis& basi
                                      const std::string& name) {
   const FrameRate rate{static_cast<std::uint32_t>(Voice::kFramesPerSecond), 1};
   Eigen::MatrixXf weights = speech_weights(track.pca_frames, basis);
-  const auto shown = frames_shown(audio_samples, rate, track.timeline.sample_rate_hz);
+  const auto shown = frames_shown(audio_samples, rate, track.timeline.sample_rate);
   if (weights.rows() > shown) weights.conservativeResize(shown, Eigen::NoChange);
   const FaceModel& face = ict_face_model();
   if (basis.mean.cols() != 3 * static_cast<Eigen::Index>(face.vertex_count()))
@@ -90,7 +90,7 @@ MorphAnimation mesh_animation(const SynthesisArgs& args, const SpeechBasis& basi
 }  // namespace
 
 void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> phones,
-                        std::int64_t sample_rate_hz, std::int64_t audio_samples,
+                        SampleRate sample_rate, std::int64_t audio_samples,
                         const std::string& source, const std::string& name) {
   const Voice voice = open_voice_or_default(args.voice, args.quiet);
   const std::string voice_name = args.voice.empty() ? std::string("the default voice") : args.voice;
@@ -103,7 +103,7 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
   options.concatenation.join_mid_phone = !args.boundary_joins;
   const auto start = std::chrono::steady_clock::now();
   SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones,
-                                                    sample_rate_hz, audio_samples, options, source);
+                                                    sample_rate, audio_samples, options, source);
   std::size_t frames = 0;
   int fps = args.fps;
   double seconds = 0;
@@ -126,11 +126,11 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
     track.pca_frames = speech_weights(track.pca_frames, speech);
     const FapSequence seq = fap_track(track, basis, animation, audio_samples);
     seconds = elapsed();
-    write_animation(args.output, seq, sample_rate_hz, basis.neutral);
+    write_animation(args.output, seq, sample_rate, basis.neutral);
     frames = seq.frames.size();
   }
   std::cout << args.output << ": " << frames << " frames at " << fps << " fps ("
-            << static_cast<double>(audio_samples) / static_cast<double>(sample_rate_hz) << " s), "
+            << static_cast<double>(audio_samples) / static_cast<double>(sample_rate.hz) << " s), "
             << track.timeline.phones.size() << " phones in " << track.search.units.size()
             << " units, synthesised in " << seconds * 1000.0 << " ms";
   if (args.expression) std::cout << ", expression " << expression_blend_text(*args.expression);

@@ -39,11 +39,11 @@ struct SynthesisArgs {
 CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const std::string& description,
                                 SynthesisArgs& args, std::function<void()> run);
 
-// Synthesises `phones` (at `sample_rate_hz`, audio of `audio_samples`) on the voice and writes
+// Synthesises `phones` (at `sample_rate`, audio of `audio_samples`) on the voice and writes
 // args.output (FAPs, or a .glb of the PCA frames); prints a one-line summary. `source` names the
 // phones in errors.
 void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> phones,
-                        std::int64_t sample_rate_hz, std::int64_t audio_samples,
+                        SampleRate sample_rate, std::int64_t audio_samples,
                         const std::string& source, const std::string& name);
 
 }  // namespace fapcast::cli

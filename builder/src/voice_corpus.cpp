@@ -25,6 +25,9 @@ namespace fapcast {
 namespace fs = std::filesystem;
 namespace {
 
+// The 60 fps capture grid as a clock: to_sample at it gives frame numbers.
+constexpr SampleRate kVoiceFrameClock{kVoiceFramesPerSecond};
+
 [[noreturn]] void refuse(const fs::path& file, const std::string& rule, const std::string& detail) {
   throw InputError({file.string(), std::nullopt, std::nullopt}, rule, detail);
 }
@@ -311,7 +314,7 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
                                                            " (label it so, or map a label to it in manifest.json's marker_map)");
 
   const AlignedPhones aligned_phones = read_alignment(u.alignment);
-  const std::int64_t aligned = to_sample(aligned_phones.end_s, kVoiceFramesPerSecond);
+  const std::int64_t aligned = to_sample(aligned_phones.end_s, kVoiceFrameClock);
   if (std::llabs(aligned - frames) > kMaxLengthMismatchFrames)
     refuse(u.alignment, "corpus-length", "the alignment ends at frame " + std::to_string(aligned) + " (" +
                                              std::to_string(aligned_phones.end_s) + " s), " + u.markers.filename().string() +
@@ -328,7 +331,7 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
       refuse(u.alignment, "corpus-alignment", "phones interval " + std::to_string(i + 1) + ": " + what);
     }
     const Phone p = *phone;
-    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(to_sample(t, kVoiceFramesPerSecond), 0, frames); };
+    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(to_sample(t, kVoiceFrameClock), 0, frames); };
     const std::int64_t first = clamp(iv.start_s);
     const std::int64_t end = clamp(iv.end_s);
     if (end <= first) continue;

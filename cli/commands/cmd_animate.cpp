@@ -50,13 +50,13 @@ const cli::Registration reg{"21-animate", [](CLI::App& app) {
         if (tier == nullptr || tier->intervals.empty())
           throw std::runtime_error(args->align + ": no-phone-tier: the alignment has no phone intervals");
         const auto samples = static_cast<std::int64_t>(audio.samples.size());
-        auto phones = phones_from_tier(*tier, audio.sample_rate_hz, args->align);
+        auto phones = phones_from_tier(*tier, audio.sample_rate, args->align);
         if (!phones.empty() && phones.back().end_sample < samples && !args->synthesis.quiet)
           std::cerr << "fapcast: warning: " << args->align << " ends before " << args->wav
                     << "; the rest is animated as silence\n";
         phones = fit_phones_to_audio(std::move(phones), samples,
-                                            kToleranceMs * audio.sample_rate_hz / 1000, args->align);
-        cli::synthesize_to_file(args->synthesis, phones, audio.sample_rate_hz, samples, args->align,
+                                            kToleranceMs * audio.sample_rate.hz / 1000, args->align);
+        cli::synthesize_to_file(args->synthesis, phones, audio.sample_rate, samples, args->align,
                                   "fapcast animate");
       });
   cmd->add_option("--wav", args->wav, "The speech (mono WAV): the timeline")->required();

@@ -28,7 +28,7 @@ using namespace fapcast;
 NamedSystem variable_length_system(const Voice& voice, SynthesisOptions options) {
   return {"variable-length", [&voice, options](const HeldOutUtterance& u) {
             const auto track = synthesize(voice.graph(), voice.frame_coefficients(), u.speech.phones,
-                                                 u.speech.audio.sample_rate_hz,
+                                                 u.speech.audio.sample_rate,
                                                  static_cast<std::int64_t>(u.speech.audio.samples.size()), options, u.id);
             return SystemOutput{track.pca_frames, track.search.units.size()};
           }};

@@ -62,7 +62,7 @@ const cli::Registration reg{"60-export", [](CLI::App& app) {
     } else {
       FapJsonOptions options = track.options;
       options.generator = std::string("fapcast ") + FAPCAST_VERSION;
-      if (rate_opt->count() > 0) options.sample_rate = *sample_rate;
+      if (rate_opt->count() > 0) options.sample_rate = SampleRate{*sample_rate};
       bytes = write_fap_json(track.sequence, options);
     }
     write_file_atomically(*out, bytes);

@@ -23,7 +23,7 @@ struct RecvArgs {
   std::string interface;
   std::int64_t ssrc = -1;
   int payload_type = kDefaultFbaPayloadType;
-  std::int64_t clock_rate = kDefaultSampleRate;
+  std::int64_t clock_rate = kDefaultSampleRate.hz;
   int reorder_ms = 40;
   double max_seconds = 3600;
 };
@@ -40,10 +40,10 @@ void run_recv(const RecvArgs& a) {
   ReceiverOptions options;
   options.payload_type = static_cast<std::uint8_t>(a.payload_type);
   if (a.ssrc >= 0) options.ssrc = static_cast<std::uint32_t>(a.ssrc);
-  options.clock_rate = a.clock_rate;
+  options.clock_rate = SampleRate{a.clock_rate};
   options.reorder_delay = std::chrono::milliseconds(a.reorder_ms);
   RtpStreamReceiver stream(options);
-  ReceivedTrack track(a.clock_rate, static_cast<std::int64_t>(a.max_seconds * 120) + 1);
+  ReceivedTrack track(SampleRate{a.clock_rate}, static_cast<std::int64_t>(a.max_seconds * 120) + 1);
 
   ReceiveLimits limits;
   limits.idle_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(a.timeout_seconds * 1000));
@@ -64,7 +64,7 @@ void run_recv(const RecvArgs& a) {
             << t.held_frames << " held over gaps, " << t.decode_errors << " decode errors)\n";
   if (track.sequence().frames.empty())
     throw std::runtime_error(a.url + ": no decodable frames arrived before the timeout");
-  write_track_file(a.output, track.sequence(), a.clock_rate);
+  write_track_file(a.output, track.sequence(), SampleRate{a.clock_rate});
 }
 
 const cli::Registration reg{"61-recv", [](CLI::App& app) {

@@ -30,7 +30,7 @@ const cli::Registration reg{"20-say", [](CLI::App& app) {
         if (wav.empty() && cli::is_mesh_output(args->synthesis.output))
           wav = std::filesystem::path(args->synthesis.output).replace_extension(".wav").string();
         if (!wav.empty()) write_wav(wav, speech.audio);
-        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate_hz,
+        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate,
                                   static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");
       });
   cmd->add_option("TEXT", args->text, "The text (UTF-8)")->required();

@@ -42,7 +42,7 @@ void run_stream(const StreamArgs& a) {
 
   StreamOptions options;
   options.pace = !a.no_pace;
-  options.clock_rate = audio ? audio->sample_rate_hz : kDefaultSampleRate;
+  options.clock_rate = audio ? audio->sample_rate : kDefaultSampleRate;
   options.animation_payload_type = static_cast<std::uint8_t>(a.payload_type);
   options.audio_payload_type = static_cast<std::uint8_t>(a.audio_payload_type);
   options.rtcp_interval = std::chrono::milliseconds(a.rtcp_ms);
@@ -64,11 +64,11 @@ void run_stream(const StreamArgs& a) {
   const StreamReport r = streamer.run(units, audio.get());
   std::cout << "animation: " << r.animation.packets << " packets, " << r.animation.payload_octets
             << " payload octets, ssrc " << options.animation_ids.ssrc << ", pt "
-            << a.payload_type << ", clock " << options.clock_rate << " Hz\n";
+            << a.payload_type << ", clock " << options.clock_rate.hz << " Hz\n";
   if (audio)
     std::cout << "audio:     " << r.audio.packets << " packets, " << r.audio.payload_octets
               << " payload octets, ssrc " << options.audio_ids.ssrc << ", pt "
-              << a.audio_payload_type << " (L16/" << audio->sample_rate_hz << "/" << audio->channels
+              << a.audio_payload_type << " (L16/" << audio->sample_rate.hz << "/" << audio->channels
               << ")\n";
   std::cout << "rtcp:      " << r.animation.sender_reports + r.audio.sender_reports
             << " sender reports\n";

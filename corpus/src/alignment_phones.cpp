@@ -43,7 +43,7 @@ const LabelTier* phone_tier(const Alignment& alignment) {
   return first;
 }
 
-std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, std::int64_t sample_rate_hz,
+std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, SampleRate sample_rate,
                                          const std::string& source) {
   std::vector<TimedPhone> out;
   bool previous_closure = false;
@@ -51,8 +51,8 @@ std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, std::int64_t sam
     const Interval& in = tier.intervals[i];
     const std::string where = source + ": tier '" + tier.name + "' interval " + std::to_string(i + 1);
     const TimitPhone p = parse_label(in.label, where);
-    const std::int64_t start = to_sample(in.start_s, sample_rate_hz);
-    const std::int64_t end = to_sample(in.end_s, sample_rate_hz);
+    const std::int64_t start = to_sample(in.start_s, sample_rate);
+    const std::int64_t end = to_sample(in.end_s, sample_rate);
     if (previous_closure && !p.closure && out.back().phone == p.phone && out.back().end_sample == start) {
       out.back().end_sample = end;  // closure + release: one phone
     } else {

@@ -60,7 +60,7 @@ std::string take(const std::string& ext) { return SayCli::take(ext); }
 std::int64_t frames_for(const Audio& a, std::uint32_t fps) {
   const auto n = static_cast<std::int64_t>(a.samples.size());
   std::int64_t j = 0;
-  while (frame_to_sample(j, {fps, 1}, a.sample_rate_hz) < n) ++j;
+  while (frame_to_sample(j, {fps, 1}, a.sample_rate) < n) ++j;
   return j;
 }
 
@@ -175,12 +175,12 @@ void BadInputExitsOneAndNamesIt() {
 SynthesizedTrack library_track(const Voice& v, const Audio& audio) {
   const Alignment a = read_textgrid(read_file(take("TextGrid")), take("TextGrid"));
   const auto samples = static_cast<std::int64_t>(audio.samples.size());
-  const auto phones = fit_phones_to_audio(phones_from_tier(*phone_tier(a), audio.sample_rate_hz, "t"),
-                                                 samples, audio.sample_rate_hz / 50, "t");
+  const auto phones = fit_phones_to_audio(phones_from_tier(*phone_tier(a), audio.sample_rate, "t"),
+                                                 samples, audio.sample_rate.hz / 50, "t");
   SynthesisOptions options;
   options.search.beta = 0.1;
   options.search.max_active = 64;
-  return synthesize(v.graph(), v.frame_coefficients(), phones, audio.sample_rate_hz, samples, options, "t");
+  return synthesize(v.graph(), v.frame_coefficients(), phones, audio.sample_rate, samples, options, "t");
 }
 
 double mean_fap(const FapSequence& seq, int fap) {

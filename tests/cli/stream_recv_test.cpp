@@ -53,7 +53,7 @@ TEST_P(StreamRecv, TheReceivedTrackEqualsTheSentOne) {
   FbaEncoderOptions o;
   o.intra_period = 10;
   std::vector<MediaUnit> units;
-  ASSERT_FALSE(encode_track_units(sent, 48000, o, units));
+  ASSERT_FALSE(encode_track_units(sent, SampleRate{48000}, o, units));
   FbaFrameDecoder decoder;
   std::vector<FapFrame> expected(units.size());
   for (std::size_t k = 0; k < units.size(); ++k) ASSERT_FALSE(decoder.decode(units[k].bytes, expected[k]));

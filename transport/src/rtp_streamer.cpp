@@ -71,13 +71,13 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
   using Clock = std::chrono::steady_clock;
   ec.clear();
   StreamReport report;
-  const std::int64_t clock = std::max<std::int64_t>(1, options_.clock_rate);
+  const std::int64_t clock = std::max<std::int64_t>(1, options_.clock_rate.hz);
   if (audio && !audio_rtp_) {
     audio_rtp_.emplace(io_, offset_port(destination_, 2), options_.socket);
     audio_rtcp_.emplace(io_, offset_port(destination_, 3), options_.socket);
   }
   const std::size_t audio_step =
-      audio ? l16_frames_per_packet(audio->sample_rate_hz, audio->channels) : 1;
+      audio ? l16_frames_per_packet(audio->sample_rate, audio->channels) : 1;
   const std::int64_t audio_instants = audio ? audio->instants() : 0;
   const std::int64_t rtcp_step =
       options_.rtcp_interval.count() > 0 ? clock * options_.rtcp_interval.count() / 1000 : 0;
@@ -86,7 +86,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
   // and reported as wallclock wall_start + s/clock, the same instant for both streams.
   const Clock::time_point start = Clock::now();
   const auto wall_start = std::chrono::system_clock::now();
-  const auto media_time = [clock](std::int64_t s) { return samples_to_duration(s, clock); };
+  const auto media_time = [clock](std::int64_t s) { return samples_to_duration(s, SampleRate{clock}); };
   asio::steady_timer timer(io_);
   std::vector<std::uint8_t> packet;
   std::size_t next_unit = 0;

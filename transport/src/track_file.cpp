@@ -42,7 +42,7 @@ FapSequence read_track_file(const std::filesystem::path& path) {
 }
 
 void write_track_file(const std::filesystem::path& path, const FapSequence& seq,
-                      std::optional<std::int64_t> sample_rate) {
+                      std::optional<SampleRate> sample_rate) {
   const auto format = track_format_of(path);
   if (!format) throw std::runtime_error(path.string() + ": track-format: expected .fap, .fba or .json");
   switch (*format) {

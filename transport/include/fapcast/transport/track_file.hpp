@@ -1,6 +1,7 @@
 #pragma once
 // FAP tracks in files, chosen by extension: .fap (text, spec/fap-text.md), .fba (bitstream,
 // spec/fba.md) and .json (spec/json.md). Reads are size-limited, writes atomic.
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 
@@ -22,6 +23,6 @@ FapSequence read_track_file(const std::filesystem::path& path);
 // Writes `seq` atomically in the format of the extension. `sample_rate` adds each frame's WAV
 // sample to JSON output. Throws std::runtime_error naming the file on failure.
 void write_track_file(const std::filesystem::path& path, const FapSequence& seq,
-                      std::optional<std::int64_t> sample_rate = std::nullopt);
+                      std::optional<SampleRate> sample_rate = std::nullopt);
 
 }  // namespace fapcast

@@ -21,7 +21,7 @@ inline std::uint64_t fba_seed(std::uint64_t fallback = 20261122) {
 // What to run to see a random failure again.
 inline std::string reproduce(std::uint64_t seed, const std::string& filter) {
   return "reproduce: FAPCAST_SEED=" + std::to_string(seed) +
-         " build/dev/tests/fapcast_codec_tests --gtest_filter='" + filter + "'";
+         " build/dev/tests/fapcast_fba_tests --gtest_filter='" + filter + "'";
 }
 
 // A smooth random walk per masked FAP (a low-passed random walk), values within +/-limit.

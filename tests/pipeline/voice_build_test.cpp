@@ -343,7 +343,7 @@ TEST(VoiceCorpusBadCorpora, AreRefusedWithTheGoldenMessages) {
   }
   if (regenerate) {
     std::ofstream(root / "EXPECTED.txt") << "# Golden refusals of the named bad corpora (regenerate: FAPCAST_REGENERATE=1 "
-                                            "fapcast_synth_tests --gtest_filter=*BadCorpora*)\n"
+                                            "fapcast_pipeline_tests --gtest_filter=*BadCorpora*)\n"
                                          << regenerated;
   }
   EXPECT_EQ(golden.size(), names.size());

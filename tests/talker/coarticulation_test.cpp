@@ -120,7 +120,7 @@ TEST(Coarticulation, TongueAndJawFollowThePhones) {
 TEST(Coarticulation, RandomUtterancesAreContinuousAndInRange) {
   const auto seed = test::test_seed();
   SCOPED_TRACE("reproduce: FAPCAST_SEED=" + std::to_string(seed) +
-               " fapcast_synth_tests --gtest_filter='Coarticulation.*'");
+               " fapcast_talker_tests --gtest_filter='Coarticulation.*'");
   PortableRandom random(seed);
   const auto phones = articulation_phones();
   const ShapeMapper mapper(ict_face_model());

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The main job (README, first command). Installs what is missing, builds `fapcast`, and runs
+# The main job (README, first command). Installs what running needs (tools/setup.sh without
+# --tests: no compiler for fuzzing, no Blender, Node or tshark), builds `fapcast`, and runs
 # `fapcast say` with the default voice (built from the SYNTHETIC reference corpus on first use and
 # cached), then (1) converts a real Xface .fap sample through every format fapcast writes
 # (strict .fap, FBA bitstream and back, BVH, JSON) and (2) records a small SYNTHETIC reference

@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/build.sh
-fapcast=build/release/tools/fapcast
+fapcast=build/release/cli/fapcast
 mkdir -p out
 "$fapcast" say "The quick brown fox jumps over the lazy dog." -o out/say.fap --wav out/say.wav --viseme
 "$fapcast" fap info out/say.fap

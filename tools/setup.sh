@@ -39,11 +39,12 @@ test_packages=(
   libgtest-dev          # GoogleTest suites
   libgmock-dev          # GTest::gmock, which the suites link
   libbenchmark-dev      # Google Benchmark programs (tests/bench, FAPCAST_BENCH=ON)
+  python3               # the layer check (tools/check-layers.py, CTest layers.check)
   nodejs                # runs three.js's GLTFLoader on fapcast's .glb (tests/viewer)
   libjs-three           # three.js r111 and its GLTFLoader (tests/viewer)
   blender               # the BVH export's cross-check by Blender's importer (tests/codec/bvh_blender_test)
   tshark                # dissects captured RTP/RTCP on loopback (tests/transport/loopback_test)
-  sox                   # writes WAV variants the reader must accept (tests/transport/wav_audio_test)
+  sox                   # writes WAV variants the reader must accept (tests/core/wav_audio_test)
   xz-utils              # xz -9, the size baseline of the FBA benchmark (tests/bench/fba_bench)
   gzip                  # gzip -9, the other baseline there (Essential in Debian; listed for clarity)
 )

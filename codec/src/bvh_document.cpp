@@ -4,7 +4,7 @@
 #include <cctype>
 #include <numbers>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 constexpr std::array<std::string_view, 6> kChannelNames = {
     "Xposition", "Yposition", "Zposition", "Xrotation", "Yrotation", "Zrotation"};
@@ -87,4 +87,4 @@ std::vector<Eigen::Affine3d> joint_world_transforms(const BvhDocument& doc, std:
   return world;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -7,7 +7,7 @@
 #include <optional>
 #include <stdexcept>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 constexpr std::array<BvhRigPoint, 17> kRigPoints{{
@@ -112,4 +112,4 @@ BvhDocument fap_to_bvh(const FapSequence& seq, const FaceGeometry& face) {
   return doc;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -1,6 +1,6 @@
 #include "fapcast/codec/bvh_text.hpp"
 
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 #include <array>
 #include <cctype>
@@ -9,7 +9,7 @@
 #include <set>
 #include <stdexcept>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -341,4 +341,4 @@ std::string write_bvh(const BvhDocument& doc) {
   return out;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 const Eigen::Vector3d& FaceGeometry::at(FeaturePoint fp) const {
   const auto it = feature_points.find(fp);
@@ -84,4 +84,4 @@ FaceGeometry fit_generic_face(const FeaturePointPositions& neutral) {
   return face;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -1,6 +1,6 @@
 #include "fapcast/codec/fap_axis.hpp"
 
-namespace fapcast::codec {
+namespace fapcast {
 
 std::optional<Eigen::Vector3d> direction_axis(std::string_view direction) {
   if (direction == "up") return Eigen::Vector3d::UnitY();
@@ -13,4 +13,4 @@ std::optional<Eigen::Vector3d> direction_axis(std::string_view direction) {
 
 std::optional<Eigen::Vector3d> fap_axis(int number) { return direction_axis(fap_info(number).direction); }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -1,6 +1,6 @@
 #include "fapcast/codec/fap_frame.hpp"
 
-namespace fapcast::codec {
+namespace fapcast {
 
 std::ostream& operator<<(std::ostream& out, const FapMask& mask) {
   out << '{';
@@ -46,4 +46,4 @@ std::ostream& operator<<(std::ostream& out, const FapSequence& seq) {
   return out << '}';
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

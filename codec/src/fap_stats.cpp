@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 FapStats fap_stats(const FapSequence& seq) {
   FapStats s;
@@ -43,4 +43,4 @@ FapStats fap_stats(const FapSequence& seq) {
   return s;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

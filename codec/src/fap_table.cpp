@@ -2,7 +2,7 @@
 
 #include <cassert>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 // One row per FAP: number, name, FAPU, unidirectional, direction of positive values, group,
@@ -111,4 +111,4 @@ FapRange fap_group(int group) {
   return kGroups[static_cast<std::size_t>(group - 1)];
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -2,7 +2,7 @@
 // id thrown here is listed there.
 #include "fapcast/codec/fap_text.hpp"
 
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 #include <algorithm>
 #include <array>
@@ -14,7 +14,7 @@
 #include <stdexcept>
 #include <utility>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 constexpr int kMaskTokensStrict = kFapCount;       // 68
@@ -613,4 +613,4 @@ std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect) {
   return out;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

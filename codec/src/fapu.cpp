@@ -1,6 +1,6 @@
 #include "fapcast/codec/fapu.hpp"
 
-namespace fapcast::codec {
+namespace fapcast {
 
 std::string_view to_string(Fapu unit) {
   switch (unit) {
@@ -17,4 +17,4 @@ std::string_view to_string(Fapu unit) {
 
 std::ostream& operator<<(std::ostream& out, Fapu unit) { return out << to_string(unit); }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 double FapuValues::of(Fapu unit) const {
   switch (unit) {
@@ -45,4 +45,4 @@ FapuValues measure_fapu(const FeaturePointPositions& neutral) {
   return f;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 std::string FeaturePoint::label() const {
   return std::to_string(group) + "." + std::to_string(index);
@@ -27,4 +27,4 @@ std::optional<FeaturePoint> parse_feature_point(std::string_view label) {
   return FeaturePoint{static_cast<std::uint8_t>(*group), static_cast<std::uint8_t>(*index)};
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 std::optional<std::size_t> FeaturePointBasis::index_of(FeaturePoint fp) const {
   const auto it = std::find(points.begin(), points.end(), fp);
@@ -45,4 +45,4 @@ FeaturePointBasis restrict_basis(const Eigen::Ref<const RowMajorMatrixXf>& mean,
   return b;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -10,9 +10,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 // glTF enums (spec/gltf.md).
@@ -376,4 +376,4 @@ MorphAnimation read_glb(std::string_view bytes, const std::string& source) {
   return a;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

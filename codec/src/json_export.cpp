@@ -1,6 +1,6 @@
 #include "fapcast/codec/json_export.hpp"
 
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -8,7 +8,7 @@
 #include <initializer_list>
 #include <stdexcept>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -279,4 +279,4 @@ FapJsonRead read_fap_json(std::string_view bytes, std::string_view source) {
   return out;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

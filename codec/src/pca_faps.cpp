@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 constexpr FeaturePoint kChin{2, 1};
@@ -157,4 +157,4 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
   return frames;
 }
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

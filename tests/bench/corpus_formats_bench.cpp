@@ -3,8 +3,8 @@
 //   (the floor: no validation at all).
 // - TextGrid: read_textgrid vs. a naive std::regex line matcher of the long form (what a
 //   script would do; it checks nothing and keeps only intervals).
-#include "fapcast/synth/c3d.hpp"
-#include "fapcast/synth/textgrid.hpp"
+#include "fapcast/corpus/c3d.hpp"
+#include "fapcast/corpus/textgrid.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -18,7 +18,7 @@
 
 namespace {
 
-using namespace fapcast::synth;
+using namespace fapcast;
 
 // 10 s of 60 markers at 60 fps (one utterance-sized take is ~2 s; this is a long one).
 std::string c3d_take() {

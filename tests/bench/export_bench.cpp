@@ -17,12 +17,12 @@ using namespace fapcast;
 
 constexpr std::size_t kFrames = 25 * 600;  // ten minutes at 25 fps
 
-const codec::FapSequence& track() {
-  static const codec::FapSequence seq = test::realistic_fap_sequence(kFrames);
+const FapSequence& track() {
+  static const FapSequence seq = test::realistic_fap_sequence(kFrames);
   return seq;
 }
-const codec::FaceGeometry& face() {
-  static const codec::FaceGeometry f = codec::generic_adult_face();
+const FaceGeometry& face() {
+  static const FaceGeometry f = generic_adult_face();
   return f;
 }
 
@@ -37,7 +37,7 @@ void per_frame(benchmark::State& state, std::size_t bytes) {
 void BM_BvhExport(benchmark::State& state) {
   std::size_t bytes = 0;
   for (auto _ : state) {
-    const std::string text = codec::write_bvh(codec::fap_to_bvh(track(), face()));
+    const std::string text = write_bvh(fap_to_bvh(track(), face()));
     bytes = text.size();
     benchmark::DoNotOptimize(text.data());
   }
@@ -46,10 +46,10 @@ void BM_BvhExport(benchmark::State& state) {
 
 // Only the text writing (shortest round-trip numbers via std::to_chars).
 void BM_BvhWriteOnly(benchmark::State& state) {
-  const codec::BvhDocument doc = codec::fap_to_bvh(track(), face());
+  const BvhDocument doc = fap_to_bvh(track(), face());
   std::size_t bytes = 0;
   for (auto _ : state) {
-    const std::string text = codec::write_bvh(doc);
+    const std::string text = write_bvh(doc);
     bytes = text.size();
     benchmark::DoNotOptimize(text.data());
   }
@@ -58,7 +58,7 @@ void BM_BvhWriteOnly(benchmark::State& state) {
 
 // Baseline: the same motion numbers with snprintf("%.6f"), no hierarchy, no checks.
 void BM_BvhPrintfBaseline(benchmark::State& state) {
-  const codec::BvhDocument doc = codec::fap_to_bvh(track(), face());
+  const BvhDocument doc = fap_to_bvh(track(), face());
   std::size_t bytes = 0;
   for (auto _ : state) {
     std::string text;
@@ -75,16 +75,16 @@ void BM_BvhPrintfBaseline(benchmark::State& state) {
 }
 
 void BM_BvhRead(benchmark::State& state) {
-  const std::string text = codec::write_bvh(codec::fap_to_bvh(track(), face()));
-  for (auto _ : state) benchmark::DoNotOptimize(codec::read_bvh(text, "bench.bvh").motion.data());
+  const std::string text = write_bvh(fap_to_bvh(track(), face()));
+  for (auto _ : state) benchmark::DoNotOptimize(read_bvh(text, "bench.bvh").motion.data());
   per_frame(state, text.size());
 }
 
 void BM_JsonExport(benchmark::State& state) {
-  const codec::FapJsonOptions options{16000, std::nullopt, "bench"};
+  const FapJsonOptions options{16000, std::nullopt, "bench"};
   std::size_t bytes = 0;
   for (auto _ : state) {
-    const std::string text = codec::write_fap_json(track(), options);
+    const std::string text = write_fap_json(track(), options);
     bytes = text.size();
     benchmark::DoNotOptimize(text.data());
   }
@@ -98,14 +98,14 @@ void BM_JsonPrintfBaseline(benchmark::State& state) {
     std::string text;
     char buf[96];
     std::int64_t k = 0;
-    for (const codec::FapFrame& f : track().frames) {
+    for (const FapFrame& f : track().frames) {
       int n = std::snprintf(buf, sizeof buf, "%lld %.17g %lld", static_cast<long long>(k),
                             static_cast<double>(k) / 25.0,
-                            static_cast<long long>(codec::frame_to_sample(k, {25, 1}, 16000)));
+                            static_cast<long long>(frame_to_sample(k, {25, 1}, 16000)));
       text.append(buf, static_cast<std::size_t>(n));
-      for (int fap = codec::kFirstLowLevelFap; fap <= codec::kFapCount; ++fap) {
+      for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
         if (!f.mask.test(fap)) continue;
-        const std::string_view name = codec::fap_info(fap).name;
+        const std::string_view name = fap_info(fap).name;
         n = std::snprintf(buf, sizeof buf, " %.*s=%d", static_cast<int>(name.size()), name.data(),
                           f.value(fap));
         text.append(buf, static_cast<std::size_t>(n));
@@ -120,9 +120,9 @@ void BM_JsonPrintfBaseline(benchmark::State& state) {
 }
 
 void BM_JsonRead(benchmark::State& state) {
-  const std::string text = codec::write_fap_json(track(), {16000, std::nullopt, "bench"});
+  const std::string text = write_fap_json(track(), {16000, std::nullopt, "bench"});
   for (auto _ : state)
-    benchmark::DoNotOptimize(codec::read_fap_json(text, "bench.json").sequence.frames.data());
+    benchmark::DoNotOptimize(read_fap_json(text, "bench.json").sequence.frames.data());
   per_frame(state, text.size());
 }
 

@@ -2,15 +2,15 @@
 // extraction, coarticulation and head-pose removal, in frames per second (items_per_second).
 #include <benchmark/benchmark.h>
 
-#include "fapcast/synth/capture_imperfections.hpp"
-#include "fapcast/synth/coarticulation.hpp"
-#include "fapcast/synth/head_pose.hpp"
-#include "fapcast/synth/marker_map.hpp"
-#include "fapcast/synth/talker_markers.hpp"
+#include "fapcast/talker/capture_imperfections.hpp"
+#include "fapcast/talker/coarticulation.hpp"
+#include "fapcast/capture/head_pose.hpp"
+#include "fapcast/face/marker_map.hpp"
+#include "fapcast/talker/talker_markers.hpp"
 
 namespace {
 
-using namespace fapcast::synth;
+using namespace fapcast;
 
 PhoneTimeline sentence() {  // "a pup strewn on the beach" at 22050 Hz, ~1.5 s
   const std::vector<std::pair<const char*, int>> phones{

@@ -17,26 +17,26 @@ using namespace fapcast;
 
 constexpr std::size_t kFrames = 100'000;
 
-const codec::FapSequence& sequence() {
-  static const codec::FapSequence s = test::realistic_fap_sequence(kFrames);
+const FapSequence& sequence() {
+  static const FapSequence s = test::realistic_fap_sequence(kFrames);
   return s;
 }
 
 const std::string& text() {
-  static const std::string t = codec::write_fap_text(sequence());
+  static const std::string t = write_fap_text(sequence());
   return t;
 }
 
 // The obvious reader: stream extraction, strict dialect only, no checks beyond stream state.
-codec::FapSequence naive_read(const std::string& bytes) {
+FapSequence naive_read(const std::string& bytes) {
   std::istringstream in(bytes);
-  codec::FapSequence s;
+  FapSequence s;
   std::string version;
   std::uint64_t count = 0;
   in >> version >> s.name >> s.rate.numerator >> count;
   for (std::uint64_t k = 0; k < count && in; ++k) {
-    codec::FapFrame f;
-    for (int n = 1; n <= codec::kFapCount; ++n) {
+    FapFrame f;
+    for (int n = 1; n <= kFapCount; ++n) {
       int bit = 0;
       in >> bit;
       f.mask.set(n, bit == 1);
@@ -44,13 +44,13 @@ codec::FapSequence naive_read(const std::string& bytes) {
     std::uint64_t frame = 0;
     in >> frame;
     int v = 0;
-    if (f.mask.test(codec::kVisemeFap)) {
+    if (f.mask.test(kVisemeFap)) {
       in >> v; f.viseme.select1 = static_cast<std::uint8_t>(v);
       in >> v; f.viseme.select2 = static_cast<std::uint8_t>(v);
       in >> v; f.viseme.blend = static_cast<std::uint8_t>(v);
       in >> v; f.viseme.def = v != 0;
     }
-    if (f.mask.test(codec::kExpressionFap)) {
+    if (f.mask.test(kExpressionFap)) {
       in >> v; f.expression.select1 = static_cast<std::uint8_t>(v);
       in >> v; f.expression.intensity1 = static_cast<std::uint8_t>(v);
       in >> v; f.expression.select2 = static_cast<std::uint8_t>(v);
@@ -58,7 +58,7 @@ codec::FapSequence naive_read(const std::string& bytes) {
       in >> v; f.expression.init_face = v != 0;
       in >> v; f.expression.def = v != 0;
     }
-    for (int n = codec::kFirstLowLevelFap; n <= codec::kFapCount; ++n)
+    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n)
       if (f.mask.test(n)) in >> f.values[static_cast<std::size_t>(n - 1)];
     s.frames.push_back(f);
   }
@@ -66,14 +66,14 @@ codec::FapSequence naive_read(const std::string& bytes) {
 }
 
 // The obvious writer: stream insertion.
-std::string naive_write(const codec::FapSequence& s) {
+std::string naive_write(const FapSequence& s) {
   std::ostringstream out;
   out << "2.1 " << s.name << ' ' << s.rate.numerator << ' ' << s.frames.size() << '\n';
   for (std::size_t k = 0; k < s.frames.size(); ++k) {
     const auto& f = s.frames[k];
-    for (int n = 1; n <= codec::kFapCount; ++n) out << f.mask.test(n) << (n == codec::kFapCount ? '\n' : ' ');
+    for (int n = 1; n <= kFapCount; ++n) out << f.mask.test(n) << (n == kFapCount ? '\n' : ' ');
     out << k;
-    for (int n = codec::kFirstLowLevelFap; n <= codec::kFapCount; ++n)
+    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n)
       if (f.mask.test(n)) out << ' ' << f.value(n);
     out << '\n';
   }
@@ -86,7 +86,7 @@ void frames_per_second(benchmark::State& state) {
 }
 
 void BM_Read_fapcast(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(codec::read_fap_text(text(), "bench.fap"));
+  for (auto _ : state) benchmark::DoNotOptimize(read_fap_text(text(), "bench.fap"));
   frames_per_second(state);
 }
 void BM_Read_istringstream(benchmark::State& state) {
@@ -94,7 +94,7 @@ void BM_Read_istringstream(benchmark::State& state) {
   frames_per_second(state);
 }
 void BM_Write_fapcast(benchmark::State& state) {
-  for (auto _ : state) benchmark::DoNotOptimize(codec::write_fap_text(sequence()));
+  for (auto _ : state) benchmark::DoNotOptimize(write_fap_text(sequence()));
   frames_per_second(state);
 }
 void BM_Write_ostringstream(benchmark::State& state) {

@@ -7,9 +7,9 @@
 // the frame-at-a-time decoder (one access unit per frame, as RTP carries them).
 // Run: build/rel/tests/fba_bench   (counters: kbit/s at 25 fps, and ratios)
 #include "fapcast/codec/fap_text.hpp"
-#include "fapcast/codec/fba_coding_state.hpp"
-#include "fapcast/codec/fba_file.hpp"
-#include "fapcast/codec/fba_stream.hpp"
+#include "fapcast/fba/fba_quantiser.hpp"
+#include "fapcast/fba/fba_file.hpp"
+#include "fapcast/fba/fba_stream.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -25,7 +25,7 @@
 #include <unistd.h>
 
 namespace {
-using namespace fapcast::codec;
+using namespace fapcast;
 namespace fs = std::filesystem;
 
 constexpr double kFps = 25.0;

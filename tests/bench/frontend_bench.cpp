@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "fapcast/synth/text_frontend.hpp"
+#include "fapcast/frontend/text_frontend.hpp"
 
 namespace {
 
@@ -20,7 +20,7 @@ const std::string kText =
 void BM_FrontEnd(benchmark::State& state) {
   std::size_t phones = 0, samples = 0;
   for (auto _ : state) {
-    const auto speech = fapcast::synth::speak(kText);
+    const auto speech = fapcast::speak(kText);
     phones += speech.phones.size();
     samples += speech.audio.samples.size();
     benchmark::DoNotOptimize(speech.phones.data());
@@ -38,7 +38,7 @@ int copy_audio_only(short* wav, int n, espeak_EVENT*) {
 
 // espeak_Synth with a callback that keeps the audio and ignores every event.
 void BM_EspeakBare(benchmark::State& state) {
-  fapcast::synth::speak("");  // initialises espeak-ng (en-us, synchronous) once
+  fapcast::speak("");  // initialises espeak-ng (en-us, synchronous) once
   std::vector<short> audio;
   g_audio = &audio;
   std::size_t samples = 0;

@@ -16,11 +16,11 @@
 #include <new>
 
 #include "fapcast/codec/gltf_export.hpp"
-#include "fapcast/synth/face_adaptation.hpp"
-#include "fapcast/synth/face_model.hpp"
-#include "fapcast/synth/obj_mesh.hpp"
-#include "fapcast/synth/voice_retarget.hpp"
-#include "fapcast/transport/file_io.hpp"
+#include "fapcast/face/face_adaptation.hpp"
+#include "fapcast/face/face_model.hpp"
+#include "fapcast/face/obj_mesh.hpp"
+#include "fapcast/voice/voice_retarget.hpp"
+#include "fapcast/core/file_io.hpp"
 #include "support/scatter_adaptation.hpp"
 #include "support/tiny_voice.hpp"
 
@@ -53,16 +53,15 @@ void operator delete[](void* p, std::size_t) noexcept { counted_free(p); }
 namespace {
 
 using namespace fapcast;
-using synth::Positions;
 
-const synth::FaceModel& actor() {
-  static const synth::FaceModel a = synth::make_actor(synth::ict_face_model(), std::vector<float>{0.8f, -0.6f, 0.5f, 0.0f, 0.7f});
+const FaceModel& actor() {
+  static const FaceModel a = make_actor(ict_face_model(), std::vector<float>{0.8f, -0.6f, 0.5f, 0.0f, 0.7f});
   return a;
 }
 
 template <typename Build>
 void measure_build(benchmark::State& state, Build build) {
-  const auto& g = synth::ict_face_model();
+  const auto& g = ict_face_model();
   std::int64_t peak = 0;
   for (auto _ : state) {
     const auto before = g_heap.load();
@@ -76,34 +75,34 @@ void measure_build(benchmark::State& state, Build build) {
 }
 
 void BM_AdaptationBuild_OpenMesh(benchmark::State& state) {
-  measure_build(state, [](const synth::FaceModel& g, const synth::FaceModel& a) {
-    return synth::FaceAdaptation(g.neutral_cm, a.neutral_cm, g.faces);
+  measure_build(state, [](const FaceModel& g, const FaceModel& a) {
+    return FaceAdaptation(g.neutral_cm, a.neutral_cm, g.faces);
   });
-  const synth::FaceAdaptation held(synth::ict_face_model().neutral_cm, actor().neutral_cm, synth::ict_face_model().faces);
+  const FaceAdaptation held(ict_face_model().neutral_cm, actor().neutral_cm, ict_face_model().faces);
   state.counters["held_MB"] = static_cast<double>(held.memory_bytes()) / 1e6;
 }
 BENCHMARK(BM_AdaptationBuild_OpenMesh)->Unit(benchmark::kMillisecond);
 
 void BM_AdaptationBuild_Scatter(benchmark::State& state) {
-  measure_build(state, [](const synth::FaceModel& g, const synth::FaceModel& a) {
+  measure_build(state, [](const FaceModel& g, const FaceModel& a) {
     return test::scatter_adaptation_maps(g.neutral_cm, a.neutral_cm, g.faces);
   });
 }
 BENCHMARK(BM_AdaptationBuild_Scatter)->Unit(benchmark::kMillisecond);
 
 void BM_AdaptDenseTarget(benchmark::State& state) {
-  const auto& g = synth::ict_face_model();
-  const synth::FaceAdaptation adaptation(g.neutral_cm, actor().neutral_cm, g.faces);
+  const auto& g = ict_face_model();
+  const FaceAdaptation adaptation(g.neutral_cm, actor().neutral_cm, g.faces);
   Positions d = Positions::Zero(3, g.vertex_count());
-  synth::add_scaled(d, g.expressions[g.expression_index("jawOpen")], 1.0f);
+  add_scaled(d, g.expressions[g.expression_index("jawOpen")], 1.0f);
   for (auto _ : state) benchmark::DoNotOptimize(adaptation.adapt(d));
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_AdaptDenseTarget)->Unit(benchmark::kMicrosecond);
 
 void BM_AdaptAll53SparseTargets(benchmark::State& state) {
-  const auto& g = synth::ict_face_model();
-  const synth::FaceAdaptation adaptation(g.neutral_cm, actor().neutral_cm, g.faces);
+  const auto& g = ict_face_model();
+  const FaceAdaptation adaptation(g.neutral_cm, actor().neutral_cm, g.faces);
   for (auto _ : state)
     for (const auto& e : g.expressions) benchmark::DoNotOptimize(adaptation.adapt(e));
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(g.expressions.size()));
@@ -111,14 +110,14 @@ void BM_AdaptAll53SparseTargets(benchmark::State& state) {
 BENCHMARK(BM_AdaptAll53SparseTargets)->Unit(benchmark::kMillisecond);
 
 // .glb of the ICT face with k = 17 targets and `seconds` of 60 fps weights.
-codec::MorphAnimation ict_animation(int seconds) {
-  const auto& g = synth::ict_face_model();
-  codec::MorphAnimation a;
+MorphAnimation ict_animation(int seconds) {
+  const auto& g = ict_face_model();
+  MorphAnimation a;
   a.base_positions_m = 0.01f * g.neutral_cm;
-  a.triangles = synth::triangulate(g.faces);
+  a.triangles = triangulate(g.faces);
   for (int k = 0; k < 17; ++k) {
     Positions d = Positions::Zero(3, g.vertex_count());
-    synth::add_scaled(d, g.expressions[static_cast<std::size_t>(k) * 3], 0.01f);
+    add_scaled(d, g.expressions[static_cast<std::size_t>(k) * 3], 0.01f);
     a.targets_m.push_back(d);
   }
   a.weights = Eigen::MatrixXf::Random(60 * seconds, 17);
@@ -130,9 +129,9 @@ void BM_GlbWrite_k17_60fps(benchmark::State& state) {
   const auto seconds = static_cast<int>(state.range(0));
   const auto a = ict_animation(seconds);
   std::size_t bytes = 0;
-  for (auto _ : state) bytes = codec::write_glb(a).size();
-  const auto one = codec::write_glb(ict_animation(1)).size();
-  const auto eleven = codec::write_glb(ict_animation(11)).size();
+  for (auto _ : state) bytes = write_glb(a).size();
+  const auto one = write_glb(ict_animation(1)).size();
+  const auto eleven = write_glb(ict_animation(11)).size();
   state.counters["glb_MB"] = static_cast<double>(bytes) / 1e6;
   state.counters["animation_bytes_per_s"] = static_cast<double>(eleven - one) / 10.0;
   state.counters["mesh_and_targets_MB"] = static_cast<double>(one - (eleven - one) / 10) / 1e6;
@@ -144,28 +143,28 @@ BENCHMARK(BM_GlbWrite_k17_60fps)->Arg(10)->Unit(benchmark::kMillisecond);
 const std::filesystem::path& reference_shaped_voice() {
   static const std::filesystem::path file = [] {
     test::TinyVoice t;
-    t.vertices = synth::ict_face_model().vertex_count();
+    t.vertices = ict_face_model().vertex_count();
     t.components = 17;
     t.centres = 21;
-    t.coefficients = synth::RowMajorMatrixXf::Zero(3, 17);
-    t.set_neutral_face(0.01f * synth::ict_face_model().neutral_cm);  // retarget checks the generic face
+    t.coefficients = RowMajorMatrixXf::Zero(3, 17);
+    t.set_neutral_face(0.01f * ict_face_model().neutral_cm);  // retarget checks the generic face
     const auto path = std::filesystem::temp_directory_path() / "fapcast_mesh_bench_voice.fapv";
-    transport::write_file_atomically(path, t.bytes());
+    write_file_atomically(path, t.bytes());
     return path;
   }();
   return file;
 }
 
 void BM_VoiceRetarget_k17(benchmark::State& state) {
-  const synth::Voice voice = synth::Voice::open(reference_shaped_voice());
-  const auto& g = synth::ict_face_model();
+  const Voice voice = Voice::open(reference_shaped_voice());
+  const auto& g = ict_face_model();
   const Positions generic_m = 0.01f * g.neutral_cm, specific_m = 0.01f * actor().neutral_cm;
   std::int64_t peak = 0;
   std::size_t bytes = 0;
   for (auto _ : state) {
     const auto before = g_heap.load();
     g_peak = before;
-    const auto out = synth::retarget_voice(voice, generic_m, specific_m, g.faces, "actor");
+    const auto out = retarget_voice(voice, generic_m, specific_m, g.faces, "actor");
     bytes = out.bytes.size();
     peak = std::max(peak, g_peak.load() - before);
   }
@@ -176,7 +175,7 @@ BENCHMARK(BM_VoiceRetarget_k17)->Unit(benchmark::kMillisecond);
 
 void BM_VoiceOpen_k17(benchmark::State& state) {
   const auto& file = reference_shaped_voice();
-  for (auto _ : state) benchmark::DoNotOptimize(synth::Voice::open(file).dimension());
+  for (auto _ : state) benchmark::DoNotOptimize(Voice::open(file).dimension());
 }
 BENCHMARK(BM_VoiceOpen_k17)->Unit(benchmark::kMillisecond);
 

@@ -1,6 +1,6 @@
 // Synthesis speed without TTS: timed phones of a 10-second sentence -> 60 fps PCA frames and
-// tongue (synth::synthesize: grid, search, warp, cross-fade, smoothing, tongue), then FAPs
-// (codec::pca_to_faps) at 25 fps. The graph has the paper corpus's size (1,400 recordings x 30
+// tongue (synthesize: grid, search, warp, cross-fade, smoothing, tongue), then FAPs
+// (pca_to_faps) at 25 fps. The graph has the paper corpus's size (1,400 recordings x 30
 // phones, 21 classes, k = 17, 5 frames per phone) with SYNTHETIC class shapes plus noise: a
 // stand-in for a voice's search data, not a voice. Counters: seconds of animation per CPU second,
 // mean active states per phone. Baselines in the same run: no cap on the active states, and
@@ -8,8 +8,8 @@
 // restricted to the feature points.
 #include "fapcast/codec/face_geometry.hpp"
 #include "fapcast/codec/pca_faps.hpp"
-#include "fapcast/synth/synthesis.hpp"
-#include "fapcast/synth/tongue.hpp"
+#include "fapcast/synthesis/synthesis.hpp"
+#include "fapcast/synthesis/tongue.hpp"
 #include "fapcast/transport/track_resample.hpp"
 #include "support/synthetic_voice_graph.hpp"
 
@@ -30,10 +30,10 @@ constexpr std::int64_t kMeshVertices = 26'719;  // ICT-FaceKit's full head, for 
 
 struct World {
   test::SyntheticVoiceGraph voice;
-  std::vector<synth::TimedPhone> phones;
-  codec::FeaturePointBasis basis;
-  codec::RowMajorMatrixXf mesh_mean, mesh_components;
-  std::vector<codec::FeaturePointVertex> fp_vertices;
+  std::vector<TimedPhone> phones;
+  FeaturePointBasis basis;
+  RowMajorMatrixXf mesh_mean, mesh_components;
+  std::vector<FeaturePointVertex> fp_vertices;
 };
 
 const World& world() {
@@ -42,19 +42,19 @@ const World& world() {
     w.voice = test::synthetic_voice_graph(1400, 30, 5, kK, 42, 0.1f);
     // A 10 s sentence: random phones of 50..130 ms, silence at both ends.
     std::mt19937_64 rng(7);
-    std::uniform_int_distribution<int> phone(0, static_cast<int>(synth::kPhoneCount) - 2), ms(50, 130);
+    std::uniform_int_distribution<int> phone(0, static_cast<int>(kPhoneCount) - 2), ms(50, 130);
     std::int64_t at = 0;
     const auto end = static_cast<std::int64_t>(kSentenceS * kRate);
     while (at < end) {
       const std::int64_t len = std::min<std::int64_t>(end - at, ms(rng) * kRate / 1000);
-      const auto p = (at == 0 || at + len >= end) ? synth::Phone::SIL : static_cast<synth::Phone>(phone(rng));
-      w.phones.push_back({p, at, at + len, at, at, synth::kNoWord, ""});
+      const auto p = (at == 0 || at + len >= end) ? Phone::SIL : static_cast<Phone>(phone(rng));
+      w.phones.push_back({p, at, at + len, at, at, kNoWord, ""});
       at += len;
     }
     // A mesh basis whose feature-point vertices sit on the generic face (cm).
-    const auto face = codec::generic_adult_face();
+    const auto face = generic_adult_face();
     std::normal_distribution<float> normal(0.0f, 0.05f);
-    w.mesh_mean = codec::RowMajorMatrixXf::Zero(1, 3 * kMeshVertices);
+    w.mesh_mean = RowMajorMatrixXf::Zero(1, 3 * kMeshVertices);
     w.mesh_components.resize(kK, 3 * kMeshVertices);
     for (Eigen::Index i = 0; i < w.mesh_components.size(); ++i) w.mesh_components.data()[i] = normal(rng);
     std::int64_t v = 0;
@@ -63,13 +63,13 @@ const World& world() {
       for (int a = 0; a < 3; ++a) w.mesh_mean(0, 3 * v * 997 + a) = static_cast<float>(at3(a));
       ++v;
     }
-    w.basis = codec::restrict_basis(w.mesh_mean, w.mesh_components, w.fp_vertices, face.feature_points);
+    w.basis = restrict_basis(w.mesh_mean, w.mesh_components, w.fp_vertices, face.feature_points);
     return w;
   }();
   return w;
 }
 
-void report(benchmark::State& state, const synth::SynthesizedTrack& s) {
+void report(benchmark::State& state, const SynthesizedTrack& s) {
   state.counters["anim_s_per_cpu_s"] =
       benchmark::Counter(kSentenceS * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   const auto& a = s.search.stats.active_per_step;
@@ -79,8 +79,8 @@ void report(benchmark::State& state, const synth::SynthesizedTrack& s) {
   state.counters["units"] = static_cast<double>(s.search.units.size());
 }
 
-synth::SynthesisOptions options_of(const benchmark::State& state) {
-  synth::SynthesisOptions o;
+SynthesisOptions options_of(const benchmark::State& state) {
+  SynthesisOptions o;
   o.search.beta = static_cast<double>(state.range(0)) / 100.0;
   if (state.range(1) > 0) o.search.max_active = static_cast<std::size_t>(state.range(1));
   o.search.prune_joins = state.range(2) != 0;
@@ -92,9 +92,9 @@ synth::SynthesisOptions options_of(const benchmark::State& state) {
 void BM_Synthesize(benchmark::State& state) {
   const World& w = world();
   const auto options = options_of(state);
-  synth::SynthesizedTrack s;
+  SynthesizedTrack s;
   for (auto _ : state) {
-    s = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
     benchmark::DoNotOptimize(s.pca_frames.data());
   }
   report(state, s);
@@ -112,12 +112,12 @@ BENCHMARK(BM_Synthesize)
 void BM_SearchOnly(benchmark::State& state) {
   const World& w = world();
   const auto options = options_of(state);
-  const auto track = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
-  std::vector<synth::VisemeClass> targets;
-  for (const synth::StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
-  synth::SynthesizedTrack s;
+  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+  std::vector<VisemeClass> targets;
+  for (const StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
+  SynthesizedTrack s;
   for (auto _ : state) {
-    s.search = synth::unit_search(*w.voice.graph, targets, options.search);
+    s.search = unit_search(*w.voice.graph, targets, options.search);
     benchmark::DoNotOptimize(s.search.cost);
   }
   s.timeline = track.timeline;
@@ -139,13 +139,13 @@ void BM_OpenAndSearchOnce(benchmark::State& state) {
   // dynamic thresholds do or not depending on the allocation order of the code measured.
   mallopt(M_MMAP_THRESHOLD, 64 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  const auto track = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, {});
-  std::vector<synth::VisemeClass> targets;
-  for (const synth::StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
-  synth::SynthesizedTrack s;
+  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, {});
+  std::vector<VisemeClass> targets;
+  for (const StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
+  SynthesizedTrack s;
   for (auto _ : state) {
-    const synth::PhoneGraph graph(w.voice.states, synth::junction_features(w.voice.states, w.voice.frames));
-    s.search = synth::unit_search(graph, targets, {0.1, 64, state.range(0) != 0});
+    const PhoneGraph graph(w.voice.states, junction_features(w.voice.states, w.voice.frames));
+    s.search = unit_search(graph, targets, {0.1, 64, state.range(0) != 0});
     benchmark::DoNotOptimize(s.search.cost);
   }
   s.timeline = track.timeline;
@@ -157,11 +157,11 @@ BENCHMARK(BM_OpenAndSearchOnce)->ArgName("prune")->Arg(0)->Arg(1)->Unit(benchmar
 void BM_PhonesToFaps(benchmark::State& state) {
   const World& w = world();
   const auto options = options_of(state);
-  synth::SynthesizedTrack s;
+  SynthesizedTrack s;
   for (auto _ : state) {
-    s = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
-    codec::FapSequence seq{"bench", {60, 1}, codec::pca_to_faps(s.pca_frames, w.basis)};
-    auto out = transport::resample_track(seq, {25, 1}, transport::ResampleMode::kLinear);
+    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    FapSequence seq{"bench", {60, 1}, pca_to_faps(s.pca_frames, w.basis)};
+    auto out = resample_track(seq, {25, 1}, ResampleMode::kLinear);
     benchmark::DoNotOptimize(out.frames.data());
   }
   report(state, s);
@@ -175,25 +175,25 @@ BENCHMARK(BM_PhonesToFaps)
 // synthesize() does besides unit_search (voice grid, render: warp, cross-fade, smoothing; tongue)
 // and what follows it (PCA -> FAPs at 60 fps, resampled to 25 fps). Together they are
 // BM_PhonesToFaps minus the search.
-const synth::SynthesizedTrack& default_track() {
-  static const synth::SynthesizedTrack s = [] {
+const SynthesizedTrack& default_track() {
+  static const SynthesizedTrack s = [] {
     const World& w = world();
-    synth::SynthesisOptions o;
+    SynthesisOptions o;
     o.search.beta = 0.1;
     o.search.max_active = 64;
-    return synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, o);
+    return synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, o);
   }();
   return s;
 }
 
 void BM_RenderAfterSearch(benchmark::State& state) {
   const World& w = world();
-  const synth::SynthesizedTrack& s = default_track();
+  const SynthesizedTrack& s = default_track();
   for (auto _ : state) {
     // The bench graph covers every class, so the covered targets are the timeline's own.
-    const auto timeline = synth::place_on_voice_grid(w.phones, kRate);
-    auto pca = synth::render_units(*w.voice.graph, w.voice.frames, s.search, timeline.phones);
-    auto tongue = synth::tongue_track(timeline.phones, timeline.phone_of);
+    const auto timeline = place_on_voice_grid(w.phones, kRate);
+    auto pca = render_units(*w.voice.graph, w.voice.frames, s.search, timeline.phones);
+    auto tongue = tongue_track(timeline.phones, timeline.phone_of);
     benchmark::DoNotOptimize(pca.data());
     benchmark::DoNotOptimize(tongue.data());
   }
@@ -204,10 +204,10 @@ BENCHMARK(BM_RenderAfterSearch)->Unit(benchmark::kMillisecond);
 
 void BM_FapsAt25(benchmark::State& state) {
   const World& w = world();
-  const synth::SynthesizedTrack& s = default_track();
+  const SynthesizedTrack& s = default_track();
   for (auto _ : state) {
-    codec::FapSequence seq{"bench", {60, 1}, codec::pca_to_faps(s.pca_frames, w.basis)};
-    auto out = transport::resample_track(seq, {25, 1}, transport::ResampleMode::kLinear);
+    FapSequence seq{"bench", {60, 1}, pca_to_faps(s.pca_frames, w.basis)};
+    auto out = resample_track(seq, {25, 1}, ResampleMode::kLinear);
     benchmark::DoNotOptimize(out.frames.data());
   }
   state.counters["anim_s_per_cpu_s"] =
@@ -221,8 +221,8 @@ void BM_TimeToFirstFrame(benchmark::State& state) {
   const World& w = world();
   const auto options = options_of(state);
   for (auto _ : state) {
-    auto s = synth::synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
-    auto first = codec::pca_to_faps(s.pca_frames.topRows(1), w.basis);
+    auto s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    auto first = pca_to_faps(s.pca_frames.topRows(1), w.basis);
     benchmark::DoNotOptimize(first.data());
   }
 }
@@ -245,7 +245,7 @@ void BM_PcaToFaps_RestrictedBasis(benchmark::State& state) {
   const World& w = world();
   const Eigen::MatrixXf c = frames_600();
   for (auto _ : state) {
-    auto f = codec::pca_to_faps(c, w.basis);
+    auto f = pca_to_faps(c, w.basis);
     benchmark::DoNotOptimize(f.data());
   }
   state.counters["frames_per_s"] = benchmark::Counter(600.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
@@ -258,7 +258,7 @@ void BM_PcaToFaps_FullMesh(benchmark::State& state) {
   // Each frame reconstructed over all 3N columns, then the feature points read off it (the FAP
   // arithmetic that follows is left out: this baseline is a lower bound).
   for (auto _ : state) {
-    codec::RowMajorMatrixXf mesh(1, w.mesh_mean.cols());
+    RowMajorMatrixXf mesh(1, w.mesh_mean.cols());
     Eigen::MatrixXf picked(600, static_cast<Eigen::Index>(3 * w.fp_vertices.size()));
     for (Eigen::Index n = 0; n < 600; ++n) {
       mesh.noalias() = w.mesh_mean + c.row(n) * w.mesh_components;

@@ -17,7 +17,7 @@
 
 namespace {
 using namespace fapcast;
-using namespace fapcast::transport;
+using namespace fapcast;
 using Clock = std::chrono::steady_clock;
 
 udp::endpoint loopback() { return {asio::ip::make_address("127.0.0.1"), 0}; }
@@ -25,16 +25,16 @@ udp::endpoint loopback() { return {asio::ip::make_address("127.0.0.1"), 0}; }
 // Real FBA access units of a SYNTHETIC 60 fps track (what a talking head streams).
 const std::vector<MediaUnit>& sample_units() {
   static const std::vector<MediaUnit> units = [] {
-    codec::FapSequence seq;
+    FapSequence seq;
     seq.rate = {60, 1};
     for (int k = 0; k < 600; ++k) {
-      codec::FapFrame f;
+      FapFrame f;
       for (int fap = 3; fap <= 20; ++fap)
         f.set(fap, static_cast<std::int32_t>(200 * std::sin(k * 0.05 + fap)));
       seq.frames.push_back(f);
     }
     std::vector<MediaUnit> out;
-    codec::FbaEncoderOptions o;
+    FbaEncoderOptions o;
     o.intra_period = 60;
     (void)encode_track_units(seq, 48000, o, out);
     return out;

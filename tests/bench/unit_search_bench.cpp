@@ -3,8 +3,8 @@
 // PCA frames: a stand-in for a voice with the same shape, not a voice. A 10-second target of
 // 120 phones is searched with beta = 0 (units only), beta > 0 (smoothness) and with a cap on the
 // active states; counters report seconds of animation per CPU second and active states.
-#include "fapcast/synth/unit_render.hpp"
-#include "fapcast/synth/unit_search.hpp"
+#include "fapcast/synthesis/unit_render.hpp"
+#include "fapcast/select/unit_search.hpp"
 
 #include <benchmark/benchmark.h>
 #include <malloc.h>
@@ -14,7 +14,7 @@
 #include <random>
 
 namespace {
-using namespace fapcast::synth;
+using namespace fapcast;
 
 constexpr int kRecordings = 1400, kPhonesPerRecording = 30, kK = 17;
 constexpr int kClasses = static_cast<int>(kVisemeClassCount);

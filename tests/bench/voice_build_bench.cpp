@@ -16,19 +16,19 @@
 #include <fstream>
 #include <string>
 
-#include "fapcast/synth/data_root.hpp"
-#include "fapcast/synth/pca_basis.hpp"
-#include "fapcast/synth/recording_script.hpp"
-#include "fapcast/synth/reference_talker.hpp"
-#include "fapcast/synth/syllabified_lexicon.hpp"
-#include "fapcast/synth/voice_build.hpp"
-#include "fapcast/synth/voice_file.hpp"
-#include "fapcast/transport/file_io.hpp"
+#include "fapcast/core/data_root.hpp"
+#include "fapcast/math/pca_basis.hpp"
+#include "fapcast/corpus/recording_script.hpp"
+#include "fapcast/talker/reference_talker.hpp"
+#include "fapcast/corpus/syllabified_lexicon.hpp"
+#include "fapcast/builder/voice_build.hpp"
+#include "fapcast/voice/voice_file.hpp"
+#include "fapcast/core/file_io.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-using namespace fapcast::synth;
+using namespace fapcast;
 
 constexpr std::size_t kSubsetUtterances = 30;
 
@@ -51,11 +51,11 @@ const Corpora& corpora() {
     } else {
       out.owned = true;
       out.full = fs::temp_directory_path() / ("fapcast_bench_reference_" + std::to_string(::getpid()));
-      const auto lexicon = parse_festival_lexicon(fapcast::transport::read_file(default_cmudict_path()), "cmudict");
-      const auto counts = parse_word_counts(fapcast::transport::read_file(default_word_counts_path()), "word counts");
+      const auto lexicon = parse_festival_lexicon(fapcast::read_file(default_cmudict_path()), "cmudict");
+      const auto counts = parse_word_counts(fapcast::read_file(default_word_counts_path()), "word counts");
       (void)record_reference_corpus(build_recording_script(counts, lexicon), out.full, {},
                                     [&](const std::string& name, std::string_view bytes) {
-                                      fapcast::transport::write_file_atomically(out.full / name, bytes);
+                                      fapcast::write_file_atomically(out.full / name, bytes);
                                     });
     }
     out.subset = fs::temp_directory_path() / ("fapcast_bench_subset_" + std::to_string(::getpid()));

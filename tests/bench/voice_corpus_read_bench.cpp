@@ -13,16 +13,16 @@
 #include <filesystem>
 #include <string>
 
-#include "fapcast/synth/recording_script.hpp"
-#include "fapcast/synth/reference_talker.hpp"
-#include "fapcast/synth/voice_corpus.hpp"
-#include "fapcast/transport/file_io.hpp"
+#include "fapcast/corpus/recording_script.hpp"
+#include "fapcast/talker/reference_talker.hpp"
+#include "fapcast/builder/voice_corpus.hpp"
+#include "fapcast/core/file_io.hpp"
 #include "support/corpus_conversion.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
-using namespace fapcast::synth;
+using namespace fapcast;
 using fapcast::test::AlignmentFormat;
 using fapcast::test::MarkerFormat;
 
@@ -54,7 +54,7 @@ const Corpora& corpora() {
     for (const char* w : kWords) script.items.push_back({ScriptSection::kCommonWord, w, {}, "", 0.0});
     (void)record_reference_corpus(script, out.c3d, {.count = 0, .seed = 5, .script = {}},
                                   [&](const std::string& name, std::string_view bytes) {
-                                    fapcast::transport::write_file_atomically(out.c3d / name, bytes);
+                                    fapcast::write_file_atomically(out.c3d / name, bytes);
                                   });
     fapcast::test::convert_corpus(out.c3d, out.trc, MarkerFormat::trc, AlignmentFormat::lab);
     fapcast::test::convert_corpus(out.c3d, out.csv, MarkerFormat::csv, AlignmentFormat::lab);

@@ -11,15 +11,15 @@
 #include <fstream>
 #include <string>
 
-#include "fapcast/synth/affine_image_pca.hpp"
-#include "fapcast/synth/em_pca.hpp"
-#include "fapcast/synth/rbf_retarget.hpp"
-#include "fapcast/synth/running_moments.hpp"
+#include "fapcast/math/affine_image_pca.hpp"
+#include "fapcast/math/em_pca.hpp"
+#include "fapcast/math/rbf_retarget.hpp"
+#include "fapcast/math/running_moments.hpp"
 #include "support/talking_markers.hpp"
 
 namespace {
 
-using namespace fapcast::synth;
+using namespace fapcast;
 namespace test = fapcast::test;
 
 constexpr Eigen::Index kTargetDim = 80157;  // ICT-FaceKit generic face: 26,719 vertices x 3

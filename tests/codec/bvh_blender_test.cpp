@@ -11,7 +11,7 @@
 #include <map>
 #include <sstream>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 TEST(BvhBlender, BlenderImportsTheExportAndPosesEveryBoneWhereWeDo) {
@@ -61,4 +61,4 @@ TEST(BvhBlender, BlenderImportsTheExportAndPosesEveryBoneWhereWeDo) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 const FaceGeometry kFace = generic_adult_face();
@@ -202,4 +202,4 @@ TEST(BvhExport, EmptySequenceGivesAHierarchyWithNoFrames) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -1,6 +1,6 @@
 #include "fapcast/codec/bvh_text.hpp"
 
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "support/bad_inputs.hpp"
 #include "support/fap_sequences.hpp"
 
@@ -15,7 +15,7 @@
 #include <set>
 #include <sstream>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 namespace fs = std::filesystem;
@@ -208,4 +208,4 @@ TEST(BvhText, WrittenLayoutIsWhatBlendersImporterReadsLineByLine) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 TEST(FitGenericFace, RecoversPivotsAndMissingPointsOfAScaledCopy) {
@@ -28,4 +28,4 @@ TEST(FitGenericFace, RecoversPivotsAndMissingPointsOfAScaledCopy) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 TEST(FapStats, HandMadeSequence) {
@@ -68,4 +68,4 @@ TEST(FapStats, AgreesWithADirectScanOnRandomSequences) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

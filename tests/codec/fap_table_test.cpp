@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 std::vector<std::vector<std::string>> read_tsv(const std::string& path) {
@@ -87,4 +87,4 @@ TEST(FapTable, LowLevelFapsHaveUnitsAndSteps) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

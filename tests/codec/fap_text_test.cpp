@@ -2,8 +2,8 @@
 // them, random round trips, the header rules, and the named bad inputs with their golden errors.
 #include "fapcast/codec/fap_text.hpp"
 
-#include "fapcast/codec/input_error.hpp"
-#include "fapcast/transport/file_io.hpp"
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/core/file_io.hpp"
 #include "support/fap_sequences.hpp"
 
 #include <gtest/gtest.h>
@@ -14,14 +14,14 @@
 #include <map>
 #include <sstream>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 namespace fs = std::filesystem;
 const fs::path kData = FAPCAST_TEST_DATA;
 
 std::string xface_text(const std::string& file) {
-  return transport::read_file(kData / "xface" / file);
+  return read_file(kData / "xface" / file);
 }
 
 // "3-18 23-26" -> FAPs 3..18 and 23..26.
@@ -506,7 +506,7 @@ TEST(FapTextReader, RepairsANameThatIsNotUtf8) {
 const fs::path kBad = kData / "fap" / "bad";
 
 std::map<std::string, std::string> golden_errors() {
-  std::istringstream in(transport::read_file(kBad / "expected-errors.txt"));
+  std::istringstream in(read_file(kBad / "expected-errors.txt"));
   std::map<std::string, std::string> golden;
   for (std::string line; std::getline(in, line);)
     if (!line.empty() && line[0] != '#') golden[line.substr(0, line.find(':'))] = line;
@@ -534,7 +534,7 @@ class FapTextBadFile : public testing::TestWithParam<std::string> {};
 
 TEST_P(FapTextBadFile, IsRefusedWithTheGoldenMessage) {
   const std::string& name = GetParam();
-  const std::string bytes = transport::read_file(kBad / name);
+  const std::string bytes = read_file(kBad / name);
   // bad.NNN.<rule>.fap
   const std::string rule = name.substr(8, name.size() - 8 - 4);
   try {
@@ -554,4 +554,4 @@ INSTANTIATE_TEST_SUITE_P(Golden, FapTextBadFile, testing::ValuesIn(bad_files()),
 });
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

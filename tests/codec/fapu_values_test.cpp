@@ -1,11 +1,11 @@
 #include "fapcast/codec/fapu_values.hpp"
 
 #include "fapcast/codec/feature_point.hpp"
-#include "fapcast/codec/frame_rate.hpp"
+#include "fapcast/core/frame_rate.hpp"
 
 #include <gtest/gtest.h>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 FeaturePointPositions neutral_face(double scale) {
@@ -77,4 +77,4 @@ TEST(FrameRate, FramesLandOnTheSampleTimelineWithoutDrift) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -12,9 +12,9 @@
 #include <iterator>
 #include <nlohmann/json.hpp>
 
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 // A unit square of two triangles in the xy plane, two targets (lift one corner, push the other
@@ -225,9 +225,9 @@ TEST(GltfExport, ReadGlbNamesTheRuleBroken) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 // A file from another writer (Python json + struct, tests/data/PROVENANCE.md).
@@ -253,4 +253,4 @@ TEST(GltfExport, ReadsAGlbFromAnotherWriter) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -1,7 +1,7 @@
 #include "fapcast/codec/json_export.hpp"
 
 #include "fapcast/codec/face_geometry.hpp"
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "support/bad_inputs.hpp"
 #include "support/fap_sequences.hpp"
 
@@ -10,7 +10,7 @@
 
 #include <random>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 namespace fs = std::filesystem;
@@ -136,4 +136,4 @@ TEST(FapJson, DeepNestingIsASyntaxOrTypeErrorNotACrash) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

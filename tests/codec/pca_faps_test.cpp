@@ -11,7 +11,7 @@
 #include <limits>
 #include <random>
 
-namespace fapcast::codec {
+namespace fapcast {
 namespace {
 
 // A "mesh" whose vertices are the generic face's feature points, in map order.
@@ -224,4 +224,4 @@ TEST(PcaFaps, ToFapValueIsStdRoundSaturated) {
 }
 
 }  // namespace
-}  // namespace fapcast::codec
+}  // namespace fapcast

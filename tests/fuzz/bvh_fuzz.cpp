@@ -1,14 +1,14 @@
 // libFuzzer target for the BVH reader: any bytes either fail with InputError or give a document
 // that writes and reads back to itself.
 #include "fapcast/codec/bvh_text.hpp"
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 #include <cstdint>
 #include <cstdlib>
 #include <string_view>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapcast::codec;
+  using namespace fapcast;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   BvhDocument doc;
   try {

@@ -1,7 +1,7 @@
 // Fuzzes the C3D reader; what it accepts and the writer can hold must read back with the same
 // shape, labels and missing-sample mask.
-#include "fapcast/synth/c3d.hpp"
-#include "fapcast/synth/input_error.hpp"
+#include "fapcast/corpus/c3d.hpp"
+#include "fapcast/core/input_error.hpp"
 
 #include <cstdint>
 #include <cstdlib>
@@ -9,7 +9,7 @@
 #include <string_view>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapcast::synth;
+  using namespace fapcast;
   C3dFile file;
   try {
     file = read_c3d(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz");

@@ -8,10 +8,10 @@
 #include <fstream>
 #include <string>
 
-#include "fapcast/synth/articulation.hpp"
-#include "fapcast/synth/data_file_error.hpp"
-#include "fapcast/synth/face_model.hpp"
-#include "fapcast/synth/marker_map.hpp"
+#include "fapcast/talker/articulation.hpp"
+#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/face/face_model.hpp"
+#include "fapcast/face/marker_map.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   static const std::filesystem::path file =
@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
-  using namespace fapcast::synth;
+  using namespace fapcast;
   try { (void)read_obj_mesh(file); } catch (const DataFileError&) {}
   try { (void)read_sparse_delta(file, 1000); } catch (const DataFileError&) {}
   try { (void)read_marker_spec(file); } catch (const DataFileError&) {}

@@ -2,7 +2,7 @@
 // sequence that writes and reads back to itself and exports to BVH without trouble.
 #include "fapcast/codec/bvh_export.hpp"
 #include "fapcast/codec/bvh_text.hpp"
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/json_export.hpp"
 
 #include <cstdint>
@@ -10,7 +10,7 @@
 #include <string_view>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapcast::codec;
+  using namespace fapcast;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   FapJsonRead read;
   try {

@@ -2,13 +2,13 @@
 // accepted; an accepted input must round-trip through both writers (read, write, read gives the
 // same frames) and the strict writer must be a fixed point. Anything else aborts.
 #include "fapcast/codec/fap_text.hpp"
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 #include <cstdint>
 #include <cstdlib>
 #include <string_view>
 
-using namespace fapcast::codec;
+using namespace fapcast;
 
 namespace {
 void check(bool ok) {

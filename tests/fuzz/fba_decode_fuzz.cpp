@@ -1,15 +1,15 @@
 // libFuzzer target: the whole-file FBA decoder and the frame-at-a-time decoder on any bytes.
 // Properties checked: no crash, no error-free report with frames missing, the report's counts
 // add up to the frames returned.
-#include "fapcast/codec/fba_file.hpp"
-#include "fapcast/codec/fba_stream.hpp"
+#include "fapcast/fba/fba_file.hpp"
+#include "fapcast/fba/fba_stream.hpp"
 
 #include <cstdint>
 #include <cstdlib>
 #include <span>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapcast::codec;
+  using namespace fapcast;
   const std::span<const std::uint8_t> bytes(data, size);
   const FbaDecodeResult result = decode_fba(bytes);
   const auto& r = result.report;

@@ -1,7 +1,7 @@
 // libFuzzer target for the .glb reader: any bytes either fail with InputError or give a mesh
 // animation that writes and reads back to itself.
 #include "fapcast/codec/gltf_export.hpp"
-#include "fapcast/codec/input_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 #include <cstdint>
 #include <cstdlib>
@@ -9,7 +9,7 @@
 #include <string_view>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapcast::codec;
+  using namespace fapcast;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   MorphAnimation a;
   try {

@@ -1,14 +1,14 @@
 // Fuzzes read_lab: any input either reads or throws InputError, never crashes or over-allocates.
-#include "fapcast/synth/lab_file.hpp"
-#include "fapcast/synth/input_error.hpp"
+#include "fapcast/corpus/lab_file.hpp"
+#include "fapcast/core/input_error.hpp"
 
 #include <cstdint>
 #include <string_view>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    (void)fapcast::synth::read_lab(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz");
-  } catch (const fapcast::synth::InputError&) {
+    (void)fapcast::read_lab(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz");
+  } catch (const fapcast::InputError&) {
   }
   return 0;
 }

@@ -1,14 +1,14 @@
 // Fuzzes read_marker_csv: any input either reads or throws InputError, never crashes or over-allocates.
-#include "fapcast/synth/marker_csv.hpp"
-#include "fapcast/synth/input_error.hpp"
+#include "fapcast/corpus/marker_csv.hpp"
+#include "fapcast/core/input_error.hpp"
 
 #include <cstdint>
 #include <string_view>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    (void)fapcast::synth::read_marker_csv(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz");
-  } catch (const fapcast::synth::InputError&) {
+    (void)fapcast::read_marker_csv(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz");
+  } catch (const fapcast::InputError&) {
   }
   return 0;
 }

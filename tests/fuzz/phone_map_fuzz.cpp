@@ -6,11 +6,11 @@
 #include <stdexcept>
 #include <string_view>
 
-#include "fapcast/synth/input_error.hpp"
-#include "fapcast/synth/phone.hpp"
-#include "fapcast/synth/phone_map.hpp"
-#include "fapcast/synth/syllabified_lexicon.hpp"
-#include "fapcast/synth/text_frontend.hpp"
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/phonetics/phone.hpp"
+#include "fapcast/phonetics/phone_map.hpp"
+#include "fapcast/corpus/syllabified_lexicon.hpp"
+#include "fapcast/frontend/text_frontend.hpp"
 
 namespace {
 template <class F>
@@ -18,13 +18,13 @@ void expect_parse_or_invalid(F&& f) {
   try {
     f();
   } catch (const std::invalid_argument&) {  // symbol mappers
-  } catch (const fapcast::synth::InputError&) {  // text and file parsers
+  } catch (const fapcast::InputError&) {  // text and file parsers
   }
 }
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapcast::synth;
+  using namespace fapcast;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   expect_parse_or_invalid([&] { phones_from_ipa(text, "fuzz"); });
   expect_parse_or_invalid([&] { phone_from_espeak(text, "fuzz"); });

@@ -12,7 +12,7 @@
 #include <cstdlib>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapcast::transport;
+  using namespace fapcast;
   ReceiverOptions options;
   options.reorder_capacity = 8;
   RtpStreamReceiver receiver(options);

@@ -5,11 +5,11 @@
 #include <cstring>
 #include <vector>
 
-#include "fapcast/synth/input_error.hpp"
-#include "fapcast/synth/voice_file.hpp"
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/voice/voice_file.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  using namespace fapcast::synth;
+  using namespace fapcast;
   std::vector<std::uint64_t> aligned(size / 8 + 1);  // a mapping is page-aligned; mimic it
   if (size > 0) std::memcpy(aligned.data(), data, size);
   try {

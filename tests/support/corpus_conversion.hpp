@@ -11,12 +11,12 @@
 #include <stdexcept>
 #include <string>
 
-#include "fapcast/synth/c3d.hpp"
-#include "fapcast/synth/lab_file.hpp"
-#include "fapcast/synth/marker_csv.hpp"
-#include "fapcast/synth/textgrid.hpp"
-#include "fapcast/synth/trc.hpp"
-#include "fapcast/transport/file_io.hpp"
+#include "fapcast/corpus/c3d.hpp"
+#include "fapcast/corpus/lab_file.hpp"
+#include "fapcast/corpus/marker_csv.hpp"
+#include "fapcast/corpus/textgrid.hpp"
+#include "fapcast/corpus/trc.hpp"
+#include "fapcast/core/file_io.hpp"
 
 namespace fapcast::test {
 
@@ -26,10 +26,10 @@ enum class AlignmentFormat { textgrid, lab };
 inline std::string extension_of(MarkerFormat f) { return f == MarkerFormat::c3d ? ".c3d" : f == MarkerFormat::trc ? ".trc" : ".csv"; }
 
 // `set` with `factor` - 1 linearly interpolated frames between each pair (missing if either is).
-inline synth::MarkerSet upsampled(const synth::MarkerSet& set, int factor) {
+inline MarkerSet upsampled(const MarkerSet& set, int factor) {
   if (factor == 1 || set.frame_count() == 0) return set;
   const Eigen::Index frames = (set.frame_count() - 1) * factor + 1;
-  synth::MarkerSet out = synth::MarkerSet::zeros(frames, set.marker_count());
+  MarkerSet out = MarkerSet::zeros(frames, set.marker_count());
   out.labels = set.labels;
   out.frame_rate_hz = set.frame_rate_hz * factor;
   for (Eigen::Index k = 0; k < frames; ++k) {
@@ -54,39 +54,39 @@ inline void convert_corpus(const std::filesystem::path& from, const std::filesys
                            AlignmentFormat alignment, int upsample = 1) {
   namespace fs = std::filesystem;
   fs::create_directories(to);
-  nlohmann::json manifest = nlohmann::json::parse(transport::read_file(from / "manifest.json"));
+  nlohmann::json manifest = nlohmann::json::parse(read_file(from / "manifest.json"));
   const double rate = 60.0 * upsample;
   manifest["frame_rate_hz"] = rate;
   for (nlohmann::json& u : manifest["utterances"]) {
     const std::string id = u["id"];
     const std::string c3d_name = u["files"]["markers"];
     const std::string grid_name = u["files"]["alignment"];
-    const synth::C3dFile c3d = synth::read_c3d(transport::read_file(from / c3d_name), c3d_name);
-    const synth::MarkerSet set = upsampled(c3d.markers, upsample);
+    const C3dFile c3d = read_c3d(read_file(from / c3d_name), c3d_name);
+    const MarkerSet set = upsampled(c3d.markers, upsample);
     const std::string marker_name = id + extension_of(markers);
-    transport::write_file_atomically(to / marker_name, markers == MarkerFormat::c3d   ? synth::write_c3d(set, {synth::c3d_synthetic_parameter()})
-                                                       : markers == MarkerFormat::trc ? synth::write_trc(set, marker_name)
-                                                                                      : synth::write_marker_csv(set));
+    write_file_atomically(to / marker_name, markers == MarkerFormat::c3d   ? write_c3d(set, {c3d_synthetic_parameter()})
+                                                       : markers == MarkerFormat::trc ? write_trc(set, marker_name)
+                                                                                      : write_marker_csv(set));
     std::string alignment_name = grid_name;
     if (alignment == AlignmentFormat::lab) {
-      const synth::Alignment grid = synth::read_textgrid(transport::read_file(from / grid_name), grid_name);
-      const synth::LabelTier* phones = grid.find("phones");
+      const Alignment grid = read_textgrid(read_file(from / grid_name), grid_name);
+      const LabelTier* phones = grid.find("phones");
       if (phones == nullptr) throw std::runtime_error(grid_name + ": no phones tier");
-      synth::LabFile lab;
-      lab.unit = synth::LabTimeUnit::seconds;
-      for (synth::Interval iv : phones->intervals) {
+      LabFile lab;
+      lab.unit = LabTimeUnit::seconds;
+      for (Interval iv : phones->intervals) {
         if (iv.label.empty()) iv.label = "sil";
         lab.segments.push_back(iv);
       }
       alignment_name = id + ".lab";
-      transport::write_file_atomically(to / alignment_name, synth::write_lab(lab));
+      write_file_atomically(to / alignment_name, write_lab(lab));
     } else {
       fs::copy_file(from / grid_name, to / grid_name, fs::copy_options::overwrite_existing);
     }
     u["files"] = {{"markers", marker_name}, {"alignment", alignment_name}};
     u["frame_rate_hz"] = rate;
   }
-  transport::write_file_atomically(to / "manifest.json", manifest.dump(2) + "\n");
+  write_file_atomically(to / "manifest.json", manifest.dump(2) + "\n");
 }
 
 }  // namespace fapcast::test

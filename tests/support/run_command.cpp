@@ -67,8 +67,4 @@ CommandResult run_command(const std::string& command) {
   return r;
 }
 
-std::string fapcast(const std::string& args) {
-  return std::string("'") + FAPCAST_EXE + "' " + args;
-}
-
 }  // namespace fapcast::test

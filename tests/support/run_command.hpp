@@ -13,9 +13,6 @@ struct CommandResult {
 // Runs `command` under /bin/sh. Standard input is /dev/null.
 CommandResult run_command(const std::string& command);
 
-// The `fapcast` executable under test, quoted for the shell, followed by `args`.
-std::string fapcast(const std::string& args);
-
 // A fresh empty directory under the system's temporary directory, removed with everything in it
 // when the test process exits.
 std::string make_temp_dir(const std::string& tag);

@@ -2,7 +2,7 @@
 // A SYNTHETIC stand-in for a voice's search data: recordings of random phones whose PCA frames
 // hold a known per-class shape (so tests can see what was rendered) plus optional noise. Not a
 // voice: no mesh, no retargeting.
-#include "fapcast/synth/phone_graph.hpp"
+#include "fapcast/select/phone_graph.hpp"
 
 #include <Eigen/Core>
 
@@ -15,17 +15,17 @@
 namespace fapcast::test {
 
 struct SyntheticVoiceGraph {
-  std::vector<synth::PhoneState> states;
+  std::vector<PhoneState> states;
   Eigen::MatrixXf frames;  // corpus frames x k
-  std::unique_ptr<synth::PhoneGraph> graph;
+  std::unique_ptr<PhoneGraph> graph;
 };
 
 // Coefficient c of class v's shape: column 0 is -1 for bilabials (a closure) and 1 + v / 10
 // otherwise; column c > 0 is sin(v + c).
-inline float class_shape(synth::VisemeClass v, Eigen::Index c) {
+inline float class_shape(VisemeClass v, Eigen::Index c) {
   const auto i = static_cast<int>(v);
   if (c > 0) return static_cast<float>(std::sin(i + static_cast<int>(c)));
-  return v == synth::VisemeClass::kBilabial ? -1.0f : 1.0f + static_cast<float>(i) / 10.0f;
+  return v == VisemeClass::kBilabial ? -1.0f : 1.0f + static_cast<float>(i) / 10.0f;
 }
 
 // `recordings` x `phones_per_recording` states of random classes drawn from `classes` (all 21
@@ -34,11 +34,11 @@ inline float class_shape(synth::VisemeClass v, Eigen::Index c) {
 inline SyntheticVoiceGraph synthetic_voice_graph(std::uint32_t recordings, int phones_per_recording,
                                                  std::uint32_t frames_per_phone, Eigen::Index k,
                                                  std::uint64_t seed, float noise = 0.0f,
-                                                 std::vector<synth::VisemeClass> classes = {},
+                                                 std::vector<VisemeClass> classes = {},
                                                  bool junction_features = true,
                                                  std::uint32_t max_frames_per_phone = 0) {
   if (classes.empty())
-    for (std::size_t v = 0; v < synth::kVisemeClassCount; ++v) classes.push_back(static_cast<synth::VisemeClass>(v));
+    for (std::size_t v = 0; v < kVisemeClassCount; ++v) classes.push_back(static_cast<VisemeClass>(v));
   SyntheticVoiceGraph g;
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<std::size_t> pick(0, classes.size() - 1);
@@ -47,7 +47,7 @@ inline SyntheticVoiceGraph synthetic_voice_graph(std::uint32_t recordings, int p
   std::uint32_t f = 0;
   for (std::uint32_t u = 0; u < recordings; ++u)
     for (int p = 0; p < phones_per_recording; ++p) {
-      const synth::VisemeClass v = classes[pick(rng)];
+      const VisemeClass v = classes[pick(rng)];
       const std::uint32_t n = max_frames_per_phone > frames_per_phone ? count(rng) : frames_per_phone;
       g.states.push_back({u, v, {f, n}});
       f += n;
@@ -57,8 +57,8 @@ inline SyntheticVoiceGraph synthetic_voice_graph(std::uint32_t recordings, int p
     for (std::uint32_t n = s.frames.first; n < s.frames.first + s.frames.count; ++n)
       for (Eigen::Index c = 0; c < k; ++c)
         g.frames(n, c) = class_shape(s.viseme, c) + (noise > 0 ? noise * normal(rng) : 0.0f);
-  g.graph = junction_features ? std::make_unique<synth::PhoneGraph>(g.states, synth::junction_features(g.states, g.frames))
-                              : std::make_unique<synth::PhoneGraph>(g.states);
+  g.graph = junction_features ? std::make_unique<PhoneGraph>(g.states, fapcast::junction_features(g.states, g.frames))
+                              : std::make_unique<PhoneGraph>(g.states);
   return g;
 }
 

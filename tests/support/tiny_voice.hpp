@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "fapcast/synth/voice.hpp"
-#include "fapcast/synth/voice_file.hpp"
-#include "fapcast/synth/voice_graph.hpp"
+#include "fapcast/voice/voice.hpp"
+#include "fapcast/voice/voice_file.hpp"
+#include "fapcast/voice/voice_graph.hpp"
 
 namespace fapcast::test {
 
@@ -18,15 +18,15 @@ namespace fapcast::test {
 // coordinate r + 1; RBF weight row j is (-1)^j at coordinate 1 (vertex 0's y); centre j is
 // (0, -0.01 j, 0). Set coefficients to 3 x k when k > 1.
 struct TinyVoice {
-  synth::VoiceProvenance provenance;
-  synth::VoiceGraphData graph;
+  VoiceProvenance provenance;
+  VoiceGraphData graph;
   std::string feature_points;
-  synth::RowMajorMatrixXf coefficients{{0.5f}, {-0.5f}, {0.f}};
-  synth::SectionId skip{"----"};
+  RowMajorMatrixXf coefficients{{0.5f}, {-0.5f}, {0.f}};
+  SectionId skip{"----"};
   Eigen::Index vertices = 3;
   Eigen::Index components = 1;
   Eigen::Index centres = 2;
-  std::optional<synth::RowMajorMatrixXf> face_maps;  // FMAP, vertices x 9, when set
+  std::optional<RowMajorMatrixXf> face_maps;  // FMAP, vertices x 9, when set
 
   TinyVoice() {
     provenance.corpus = "hand-made";
@@ -39,57 +39,57 @@ struct TinyVoice {
     provenance.notes = {{"prototype_rule", "by hand"}};
     graph.utterances = {{0, 3}};
     graph.frame_count = 3;
-    graph.states = {{0, synth::VisemeClass::kSilence, {0, 1}}, {0, synth::VisemeClass::kBilabial, {1, 2}}};
-    graph.phones = {synth::Phone::SIL, synth::Phone::M};
-    const std::vector<synth::VoiceFeaturePoint> points = {{"8.1", 0, {0.0, -0.02, 0.1}}};
-    const std::vector<synth::VoiceRigidMarker> rigid = {{"H.temple_l", 0, {0.07, 0.03, 0.0}, {0.07, 0.03, 0.01}},
+    graph.states = {{0, VisemeClass::kSilence, {0, 1}}, {0, VisemeClass::kBilabial, {1, 2}}};
+    graph.phones = {Phone::SIL, Phone::M};
+    const std::vector<VoiceFeaturePoint> points = {{"8.1", 0, {0.0, -0.02, 0.1}}};
+    const std::vector<VoiceRigidMarker> rigid = {{"H.temple_l", 0, {0.07, 0.03, 0.0}, {0.07, 0.03, 0.01}},
                                                  {"H.temple_r", 1, {-0.07, 0.03, 0.0}, {-0.07, 0.03, 0.01}},
                                                  {"H.nose_bridge", 2, {0.0, 0.04, 0.09}, {0.0, 0.04, 0.1}}};
-    feature_points = synth::voice_feature_points_json(points, rigid);
+    feature_points = voice_feature_points_json(points, rigid);
   }
 
   // Puts 8.1 (vertex 0) and the three rigid markers (vertices 0, 1, 2) on `face_m` (3 x N,
   // metres): the voice's neutral face is then `face_m` at those vertices.
   void set_neutral_face(const Eigen::Matrix3Xf& face_m) {
     const auto at = [&](int v) { return Eigen::Vector3d(face_m.col(v).cast<double>()); };
-    const std::vector<synth::VoiceFeaturePoint> points = {{"8.1", 0, at(0)}};
-    const std::vector<synth::VoiceRigidMarker> rigid = {{"H.temple_l", 0, at(0), {0.07, 0.03, 0.01}},
+    const std::vector<VoiceFeaturePoint> points = {{"8.1", 0, at(0)}};
+    const std::vector<VoiceRigidMarker> rigid = {{"H.temple_l", 0, at(0), {0.07, 0.03, 0.01}},
                                                  {"H.temple_r", 1, at(1), {-0.07, 0.03, 0.01}},
                                                  {"H.nose_bridge", 2, at(2), {0.0, 0.04, 0.1}}};
-    feature_points = synth::voice_feature_points_json(points, rigid);
+    feature_points = voice_feature_points_json(points, rigid);
   }
 
   std::string bytes() const {
-    synth::VoiceFileWriter w;
-    auto add = [&](synth::SectionId id, auto matrix) {
+    VoiceFileWriter w;
+    auto add = [&](SectionId id, auto matrix) {
       if (!(id == skip)) w.add_matrix(id, matrix);
     };
-    if (!(synth::voice_section::kProvenance == skip)) w.add_provenance(provenance);
+    if (!(voice_section::kProvenance == skip)) w.add_provenance(provenance);
     const Eigen::Index d = 3 * vertices;
-    const synth::RowMajorMatrixXf ramp = synth::RowMajorMatrixXf(Eigen::RowVectorXf::LinSpaced(d, 0.f, static_cast<float>(d - 1)));
-    synth::RowMajorMatrixXf pc = synth::RowMajorMatrixXf::Zero(components, d), rbf = synth::RowMajorMatrixXf::Zero(centres, d);
-    synth::RowMajorMatrixXd centre = synth::RowMajorMatrixXd::Zero(centres, 3);
+    const RowMajorMatrixXf ramp = RowMajorMatrixXf(Eigen::RowVectorXf::LinSpaced(d, 0.f, static_cast<float>(d - 1)));
+    RowMajorMatrixXf pc = RowMajorMatrixXf::Zero(components, d), rbf = RowMajorMatrixXf::Zero(centres, d);
+    RowMajorMatrixXd centre = RowMajorMatrixXd::Zero(centres, 3);
     for (Eigen::Index r = 0; r < components; ++r) pc(r, r + 1) = 1.f;
     for (Eigen::Index j = 0; j < centres; ++j) {
       rbf(j, 1) = j % 2 == 0 ? 1.f : -1.f;
       if (j > 0) centre(j, 1) = -0.01 * static_cast<double>(j);  // (not -0.0: the fixtures are byte-exact)
     }
-    add(synth::voice_section::kPcaMean, ramp);
-    add(synth::voice_section::kPcaComponents, pc);
-    add(synth::voice_section::kPcaVariances, synth::RowMajorMatrixXf(synth::RowMajorMatrixXf::Constant(1, components, 0.25f)));
-    add(synth::voice_section::kFrameCoefficients, coefficients);
-    add(synth::voice_section::kRbfCentres, centre);
-    add(synth::voice_section::kRbfWeights, rbf);
-    add(synth::voice_section::kRbfOffset, ramp);
-    add(synth::voice_section::kRbfScalars, synth::RowMajorMatrixXd{{1e-4, 1e-6}});
-    if (!(synth::voice_section::kPhoneGraph == skip)) {
-      const auto g = synth::encode_voice_graph(graph);
-      w.add(synth::voice_section::kPhoneGraph, synth::ElementType::kBytes, 1, g.size(), g);
+    add(voice_section::kPcaMean, ramp);
+    add(voice_section::kPcaComponents, pc);
+    add(voice_section::kPcaVariances, RowMajorMatrixXf(RowMajorMatrixXf::Constant(1, components, 0.25f)));
+    add(voice_section::kFrameCoefficients, coefficients);
+    add(voice_section::kRbfCentres, centre);
+    add(voice_section::kRbfWeights, rbf);
+    add(voice_section::kRbfOffset, ramp);
+    add(voice_section::kRbfScalars, RowMajorMatrixXd{{1e-4, 1e-6}});
+    if (!(voice_section::kPhoneGraph == skip)) {
+      const auto g = encode_voice_graph(graph);
+      w.add(voice_section::kPhoneGraph, ElementType::kBytes, 1, g.size(), g);
     }
-    if (!(synth::voice_section::kFeaturePoints == skip))
-      w.add(synth::voice_section::kFeaturePoints, synth::ElementType::kJson, 1, feature_points.size(), 
+    if (!(voice_section::kFeaturePoints == skip))
+      w.add(voice_section::kFeaturePoints, ElementType::kJson, 1, feature_points.size(), 
             std::as_bytes(std::span(feature_points)));
-    if (face_maps) w.add_matrix(synth::voice_section::kFaceMaps, *face_maps);
+    if (face_maps) w.add_matrix(voice_section::kFaceMaps, *face_maps);
     return w.bytes();
   }
 };

@@ -1,7 +1,7 @@
 // The codec bridge: FAP tracks through FBA access units, RTP packets with loss, and back.
 #include "fapcast/transport/fba_track.hpp"
 
-#include "fapcast/codec/frame_rate.hpp"
+#include "fapcast/core/frame_rate.hpp"
 #include "fapcast/transport/rtp_streamer.hpp"
 #include "fapcast/transport/track_file.hpp"
 #include "support/run_command.hpp"
@@ -12,18 +12,18 @@
 #include <cmath>
 #include <random>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 
 using Clock = RtpStreamReceiver::Clock;
 
 // A SYNTHETIC smooth track: jaw and lip FAPs following slow sines.
-codec::FapSequence smooth_track(int n, codec::FrameRate rate) {
-  codec::FapSequence seq;
+FapSequence smooth_track(int n, FrameRate rate) {
+  FapSequence seq;
   seq.name = "synthetic";
   seq.rate = rate;
   for (int k = 0; k < n; ++k) {
-    codec::FapFrame f;
+    FapFrame f;
     f.set(3, static_cast<std::int32_t>(300 * std::sin(k * 0.11)));
     f.set(4, static_cast<std::int32_t>(-80 * std::sin(k * 0.07)));
     f.set(5, static_cast<std::int32_t>(60 * std::cos(k * 0.05)));
@@ -35,20 +35,20 @@ codec::FapSequence smooth_track(int n, codec::FrameRate rate) {
 
 TEST(FbaTrack, UnitsSitOnTheWavTimelineWithIntraAtThePeriod) {
   const auto seq = smooth_track(100, {30000, 1001});
-  codec::FbaEncoderOptions o;
+  FbaEncoderOptions o;
   o.intra_period = 12;
   std::vector<MediaUnit> units;
   ASSERT_FALSE(encode_track_units(seq, 44100, o, units));
   ASSERT_EQ(units.size(), 100u);
   for (std::size_t k = 0; k < units.size(); ++k) {
-    EXPECT_EQ(units[k].sample, codec::frame_to_sample(static_cast<std::int64_t>(k), {30000, 1001}, 44100));
+    EXPECT_EQ(units[k].sample, frame_to_sample(static_cast<std::int64_t>(k), {30000, 1001}, 44100));
     EXPECT_EQ(units[k].intra, k % 12 == 0) << k;
   }
 }
 
 struct LossCase {
   double loss;
-  codec::FrameRate rate;
+  FrameRate rate;
   std::int64_t clock;
 };
 class FbaOverLossyRtp : public testing::TestWithParam<LossCase> {};
@@ -60,7 +60,7 @@ TEST_P(FbaOverLossyRtp, DecodedFramesAreExactAndGapsHold) {
   const std::uint64_t seed = test::test_seed();
   std::mt19937_64 rng(seed);
   const auto seq = smooth_track(600, rate);
-  codec::FbaEncoderOptions o;
+  FbaEncoderOptions o;
   o.fap_quant = 0;
   o.intra_period = 15;
   std::vector<MediaUnit> units;
@@ -112,7 +112,7 @@ INSTANTIATE_TEST_SUITE_P(Table, FbaOverLossyRtp,
 
 TEST(ReceivedTrack, HostileTimestampsCannotGrowTheTrack) {
   const auto seq = smooth_track(50, {60, 1});
-  codec::FbaEncoderOptions o;
+  FbaEncoderOptions o;
   o.intra_period = 1;
   std::vector<MediaUnit> units;
   ASSERT_FALSE(encode_track_units(seq, 48000, o, units));
@@ -151,4 +151,4 @@ TEST(TrackFile, UnknownExtensionNamesTheFile) {
 }
 
 }  // namespace
-}  // namespace fapcast::transport
+}  // namespace fapcast

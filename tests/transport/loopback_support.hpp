@@ -17,10 +17,10 @@ namespace fapcast::test {
 
 // Unit i: 1 ms apart at 48 kHz (so a paced test of 300 units takes 0.3 s), intra every
 // `iperiod`, bytes that name i.
-inline std::vector<transport::MediaUnit> synthetic_units(int n, int iperiod, std::int64_t step = 48) {
-  std::vector<transport::MediaUnit> units;
+inline std::vector<MediaUnit> synthetic_units(int n, int iperiod, std::int64_t step = 48) {
+  std::vector<MediaUnit> units;
   for (int i = 0; i < n; ++i) {
-    transport::MediaUnit u;
+    MediaUnit u;
     u.sample = step * i;
     u.intra = i % iperiod == 0;
     u.bytes = {static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(i >> 8), 0xfa, 0xce};
@@ -32,22 +32,22 @@ inline std::vector<transport::MediaUnit> synthetic_units(int n, int iperiod, std
 
 // Receives on its own io_context in a thread until idle for `idle`.
 struct ReceiverThread {
-  transport::asio::io_context io;
-  transport::UdpReceiver receiver;
-  transport::RtpStreamReceiver stream;
-  std::vector<transport::ReceivedUnit> units;
+  asio::io_context io;
+  UdpReceiver receiver;
+  RtpStreamReceiver stream;
+  std::vector<ReceivedUnit> units;
   std::uint64_t filtered = 0;
   std::thread thread;
 
-  ReceiverThread(transport::udp::endpoint listen, transport::ReceiverOptions options,
-                 transport::ReceiverSocketOptions socket = {})
+  ReceiverThread(udp::endpoint listen, ReceiverOptions options,
+                 ReceiverSocketOptions socket = {})
       : receiver(io, listen, socket), stream(options) {}
   void start(std::chrono::milliseconds idle) {
     thread = std::thread([this, idle] {
-      transport::ReceiveLimits limits;
+      ReceiveLimits limits;
       limits.idle_timeout = idle;
       limits.max_duration = std::chrono::seconds(30);
-      filtered = receiver.run(stream, limits, [this](transport::ReceivedUnit&& u) { units.push_back(std::move(u)); });
+      filtered = receiver.run(stream, limits, [this](ReceivedUnit&& u) { units.push_back(std::move(u)); });
     });
   }
   void join() {
@@ -61,10 +61,10 @@ struct ReceiverThread {
 // sequence numbers it forwarded.
 class LossyShim {
  public:
-  LossyShim(transport::udp::endpoint to, double p_loss, double p_dup, double p_swap, std::uint64_t seed)
-      : in_(io_, transport::udp::endpoint(transport::asio::ip::make_address("127.0.0.1"), 0)),
-        out_(io_, transport::udp::v4()), to_(to), p_loss_(p_loss), p_dup_(p_dup), p_swap_(p_swap), rng_(seed) {}
-  transport::udp::endpoint endpoint() const { return in_.local_endpoint(); }
+  LossyShim(udp::endpoint to, double p_loss, double p_dup, double p_swap, std::uint64_t seed)
+      : in_(io_, udp::endpoint(asio::ip::make_address("127.0.0.1"), 0)),
+        out_(io_, udp::v4()), to_(to), p_loss_(p_loss), p_dup_(p_dup), p_swap_(p_swap), rng_(seed) {}
+  udp::endpoint endpoint() const { return in_.local_endpoint(); }
   void start(std::chrono::milliseconds idle) {
     thread_ = std::thread([this, idle] { run(idle); });
   }
@@ -82,20 +82,20 @@ class LossyShim {
   using Bytes = std::vector<std::uint8_t>;
   void send(const Bytes& p) {
     boost::system::error_code ec;
-    out_.send_to(transport::asio::buffer(p), to_, 0, ec);
+    out_.send_to(asio::buffer(p), to_, 0, ec);
     if (p.size() >= 4) forwarded.insert(static_cast<std::uint16_t>((p[2] << 8) | p[3]));
   }
   void run(std::chrono::milliseconds idle) {
     std::uniform_real_distribution<double> u(0, 1);
     std::array<std::uint8_t, 2048> buf;
-    transport::udp::endpoint from;
+    udp::endpoint from;
     std::optional<Bytes> held;
     auto last = std::chrono::steady_clock::now();
     bool pending = false;
     for (;;) {
       if (!pending) {
         pending = true;
-        in_.async_receive_from(transport::asio::buffer(buf), from, [&](const boost::system::error_code& ec, std::size_t n) {
+        in_.async_receive_from(asio::buffer(buf), from, [&](const boost::system::error_code& ec, std::size_t n) {
           pending = false;
           if (ec) return;
           last = std::chrono::steady_clock::now();
@@ -132,17 +132,17 @@ class LossyShim {
     io_.run_for(std::chrono::milliseconds(100));
   }
 
-  transport::asio::io_context io_;
-  transport::udp::socket in_;
-  transport::udp::socket out_;
-  transport::udp::endpoint to_;
+  asio::io_context io_;
+  udp::socket in_;
+  udp::socket out_;
+  udp::endpoint to_;
   double p_loss_, p_dup_, p_swap_;
   std::mt19937_64 rng_;
   std::thread thread_;
 };
 
-inline transport::udp::endpoint loopback(std::uint16_t port = 0) {
-  return {transport::asio::ip::make_address("127.0.0.1"), port};
+inline udp::endpoint loopback(std::uint16_t port = 0) {
+  return {asio::ip::make_address("127.0.0.1"), port};
 }
 
 }  // namespace fapcast::test

@@ -16,7 +16,7 @@
 #include <map>
 #include <sstream>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 
 using namespace std::chrono_literals;
@@ -390,4 +390,4 @@ TEST(Loopback, TsharkDecodesTheStreamAsRtp) {
 }
 
 }  // namespace
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 
 using Bytes = std::vector<std::uint8_t>;
@@ -129,4 +129,4 @@ TEST(UdpUrl, ResolveNamesTheUrlInErrors) {
 }
 
 }  // namespace
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -8,7 +8,7 @@
 
 #include <random>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 
 using Bytes = std::vector<std::uint8_t>;
@@ -150,4 +150,4 @@ TEST(RtpError, MessagesNameTheRule) {
 }
 
 }  // namespace
-}  // namespace fapcast::transport
+}  // namespace fapcast

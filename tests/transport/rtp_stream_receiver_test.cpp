@@ -8,7 +8,7 @@
 
 #include <random>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 
 using Bytes = std::vector<std::uint8_t>;
@@ -184,4 +184,4 @@ TEST(RtpStreamReceiver, HostileDatagramsAreBoundedAndCounted) {
 }
 
 }  // namespace
-}  // namespace fapcast::transport
+}  // namespace fapcast

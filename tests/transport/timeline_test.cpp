@@ -1,7 +1,7 @@
 #include "fapcast/transport/timeline.hpp"
 #include "fapcast/transport/track_resample.hpp"
 
-#include "fapcast/codec/frame_rate.hpp"
+#include "fapcast/core/frame_rate.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,12 +9,9 @@
 #include <limits>
 #include <random>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 
-using codec::FapFrame;
-using codec::FapSequence;
-using codec::FrameRate;
 
 // A track whose frame k carries k in open_jaw (FAP 3), so every output names its source.
 FapSequence numbered_track(FrameRate rate, std::int64_t n) {
@@ -33,7 +30,7 @@ TEST(Timeline, FramesCarryTheirFirstSample) {
   EXPECT_EQ(timed[1].sample, 1602);  // 48000 * 1001 / 30000 = 1601.6
   EXPECT_EQ(timed[4].sample, 6406);  // 6406.4
   for (const auto& t : timed)
-    EXPECT_EQ(codec::sample_to_frame(t.sample, {30000, 1001}, 48000), t.frame.value(3));
+    EXPECT_EQ(sample_to_frame(t.sample, {30000, 1001}, 48000), t.frame.value(3));
 }
 
 TEST(Timeline, DurationSampleConversionIsExactOverDays) {
@@ -157,4 +154,4 @@ TEST(Resample, EmptyStaysEmpty) {
 }
 
 }  // namespace
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -2,7 +2,7 @@
 
 #include "fapcast/transport/rtp_error.hpp"
 
-namespace fapcast::transport {
+namespace fapcast {
 
 void pack_fba_payload(bool intra, std::span<const std::uint8_t> access_unit,
                       std::vector<std::uint8_t>& out) {
@@ -17,4 +17,4 @@ std::error_code parse_fba_payload(std::span<const std::uint8_t> payload, FbaPayl
   return {};
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

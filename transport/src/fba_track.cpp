@@ -1,17 +1,17 @@
 #include "fapcast/transport/fba_track.hpp"
 
-#include "fapcast/codec/frame_rate.hpp"
+#include "fapcast/core/frame_rate.hpp"
 
 #include <algorithm>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 __extension__ typedef __int128 Int128;
 
 // The frame whose start is nearest `samples` after the first frame: the sender rounded each
 // frame's start to a whole sample, so a difference of two starts may be one sample off the
 // exact multiple; rounding to the nearest frame absorbs that.
-std::int64_t nearest_frame(std::int64_t samples, codec::FrameRate rate, std::int64_t clock_rate) {
+std::int64_t nearest_frame(std::int64_t samples, FrameRate rate, std::int64_t clock_rate) {
   if (samples < 0) return -1;
   const Int128 num = 2 * static_cast<Int128>(samples) * rate.numerator + static_cast<Int128>(clock_rate) * rate.denominator;
   const Int128 den = 2 * static_cast<Int128>(clock_rate) * rate.denominator;
@@ -19,18 +19,18 @@ std::int64_t nearest_frame(std::int64_t samples, codec::FrameRate rate, std::int
 }
 }  // namespace
 
-std::error_code encode_track_units(const codec::FapSequence& seq, std::int64_t clock_rate,
-                                   const codec::FbaEncoderOptions& options,
+std::error_code encode_track_units(const FapSequence& seq, std::int64_t clock_rate,
+                                   const FbaEncoderOptions& options,
                                    std::vector<MediaUnit>& out, std::int64_t* frame_index) {
-  codec::FbaFrameEncoder encoder(options, seq.rate);
-  codec::FbaAccessUnit au;
+  FbaFrameEncoder encoder(options, seq.rate);
+  FbaAccessUnit au;
   out.reserve(out.size() + seq.frames.size());
   for (std::size_t k = 0; k < seq.frames.size(); ++k) {
     if (const auto ec = encoder.encode(seq.frames[k], au)) {
       if (frame_index) *frame_index = static_cast<std::int64_t>(k);
       return ec;
     }
-    out.push_back({codec::frame_to_sample(static_cast<std::int64_t>(k), seq.rate, clock_rate),
+    out.push_back({frame_to_sample(static_cast<std::int64_t>(k), seq.rate, clock_rate),
                    std::move(au.bytes), au.intra});
     au = {};
   }
@@ -42,13 +42,13 @@ ReceivedTrack::ReceivedTrack(std::int64_t clock_rate, std::int64_t max_frames)
 
 std::error_code ReceivedTrack::add(const ReceivedUnit& unit) {
   if (unit.after_loss) decoder_.reset();  // prediction across a gap would be wrong
-  codec::FapFrame frame;
+  FapFrame frame;
   if (const auto ec = decoder_.decode(unit.bytes, frame)) {
     ++stats_.decode_errors;
     return ec;
   }
   ++stats_.decoded;
-  const codec::FrameRate rate = decoder_.rate();
+  const FrameRate rate = decoder_.rate();
   if (!last_timestamp_) {
     seq_.rate = rate;
     seq_.frames.push_back(frame);
@@ -84,4 +84,4 @@ std::error_code ReceivedTrack::add(const ReceivedUnit& unit) {
   return {};
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

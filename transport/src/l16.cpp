@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 std::size_t l16_frames_per_packet(std::int64_t sample_rate, int channels) {
   const std::size_t ten_ms = static_cast<std::size_t>(std::max<std::int64_t>(1, sample_rate / 100));
@@ -30,4 +30,4 @@ std::vector<std::int16_t> unpack_l16(std::span<const std::uint8_t> payload) {
   return out;
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -3,7 +3,7 @@
 #include "fapcast/transport/byte_order.hpp"
 #include "fapcast/transport/rtp_error.hpp"
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 constexpr std::int64_t kNtpUnixOffsetSeconds = 2'208'988'800;  // 1900-01-01 to 1970-01-01
 constexpr std::size_t kSenderReportBytes = 28;                 // header 8 + sender info 20
@@ -69,4 +69,4 @@ std::error_code parse_sender_report(std::span<const std::uint8_t> d, SenderRepor
   return {};
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -2,7 +2,7 @@
 
 #include <string>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 
 class RtpCategory final : public std::error_category {
@@ -38,4 +38,4 @@ const std::error_category& rtp_category() noexcept {
 
 std::error_code make_error_code(RtpErrc e) noexcept { return {static_cast<int>(e), rtp_category()}; }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -3,7 +3,7 @@
 #include "fapcast/transport/byte_order.hpp"
 #include "fapcast/transport/rtp_error.hpp"
 
-namespace fapcast::transport {
+namespace fapcast {
 
 std::size_t rtp_header_bytes(const RtpHeader& header) {
   return kRtpFixedHeaderBytes + 4u * (header.csrc_count & 0x0f);
@@ -70,4 +70,4 @@ std::error_code pack_rtp(const RtpHeader& h, std::span<const std::uint8_t> paylo
   return {};
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -6,7 +6,7 @@
 
 #include <cstdlib>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 // RFC 3550 A.1: a jump forward beyond kMaxDropout or back beyond kMaxMisorder needs
 // confirmation by the next packet before the receiver believes the sender restarted.
@@ -203,4 +203,4 @@ void RtpStreamReceiver::restart() {
   received_history_.reset();
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

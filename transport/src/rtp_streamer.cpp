@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <random>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 udp::endpoint offset_port(udp::endpoint e, int offset) {
   return {e.address(), static_cast<std::uint16_t>(e.port() + offset)};
@@ -181,4 +181,4 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Wav
   return report;
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

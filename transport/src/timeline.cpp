@@ -1,8 +1,8 @@
 #include "fapcast/transport/timeline.hpp"
 
-#include "fapcast/codec/frame_rate.hpp"
+#include "fapcast/core/frame_rate.hpp"
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 __extension__ typedef __int128 Int128;
 constexpr std::int64_t kNanosPerSecond = 1'000'000'000;
@@ -17,14 +17,14 @@ std::int64_t duration_to_samples(std::chrono::nanoseconds t, std::int64_t sample
   return static_cast<std::int64_t>(static_cast<Int128>(t.count()) * sample_rate / kNanosPerSecond);
 }
 
-std::vector<TimedFrame> place_on_timeline(const codec::FapSequence& seq,
+std::vector<TimedFrame> place_on_timeline(const FapSequence& seq,
                                           std::int64_t sample_rate) {
   std::vector<TimedFrame> out;
   out.reserve(seq.frames.size());
   for (std::size_t k = 0; k < seq.frames.size(); ++k)
-    out.push_back({codec::frame_to_sample(static_cast<std::int64_t>(k), seq.rate, sample_rate),
+    out.push_back({frame_to_sample(static_cast<std::int64_t>(k), seq.rate, sample_rate),
                    seq.frames[k]});
   return out;
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

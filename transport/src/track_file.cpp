@@ -1,14 +1,14 @@
 #include "fapcast/transport/track_file.hpp"
 
 #include "fapcast/codec/fap_text.hpp"
-#include "fapcast/codec/fba_file.hpp"
+#include "fapcast/fba/fba_file.hpp"
 #include "fapcast/codec/json_export.hpp"
-#include "fapcast/transport/file_io.hpp"
+#include "fapcast/core/file_io.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 std::optional<TrackFormat> track_format_of(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
@@ -19,18 +19,18 @@ std::optional<TrackFormat> track_format_of(const std::filesystem::path& path) {
   return std::nullopt;
 }
 
-codec::FapSequence read_track_file(const std::filesystem::path& path) {
+FapSequence read_track_file(const std::filesystem::path& path) {
   const auto format = track_format_of(path);
   if (!format) throw std::runtime_error(path.string() + ": track-format: expected .fap, .fba or .json");
   const std::string bytes = read_file(path);
   switch (*format) {
     case TrackFormat::kFapText:
-      return codec::read_fap_text(bytes, path.string()).sequence;
+      return read_fap_text(bytes, path.string()).sequence;
     case TrackFormat::kJson:
-      return codec::read_fap_json(bytes, path.string()).sequence;
+      return read_fap_json(bytes, path.string()).sequence;
     case TrackFormat::kFba: {
       const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
-      codec::FbaDecodeResult r = codec::decode_fba({data, bytes.size()});
+      FbaDecodeResult r = decode_fba({data, bytes.size()});
       if (!r.report.ok())
         throw std::runtime_error(path.string() + ": " +
                                  (r.report.errors.empty() ? std::string("fba: corrupt stream")
@@ -41,33 +41,33 @@ codec::FapSequence read_track_file(const std::filesystem::path& path) {
   throw std::logic_error("unreachable");
 }
 
-void write_track_file(const std::filesystem::path& path, const codec::FapSequence& seq,
+void write_track_file(const std::filesystem::path& path, const FapSequence& seq,
                       std::optional<std::int64_t> sample_rate) {
   const auto format = track_format_of(path);
   if (!format) throw std::runtime_error(path.string() + ": track-format: expected .fap, .fba or .json");
   switch (*format) {
     case TrackFormat::kFapText:
-      write_file_atomically(path, codec::write_fap_text(seq));
+      write_file_atomically(path, write_fap_text(seq));
       return;
     case TrackFormat::kJson: {
-      codec::FapJsonOptions options;
+      FapJsonOptions options;
       options.sample_rate = sample_rate;
-      write_file_atomically(path, codec::write_fap_json(seq, options));
+      write_file_atomically(path, write_fap_json(seq, options));
       return;
     }
     case TrackFormat::kFba: {
       // fap_quant 0 is lossless but has a narrower codable range; values it refuses were received
       // as multiples of QP[fap] * the sender's fap_quant (>= 1), which fap_quant 1 codes exactly
       // with previous-value prediction (chosen predictors would predict off that grid).
-      codec::FbaEncoderOptions options;
+      FbaEncoderOptions options;
       options.fap_quant = 0;
       std::vector<std::uint8_t> bytes;
       try {
-        bytes = codec::encode_fba(seq, options);
-      } catch (const codec::FbaEncodeError&) {
+        bytes = encode_fba(seq, options);
+      } catch (const FbaEncodeError&) {
         options.fap_quant = 1;
         options.choose_predictors = false;
-        bytes = codec::encode_fba(seq, options);
+        bytes = encode_fba(seq, options);
       }
       write_file_atomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
       return;
@@ -75,4 +75,4 @@ void write_track_file(const std::filesystem::path& path, const codec::FapSequenc
   }
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -7,7 +7,7 @@
 #include <limits>
 #include <span>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 __extension__ typedef __int128 Int128;
 
@@ -49,25 +49,25 @@ std::int32_t lerp_rounded_double(std::int32_t a, std::int32_t b, std::int64_t nu
 // The low-level FAPs (3..68) masked in both of two frames, listed once per pair of masks.
 class CommonFaps {
  public:
-  std::span<const int> of(const codec::FapMask& a, const codec::FapMask& b) {
+  std::span<const int> of(const FapMask& a, const FapMask& b) {
     if (count_ < 0 || !(a == a_) || !(b == b_)) {
       a_ = a;
       b_ = b;
       count_ = 0;
-      for (int fap = 3; fap <= codec::kFapCount; ++fap)
+      for (int fap = 3; fap <= kFapCount; ++fap)
         if (a.test(fap) && b.test(fap)) faps_[static_cast<std::size_t>(count_++)] = fap;
     }
     return {faps_.data(), static_cast<std::size_t>(count_)};
   }
 
  private:
-  codec::FapMask a_, b_;
-  std::array<int, codec::kFapCount> faps_{};
+  FapMask a_, b_;
+  std::array<int, kFapCount> faps_{};
   int count_ = -1;
 };
 }  // namespace
 
-SourcePosition source_position(std::int64_t j, codec::FrameRate from, codec::FrameRate to) {
+SourcePosition source_position(std::int64_t j, FrameRate from, FrameRate to) {
   // t_j = j * to.den / to.num seconds; source index = t_j * from.num / from.den.
   const Int128 num = static_cast<Int128>(j) * to.denominator * from.numerator;
   const Int128 den = static_cast<Int128>(to.numerator) * from.denominator;
@@ -80,15 +80,15 @@ SourcePosition source_position(std::int64_t j, codec::FrameRate from, codec::Fra
           static_cast<std::int64_t>(den)};
 }
 
-std::int64_t resampled_frame_count(std::int64_t n, codec::FrameRate from, codec::FrameRate to) {
+std::int64_t resampled_frame_count(std::int64_t n, FrameRate from, FrameRate to) {
   const Int128 num = static_cast<Int128>(n) * to.numerator * from.denominator;
   const Int128 den = static_cast<Int128>(to.denominator) * from.numerator;
   return static_cast<std::int64_t>((num + den - 1) / den);
 }
 
-codec::FapSequence resample_track(const codec::FapSequence& seq, codec::FrameRate to,
+FapSequence resample_track(const FapSequence& seq, FrameRate to,
                                   ResampleMode mode) {
-  codec::FapSequence out;
+  FapSequence out;
   out.name = seq.name;
   out.rate = to;
   const auto n = static_cast<std::int64_t>(seq.frames.size());
@@ -98,9 +98,9 @@ codec::FapSequence resample_track(const codec::FapSequence& seq, codec::FrameRat
   for (std::int64_t j = 0; j < count; ++j) {
     const SourcePosition p = source_position(j, seq.rate, to);
     const std::int64_t k = p.index < n ? p.index : n - 1;
-    codec::FapFrame& frame = out.frames.emplace_back(seq.frames[static_cast<std::size_t>(k)]);
+    FapFrame& frame = out.frames.emplace_back(seq.frames[static_cast<std::size_t>(k)]);
     if (mode == ResampleMode::kLinear && p.remainder != 0 && k + 1 < n) {
-      const codec::FapFrame& next = seq.frames[static_cast<std::size_t>(k + 1)];
+      const FapFrame& next = seq.frames[static_cast<std::size_t>(k + 1)];
       const std::span<const int> faps = common.of(frame.mask, next.mask);
       auto lerp_all = [&](auto lerp) {
         for (const int fap : faps) {
@@ -122,4 +122,4 @@ codec::FapSequence resample_track(const codec::FapSequence& seq, codec::FrameRat
   return out;
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

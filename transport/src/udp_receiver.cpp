@@ -2,7 +2,7 @@
 
 #include <array>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace {
 constexpr std::chrono::milliseconds kPollPeriod{5};  // how often held packets are re-examined
 }
@@ -115,4 +115,4 @@ std::uint64_t UdpReceiver::run(RtpStreamReceiver& stream, const ReceiveLimits& l
   return filtered;
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -1,6 +1,6 @@
 #include "fapcast/transport/udp_sender.hpp"
 
-namespace fapcast::transport {
+namespace fapcast {
 
 UdpSender::UdpSender(asio::io_context& io, udp::endpoint destination, SenderSocketOptions options)
     : socket_(io), destination_(destination) {
@@ -47,4 +47,4 @@ udp::endpoint UdpSender::local_endpoint() const {
   return socket_.local_endpoint(ec);
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -5,7 +5,7 @@
 #include <charconv>
 #include <stdexcept>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 std::error_code parse_udp_url(std::string_view text, UdpUrl& out) {
   constexpr std::string_view kScheme = "udp://";
@@ -51,4 +51,4 @@ udp::endpoint resolve_udp_url(asio::io_context& io, std::string_view text) {
   return results.begin()->endpoint();
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // One animated degree of freedom. Positions in the file's length unit, rotations in degrees.
 enum class BvhChannel : std::uint8_t { kXposition, kYposition, kZposition, kXrotation, kYrotation, kZrotation };
@@ -59,4 +59,4 @@ std::ostream& operator<<(std::ostream& out, const BvhDocument& doc);
 // (CHANNELS ... Zrotation Xrotation Yrotation gives R = Rz * Rx * Ry). Index i is joints[i].
 std::vector<Eigen::Affine3d> joint_world_transforms(const BvhDocument& doc, std::uint64_t k);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -9,7 +9,7 @@
 #include <span>
 #include <string_view>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 inline constexpr std::string_view kBvhHeadJoint = "head";
 inline constexpr std::string_view kBvhJawJoint = "jaw";
@@ -36,4 +36,4 @@ double jaw_angle_deg(std::int32_t open_jaw, double mns, double jaw_length);
 // sequence's rate is invalid.
 BvhDocument fap_to_bvh(const FapSequence& seq, const FaceGeometry& face);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

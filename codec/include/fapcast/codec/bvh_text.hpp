@@ -2,12 +2,13 @@
 // Reading and writing BVH text in the layout Blender's importer expects (spec/bvh.md): HIERARCHY,
 // ROOT/JOINT blocks with OFFSET then CHANNELS, End Site, MOTION, Frames:, Frame Time:, one line
 // of values per frame.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/bvh_document.hpp"
 
 #include <string>
 #include <string_view>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // Hard limits of the reader, so hostile files cannot exhaust memory or the stack.
 inline constexpr std::size_t kBvhMaxJoints = 4096;
@@ -23,4 +24,4 @@ BvhDocument read_bvh(std::string_view bytes, std::string_view source);
 // a name with whitespace, a parent out of order, motion size != frame_count * channel_count()).
 std::string write_bvh(const BvhDocument& doc);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // A neutral face in one length unit (cm for the default face). Axes as FeaturePointPositions:
 // x towards the face's own left, y up, z forward (out of the face, towards the viewer).
@@ -33,4 +33,4 @@ FaceGeometry generic_adult_face();
 // are shared or they coincide.
 FaceGeometry fit_generic_face(const FeaturePointPositions& neutral);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string_view>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // "up" +y, "down" -y, "left" +x, "right" -x, "forward" +z; nullopt for directions that are not a
 // translation (rotations of eyeballs and head, "growing" pupils, "concave-up" tongue roll).
@@ -17,4 +17,4 @@ std::optional<Eigen::Vector3d> direction_axis(std::string_view direction);
 // The axis of FAP `number` (1..68): direction_axis of its row.
 std::optional<Eigen::Vector3d> fap_axis(int number);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -1,7 +1,7 @@
 #pragma once
 // One frame of facial animation parameters, and a sequence of them at a frame rate.
 #include "fapcast/codec/fap_table.hpp"
-#include "fapcast/codec/frame_rate.hpp"
+#include "fapcast/core/frame_rate.hpp"
 
 #include <array>
 #include <bitset>
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // FAP 1: a blend of two of the 14 MPEG-4 visemes (0 = none).
 struct VisemeField {
@@ -88,4 +88,4 @@ struct FapSequence {
 // Prints the header and, for short sequences, every frame (so a failing test shows what differs).
 std::ostream& operator<<(std::ostream& out, const FapSequence& seq);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // One FAP over a sequence: in how many frames it is masked, and the smallest and largest value
 // it takes there. For FAP 1 (viseme) and FAP 2 (expression) min/max are of select1.
@@ -33,4 +33,4 @@ struct FapStats {
 // Computes the statistics in one pass over the frames.
 FapStats fap_stats(const FapSequence& seq);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

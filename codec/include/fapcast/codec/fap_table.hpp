@@ -11,7 +11,7 @@
 #include <span>
 #include <string_view>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 inline constexpr int kFapCount = 68;    // FAPs are numbered 1..68
 inline constexpr int kGroupCount = 10;  // FAP groups are numbered 1..10
@@ -50,4 +50,4 @@ struct FapRange {
 };
 FapRange fap_group(int group);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

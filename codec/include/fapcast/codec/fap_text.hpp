@@ -1,5 +1,6 @@
 #pragma once
 // Reading and writing `.fap` text files in every dialect real players write (spec/fap-text.md).
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 
 #include <cstdint>
@@ -7,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // How the mask lines are laid out.
 enum class FapTextDialect {
@@ -75,4 +76,4 @@ FapFrame as_mask69(const FapFrame& frame);
 // How many frames the 69-token dialect cannot carry exactly (as_mask69(f) != f).
 std::size_t mask69_lossy_frames(const FapSequence& seq);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

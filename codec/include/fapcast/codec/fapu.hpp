@@ -5,7 +5,7 @@
 #include <ostream>
 #include <string_view>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // The six FAPUs. `kNone` marks the high-level FAPs 1 and 2, which carry indices, not lengths.
 enum class Fapu : std::uint8_t {
@@ -24,4 +24,4 @@ std::ostream& operator<<(std::ostream& out, Fapu unit);
 // One angle unit, in radians.
 inline constexpr double kAngleUnitRad = 1e-5;
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

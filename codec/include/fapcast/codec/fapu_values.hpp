@@ -7,7 +7,7 @@
 
 #include <map>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // Neutral positions of feature points, in the face's length unit (cm for the ICT face).
 // Axes: x towards the face's own left, y up, z out of the face (towards the viewer).
@@ -38,4 +38,4 @@ inline constexpr FeaturePoint kFapuPoints[] = {{9, 15}, {2, 2}, {8, 3}, {8, 4},
 // mirrored gives negative distances).
 FapuValues measure_fapu(const FeaturePointPositions& neutral);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // A feature-point label: group.index, e.g. {2, 1} for 2.1. Groups 2-11 are defined by the
 // standard; index starts at 1. Comparable and printable ("2.1").
@@ -25,4 +25,4 @@ std::ostream& operator<<(std::ostream& out, FeaturePoint fp);
 // group in 2..11 and index in 1..99.
 std::optional<FeaturePoint> parse_feature_point(std::string_view label);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -6,6 +6,8 @@
 #include "fapcast/codec/fapu_values.hpp"
 #include "fapcast/codec/feature_point.hpp"
 
+#include "fapcast/core/eigen_types.hpp"
+
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -13,9 +15,8 @@
 #include <span>
 #include <vector>
 
-namespace fapcast::codec {
+namespace fapcast {
 
-using RowMajorMatrixXf = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
 // Which mesh vertex carries a feature point.
 struct FeaturePointVertex {
@@ -43,4 +44,4 @@ FeaturePointBasis restrict_basis(const Eigen::Ref<const RowMajorMatrixXf>& mean,
                                  std::span<const FeaturePointVertex> points,
                                  FeaturePointPositions neutral);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

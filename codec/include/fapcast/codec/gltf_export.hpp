@@ -8,9 +8,10 @@
 #include <string_view>
 #include <vector>
 
-#include "fapcast/codec/frame_rate.hpp"
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/core/frame_rate.hpp"
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // glTF units and axes: metres, +y up, +z towards the viewer (the face's front), right-handed.
 struct MorphAnimation {
@@ -41,4 +42,4 @@ std::string write_glb(const MorphAnimation& animation);
 // times as the nearest integer frames per second.
 MorphAnimation read_glb(std::string_view bytes, const std::string& source);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -3,6 +3,7 @@
 // rate, frame count, optional sample rate and FAPU) and one object per frame with its time in
 // seconds, its WAV sample when a sample rate is given, its named FAP values and the viseme and
 // expression fields. Output is deterministic: fixed key order, FAPs in FAP-number order.
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/fapu_values.hpp"
 
@@ -11,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 inline constexpr std::string_view kFapJsonFormat = "fapcast-fap-json";
 inline constexpr int kFapJsonVersion = 1;
@@ -38,4 +39,4 @@ struct FapJsonRead {
 // pointer of the offending value ("/frames/3/faps/open_jaw") for everything else.
 FapJsonRead read_fap_json(std::string_view bytes, std::string_view source);
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-namespace fapcast::codec {
+namespace fapcast {
 
 // The points that ride on the jaw: lower lip (2.3, 2.8, 2.9, 8.2, 8.7, 8.8), chin boss (2.10)
 // and tongue (6.1-6.4). A player opens the jaw and then adds their own FAPs, so their
@@ -36,4 +36,4 @@ std::int32_t to_fap_value(int fap, double amount, const FapuValues& fapu);
 std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const FeaturePointBasis& basis,
                                   const PcaFapOptions& options = {});
 
-}  // namespace fapcast::codec
+}  // namespace fapcast

@@ -19,7 +19,7 @@
 #include <boost/asio/ip/unicast.hpp>
 #include <boost/asio/steady_timer.hpp>
 
-namespace fapcast::transport {
+namespace fapcast {
 namespace asio = boost::asio;
 using udp = boost::asio::ip::udp;
-}  // namespace fapcast::transport
+}  // namespace fapcast

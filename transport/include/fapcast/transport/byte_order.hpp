@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 inline std::uint16_t load_be16(const std::uint8_t* p) {
   return static_cast<std::uint16_t>((p[0] << 8) | p[1]);
@@ -21,4 +21,4 @@ inline void append_be32(std::vector<std::uint8_t>& out, std::uint32_t v) {
   append_be16(out, static_cast<std::uint16_t>(v));
 }
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -7,7 +7,7 @@
 #include <system_error>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 inline constexpr std::uint8_t kFbaIntraFlag = 0x80;
 
@@ -23,4 +23,4 @@ void pack_fba_payload(bool intra, std::span<const std::uint8_t> access_unit,
 // Splits a payload. Errors: RtpErrc::kMissingPayloadHeader for an empty payload.
 std::error_code parse_fba_payload(std::span<const std::uint8_t> payload, FbaPayload& out);
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

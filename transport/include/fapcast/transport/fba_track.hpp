@@ -3,7 +3,7 @@
 // frame placed on the WAV timeline (sender), and received units become a track again
 // (receiver), frames placed by their RTP timestamps so that loss leaves holes, not a shift.
 #include "fapcast/codec/fap_frame.hpp"
-#include "fapcast/codec/fba_stream.hpp"
+#include "fapcast/fba/fba_stream.hpp"
 #include "fapcast/transport/media_unit.hpp"
 #include "fapcast/transport/rtp_stream_receiver.hpp"
 
@@ -12,12 +12,12 @@
 #include <system_error>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 // Encodes every frame of `seq` as one access unit at sample frame_to_sample(k, seq.rate,
 // clock_rate). Returns the encoder's error for the first frame it refuses (and `frame_index`).
-std::error_code encode_track_units(const codec::FapSequence& seq, std::int64_t clock_rate,
-                                   const codec::FbaEncoderOptions& options,
+std::error_code encode_track_units(const FapSequence& seq, std::int64_t clock_rate,
+                                   const FbaEncoderOptions& options,
                                    std::vector<MediaUnit>& out, std::int64_t* frame_index = nullptr);
 
 struct ReceivedTrackStats {
@@ -42,18 +42,18 @@ class ReceivedTrack {
   // Decodes one unit and places its frame. Errors come from the FBA decoder.
   std::error_code add(const ReceivedUnit& unit);
 
-  const codec::FapSequence& sequence() const { return seq_; }
+  const FapSequence& sequence() const { return seq_; }
   const ReceivedTrackStats& stats() const { return stats_; }
 
  private:
   std::int64_t clock_rate_;
   std::int64_t max_frames_;
-  codec::FbaFrameDecoder decoder_;
-  codec::FapSequence seq_;
+  FbaFrameDecoder decoder_;
+  FapSequence seq_;
   ReceivedTrackStats stats_;
   std::optional<std::uint32_t> last_timestamp_;
   std::int64_t position_ = 0;  // samples since the first decoded frame's timestamp
   std::int64_t last_frame_ = -1;
 };
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 // Sampling instants per L16 packet: 10 ms of audio, fewer when 10 ms of all channels would not
 // fit in one datagram (always >= 1). `channels` 1..255, `sample_rate` >= 1.
@@ -16,4 +16,4 @@ void pack_l16(std::span<const std::int16_t> interleaved, std::vector<std::uint8_
 // Decodes a payload into host-order samples (an odd trailing byte is ignored).
 std::vector<std::int16_t> unpack_l16(std::span<const std::uint8_t> payload);
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

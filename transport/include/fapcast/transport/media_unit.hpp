@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 struct MediaUnit {
   std::int64_t sample = 0;          // position on the timeline, in samples of the RTP clock (>= 0)
@@ -12,4 +12,4 @@ struct MediaUnit {
   bool operator==(const MediaUnit&) const = default;
 };
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

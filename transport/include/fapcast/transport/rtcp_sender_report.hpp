@@ -9,7 +9,7 @@
 #include <system_error>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 inline constexpr std::uint8_t kRtcpSenderReportType = 200;
 
@@ -48,4 +48,4 @@ void pack_sdes_cname(std::uint32_t ssrc, std::string_view cname, std::vector<std
 // and anything after are skipped). Errors: RtpErrc::kBadRtcp.
 std::error_code parse_sender_report(std::span<const std::uint8_t> datagram, SenderReport& out);
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

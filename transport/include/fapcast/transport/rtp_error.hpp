@@ -2,7 +2,7 @@
 // Why the RTP layer refused a packet or a call: std::error_code values in category "fapcast.rtp".
 #include <system_error>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 enum class RtpErrc {
   kTruncatedHeader = 1,     // fewer than 12 bytes
@@ -24,7 +24,7 @@ enum class RtpErrc {
 const std::error_category& rtp_category() noexcept;
 std::error_code make_error_code(RtpErrc e) noexcept;
 
-}  // namespace fapcast::transport
+}  // namespace fapcast
 
 template <>
-struct std::is_error_code_enum<fapcast::transport::RtpErrc> : std::true_type {};
+struct std::is_error_code_enum<fapcast::RtpErrc> : std::true_type {};

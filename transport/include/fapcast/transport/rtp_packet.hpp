@@ -7,7 +7,7 @@
 #include <system_error>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 inline constexpr std::uint8_t kRtpVersion = 2;
 inline constexpr std::size_t kRtpFixedHeaderBytes = 12;
@@ -49,4 +49,4 @@ std::error_code pack_rtp(const RtpHeader& header, std::span<const std::uint8_t> 
 // Bytes the header of `header` takes (12 + 4 per CSRC; extension not included).
 std::size_t rtp_header_bytes(const RtpHeader& header);
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

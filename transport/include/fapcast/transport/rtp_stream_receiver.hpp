@@ -16,7 +16,7 @@
 #include <system_error>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 struct ReceiverOptions {
   std::uint8_t payload_type = kDefaultFbaPayloadType;  // others are refused
@@ -107,4 +107,4 @@ class RtpStreamReceiver {
   Clock::time_point epoch_{};
 };
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -8,7 +8,7 @@
 #include "fapcast/transport/rtcp_sender_report.hpp"
 #include "fapcast/transport/rtp_packet.hpp"
 #include "fapcast/transport/udp_sender.hpp"
-#include "fapcast/transport/wav_audio.hpp"
+#include "fapcast/core/wav_audio.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -18,7 +18,7 @@
 #include <system_error>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 // The numbering of one RTP stream: RFC 3550 wants the first sequence number and timestamp
 // random; tests fix them.
@@ -83,4 +83,4 @@ class RtpStreamer {
   udp::endpoint destination_;
 };
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

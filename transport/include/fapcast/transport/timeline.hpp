@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 // Default timeline clock when there is no WAV: 48 kHz, a common audio rate that every common
 // frame rate (24, 25, 30, 50, 60 and the 1001-rates up to rounding) divides well.
@@ -15,7 +15,7 @@ inline constexpr std::int64_t kDefaultSampleRate = 48'000;
 
 struct TimedFrame {
   std::int64_t sample = 0;  // first sample of the WAV timeline at which the frame is shown
-  codec::FapFrame frame;
+  FapFrame frame;
   bool operator==(const TimedFrame&) const = default;
 };
 
@@ -24,8 +24,8 @@ struct TimedFrame {
 std::chrono::nanoseconds samples_to_duration(std::int64_t sample, std::int64_t sample_rate);
 std::int64_t duration_to_samples(std::chrono::nanoseconds t, std::int64_t sample_rate);
 
-// Places frame k of `seq` at codec::frame_to_sample(k, seq.rate, sample_rate).
+// Places frame k of `seq` at frame_to_sample(k, seq.rate, sample_rate).
 // Preconditions: seq.rate.valid(), sample_rate >= 1.
-std::vector<TimedFrame> place_on_timeline(const codec::FapSequence& seq, std::int64_t sample_rate);
+std::vector<TimedFrame> place_on_timeline(const FapSequence& seq, std::int64_t sample_rate);
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 enum class ResampleMode {
   // Output frame j shows source frame k = floor(j * from_fps / to_fps): the frame on screen at
@@ -24,13 +24,13 @@ struct SourcePosition {
   std::int64_t remainder = 0;    // 0 <= remainder < denominator
   std::int64_t denominator = 1;  // to.numerator * from.denominator
 };
-SourcePosition source_position(std::int64_t j, codec::FrameRate from, codec::FrameRate to);
+SourcePosition source_position(std::int64_t j, FrameRate from, FrameRate to);
 
 // Number of output frames covering the source's duration N / from_fps: ceil(N * to / from).
-std::int64_t resampled_frame_count(std::int64_t n, codec::FrameRate from, codec::FrameRate to);
+std::int64_t resampled_frame_count(std::int64_t n, FrameRate from, FrameRate to);
 
 // The track at rate `to`. Preconditions: both rates valid. An empty track stays empty.
-codec::FapSequence resample_track(const codec::FapSequence& seq, codec::FrameRate to,
+FapSequence resample_track(const FapSequence& seq, FrameRate to,
                                   ResampleMode mode);
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

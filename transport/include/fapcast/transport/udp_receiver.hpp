@@ -10,7 +10,7 @@
 #include <optional>
 #include <system_error>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 struct ReceiverSocketOptions {
   std::optional<asio::ip::address> source;     // accept datagrams from this address only
@@ -48,4 +48,4 @@ class UdpReceiver {
   ReceiverSocketOptions options_;
 };
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -7,7 +7,7 @@
 #include <span>
 #include <system_error>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 struct SenderSocketOptions {
   std::optional<int> ttl;                             // hops (multicast TTL or unicast hop limit)
@@ -37,4 +37,4 @@ class UdpSender {
   udp::endpoint destination_;
 };
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <system_error>
 
-namespace fapcast::transport {
+namespace fapcast {
 
 struct UdpUrl {
   std::string host;        // without brackets
@@ -22,4 +22,4 @@ std::error_code parse_udp_url(std::string_view text, UdpUrl& out);
 // std::runtime_error naming the URL when it is malformed or the name does not resolve.
 udp::endpoint resolve_udp_url(asio::io_context& io, std::string_view text);
 
-}  // namespace fapcast::transport
+}  // namespace fapcast

@@ -1,0 +1,118 @@
+// `fapcast eval synth`: the held-out evaluation of synthesis (spec/evaluation.md): SYNTHETIC
+// sentences recorded by the voice's reference actor, synthesised from their own phone timing by
+// the variable-length search and two baselines, scored on the target face.
+#include "command.hpp"
+#include "default_voice.hpp"
+#include "fapcast/eval/svg_plot.hpp"
+#include "fapcast/eval/synthesis_report.hpp"
+
+#include "fapcast/face/face_model.hpp"
+#include "fapcast/eval/held_out_sentences.hpp"
+#include "fapcast/talker/reference_talker.hpp"
+#include "fapcast/eval/synthesis_evaluation.hpp"
+#include "fapcast/synthesis/synthesis.hpp"
+#include "fapcast/voice/voice.hpp"
+#include "fapcast/core/file_io.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+
+namespace {
+using namespace fapcast;
+
+// The method under test: synthesize() - the Viterbi search over the voice's phone graph and
+// render_units - from the utterance's own timed phones, as `fapcast say` runs it.
+NamedSystem variable_length_system(const Voice& voice, SynthesisOptions options) {
+  return {"variable-length", [&voice, options](const HeldOutUtterance& u) {
+            const auto track = synthesize(voice.graph(), voice.frame_coefficients(), u.speech.phones,
+                                                 u.speech.audio.sample_rate_hz,
+                                                 static_cast<std::int64_t>(u.speech.audio.samples.size()), options, u.id);
+            return SystemOutput{track.pca_frames, track.search.units.size()};
+          }};
+}
+
+const cli::Registration reg{"71-eval-synth", [](CLI::App& app) {
+  struct Args {
+    std::string voice;
+    std::size_t count = kHeldOutSentences.size();
+    std::uint64_t seed = 2;
+    std::string plots;
+    std::string json;
+    double beta = 0.0;
+    std::size_t max_active = 0;
+    double duration_weight = 0.0;
+    bool boundary_joins = false;
+    bool quiet = false;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = cli::command_group(app, "eval", "Evaluate retargeting and synthesis by the paper's measures")
+                  ->add_subcommand("synth",
+                                   "Held-out SYNTHETIC sentences recorded by the voice's reference actor, "
+                                   "synthesised from their own timing by the variable-length search, diviseme "
+                                   "concatenation and dominance interpolation; lip and feature-point errors");
+  cmd->add_option("--voice", args->voice, "Voice file (.fapv); default: the cached default voice, built on first use");
+  cmd->add_option("--count", args->count, "Held-out sentences to record and synthesise")
+      ->check(CLI::Range(std::size_t{1}, kHeldOutSentences.size()))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the held-out takes' variation (the voice's corpus uses its own)")
+      ->capture_default_str();
+  cmd->add_option("--beta", args->beta, "Weight of the junction smoothness in the search's cost (0: fewest units)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--max-active", args->max_active, "Cap on active states per phone in the search (0: none)")
+      ->capture_default_str();
+  cmd->add_option("--duration-weight", args->duration_weight,
+                  "Weight of the duration term in the search's cost: ln^2 of each phone's time warp (0: none)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd->add_flag("--boundary-joins", args->boundary_joins,
+                "Variable-length units hand over at phone boundaries (default: in the middle of the phone before)");
+  cmd->add_option("--plots", args->plots, "Directory for one SVG of lip curves per sentence (created)");
+  cmd->add_option("--json", args->json, "Write the results as JSON (atomically)");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
+  cmd->callback([args] {
+    namespace fs = std::filesystem;
+    const fs::path voice_path = args->voice.empty() ? cli::ensure_default_voice(args->quiet) : fs::path(args->voice);
+    const auto voice = Voice::open(voice_path);
+    if (!voice.provenance().synthetic)
+      throw std::runtime_error(voice_path.string() + ": eval synth records held-out sentences with the reference "
+                               "talker, so it needs a voice built from a reference corpus (provenance synthetic)");
+    const FaceModel actor = reference_actor(ict_face_model(), voice.provenance().seed);
+    if (!args->quiet) std::cerr << "recording " << args->count << " held-out sentences (seed " << args->seed << ")\n";
+    const auto held = record_held_out(actor, args->seed, args->count);
+    SynthesisOptions options;
+    options.search.beta = args->beta;
+    if (args->max_active > 0) options.search.max_active = args->max_active;
+    options.search.duration_weight = args->duration_weight;
+    options.render.join_mid_phone = !args->boundary_joins;
+    const std::vector<NamedSystem> systems{
+        variable_length_system(voice, options),
+        diviseme_system(voice.graph(), voice.frame_coefficients()),
+        diviseme_system(voice.graph(), voice.frame_coefficients(), {}, DivisemeChoiceRule::kFirst),
+        dominance_system(voice.graph(), voice.frame_coefficients())};
+    const auto report = evaluate_synthesis(evaluation_face(voice), systems, held);
+
+    std::ostringstream command;
+    command << "fapcast eval synth" << (args->voice.empty() ? "" : " --voice " + args->voice) << " --count "
+            << args->count << " --seed " << args->seed;
+    if (args->beta > 0) command << " --beta " << args->beta;
+    if (args->max_active > 0) command << " --max-active " << args->max_active;
+    if (args->duration_weight > 0) command << " --duration-weight " << args->duration_weight;
+    if (args->boundary_joins) command << " --boundary-joins";
+    const fapcast::EvaluationContext context{voice_path.string(), args->seed, command.str()};
+    std::cout << fapcast::format_evaluation_table(report, context);
+    if (!args->json.empty())
+      write_file_atomically(args->json, fapcast::evaluation_json(report, context).dump(2) + "\n");
+    if (!args->plots.empty()) {
+      fs::create_directories(args->plots);
+      for (std::size_t u = 0; u < report.utterances.size(); ++u)
+        write_file_atomically(fs::path(args->plots) / (report.utterances[u].id + ".svg"),
+                                         fapcast::svg_line_plot(fapcast::lip_curve_plot(report, u)));
+    }
+  });
+}};
+
+}  // namespace

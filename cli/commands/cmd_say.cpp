@@ -1,0 +1,40 @@
+// `fapcast say "TEXT" -o OUT.fap|OUT.glb [--wav OUT.wav] [--voice V] [--fps N] [--expression E] ...`:
+// speaks the text with espeak-ng and animates it (spec/synthesis.md). Argument parsing only.
+#include "command.hpp"
+#include "synthesis_cli.hpp"
+
+#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/frontend/text_frontend.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+
+namespace {
+using namespace fapcast;
+
+const cli::Registration reg{"20-say", [](CLI::App& app) {
+  struct Args {
+    std::string text;
+    std::string wav;
+    cli::SynthesisArgs synthesis;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = cli::add_synthesis_command(
+      app, "say", "Speak English text (espeak-ng) and animate it: a FAP track or a glTF mesh in sync with the WAV",
+      args->synthesis, [args] {
+        const Speech speech = speak(args->text);
+        if (speech.phones.empty()) throw std::runtime_error("say: TEXT: empty-text: nothing to say");
+        // A .glb is a mesh for a player: its sound goes beside it unless told where.
+        std::string wav = args->wav;
+        if (wav.empty() && cli::is_mesh_output(args->synthesis.output))
+          wav = std::filesystem::path(args->synthesis.output).replace_extension(".wav").string();
+        if (!wav.empty()) write_wav(wav, speech.audio);
+        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate_hz,
+                                  static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");
+      });
+  cmd->add_option("TEXT", args->text, "The text (UTF-8)")->required();
+  cmd->add_option("--wav", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");
+}};
+
+}  // namespace

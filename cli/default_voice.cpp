@@ -1,0 +1,112 @@
+#include "default_voice.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <ctime>
+#include <iostream>
+#include <stdexcept>
+
+#include "fapcast/core/data_root.hpp"
+#include "fapcast/talker/reference_talker.hpp"
+#include "fapcast/builder/voice_build.hpp"
+#include "fapcast/core/file_io.hpp"
+#include "recording_script_options.hpp"
+
+#ifndef FAPCAST_VERSION
+#define FAPCAST_VERSION "unknown"
+#endif
+
+namespace fapcast::cli {
+namespace fs = std::filesystem;
+namespace {
+
+std::string env(const char* name) {
+  const char* v = std::getenv(name);
+  return v ? std::string(v) : std::string();
+}
+
+// The reference corpus the default voice is built from.
+constexpr std::uint64_t kDefaultVoiceSeed = 1;
+
+}  // namespace
+
+fs::path default_voice_path() {
+  fs::path dir;
+  if (const std::string cache = env("FAPCAST_CACHE_DIR"); !cache.empty()) {
+    dir = cache;
+  } else if (const std::string xdg = env("XDG_CACHE_HOME"); !xdg.empty()) {
+    dir = fs::path(xdg) / "fapcast";
+  } else if (const std::string home = env("HOME"); !home.empty()) {
+    dir = fs::path(home) / ".cache" / "fapcast";
+  } else {
+    throw std::runtime_error("default voice: set FAPCAST_CACHE_DIR, XDG_CACHE_HOME or HOME (no cache directory)");
+  }
+  return dir / "reference-seed1.fapv";
+}
+
+std::string voice_build_time_utc() {
+  std::time_t t = 0;
+  if (const std::string epoch = env("SOURCE_DATE_EPOCH"); !epoch.empty()) {
+    std::size_t used = 0;
+    long long seconds = -1;
+    try {
+      seconds = std::stoll(epoch, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != epoch.size() || seconds < 0)
+      throw std::invalid_argument("SOURCE_DATE_EPOCH=\"" + epoch + "\" is not a non-negative whole number of seconds");
+    t = static_cast<std::time_t>(seconds);
+  } else {
+    t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  }
+  std::tm utc{};
+  gmtime_r(&t, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+fs::path ensure_default_voice(bool quiet) {
+  const fs::path path = default_voice_path();
+  if (fs::exists(path)) return path;
+  fs::create_directories(path.parent_path());
+  const fs::path corpus = fs::temp_directory_path() / ("fapcast-reference-corpus-" + std::to_string(::getpid()));
+  struct Cleanup {  // the corpus is scratch: removed on success and on failure
+    fs::path dir;
+    ~Cleanup() {
+      std::error_code ignored;
+      fs::remove_all(dir, ignored);
+    }
+  } cleanup{corpus};
+  if (!quiet) std::cerr << "building the default voice (SYNTHETIC reference talker, seed 1) into " << path.string() << "\n";
+  RecordingScriptInputs inputs;
+  inputs.cmudict = default_cmudict_path().string();
+  inputs.word_counts = default_word_counts_path().string();
+  ReferenceCorpusOptions options;
+  options.seed = kDefaultVoiceSeed;
+  (void)record_reference_corpus(
+      load_recording_script(inputs), corpus, options,
+      [&](const std::string& name, std::string_view bytes) { write_file_atomically(corpus / name, bytes); },
+      [&](std::size_t done, std::size_t total) {
+        if (!quiet && (done % 50 == 0 || done == total)) std::cerr << "\rrecorded " << done << " / " << total << std::flush;
+      });
+  if (!quiet) std::cerr << "\n";
+  VoiceBuildOptions build;
+  build.seed = kDefaultVoiceSeed;
+  build.corpus_name = "fapcast reference corpus (SYNTHETIC), seed 1, all script items";
+  build.build_time_utc = voice_build_time_utc();
+  build.tool_version = FAPCAST_VERSION;
+  build.progress = [&](std::string_view stage, std::size_t done, std::size_t total) {
+    if (!quiet && (stage != "read" || done % 50 == 0 || done == total))
+      std::cerr << "\rvoice build: " << stage << " " << done << " / " << total << "      " << std::flush;
+  };
+  const BuiltVoice voice = build_voice(corpus, build);
+  if (!quiet) std::cerr << "\n";
+  write_file_atomically(path, voice.bytes);
+  return path;
+}
+
+}  // namespace fapcast::cli

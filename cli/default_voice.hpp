@@ -1,0 +1,24 @@
+#pragma once
+// The default voice (VOICE-API.md): built from the SYNTHETIC reference corpus (seed 1) on first
+// use and cached, so `say` and `animate` work without --voice.
+#include <filesystem>
+#include <string>
+
+namespace fapcast::cli {
+
+// $FAPCAST_CACHE_DIR, else $XDG_CACHE_HOME/fapcast, else ~/.cache/fapcast; then
+// reference-seed1.fapv.
+std::filesystem::path default_voice_path();
+
+// The default voice's path, building it first when the cache has none: records the reference
+// corpus (all script items, seed 1) into a temporary directory, builds the voice (exact PCA
+// route), writes it atomically and removes the corpus. Progress on stderr unless `quiet`.
+// Deterministic: the same bytes every time when SOURCE_DATE_EPOCH is set (build time).
+std::filesystem::path ensure_default_voice(bool quiet);
+
+// The provenance build time: SOURCE_DATE_EPOCH (reproducible builds) when set, else now; ISO 8601
+// UTC ("2026-11-22T04:00:00Z"). Throws std::invalid_argument when SOURCE_DATE_EPOCH is not a
+// non-negative integer.
+std::string voice_build_time_utc();
+
+}  // namespace fapcast::cli

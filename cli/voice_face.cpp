@@ -1,0 +1,45 @@
+#include "voice_face.hpp"
+
+#include "default_voice.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fapcast::cli {
+
+FeaturePointBasis face_basis(const SpeechBasis& basis, const Voice& voice,
+                                    const std::string& source) {
+  std::vector<FeaturePointVertex> vertices;
+  FeaturePointPositions neutral;
+  for (const VoiceFeaturePoint& p : voice.feature_points()) {
+    const auto fp = parse_feature_point(p.label);
+    if (!fp) throw std::runtime_error(source + ": feature point label '" + p.label + "' is not an MPEG-4 feature point");
+    vertices.push_back({*fp, p.vertex});
+    neutral[*fp] = p.neutral_m;
+  }
+  return restrict_basis(basis.mean, basis.components, vertices, std::move(neutral));
+}
+
+void check_voice_phone_set(const Voice& voice, const std::string& source) {
+  const auto phones = voice.state_phones();
+  if (phones.size() != voice.graph().size())
+    throw std::runtime_error(source + ": voice-phone-set: " + std::to_string(phones.size()) + " state phones for " +
+                             std::to_string(voice.graph().size()) + " graph states");
+  for (std::size_t j = 0; j < phones.size(); ++j) {
+    const VisemeClass here = search_viseme(phones[j]);
+    const VisemeClass there = voice.graph().state(static_cast<StateId>(j)).viseme;
+    if (here != there)
+      throw std::runtime_error(source + ": voice-phone-set: state " + std::to_string(j) + " ('" +
+                               std::string(arpabet(phones[j])) + "') is of class " +
+                               std::string(viseme_class_name(there)) + " in the voice but " +
+                               std::string(viseme_class_name(here)) +
+                               " here: the voice was built with another phone set or viseme table");
+  }
+}
+
+Voice open_voice_or_default(const std::filesystem::path& path, bool quiet) {
+  return Voice::open(path.empty() ? ensure_default_voice(quiet) : path);
+}
+
+}  // namespace fapcast::cli

@@ -1,0 +1,36 @@
+#include "fapcast/corpus/label_tier.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace fapcast {
+
+std::int64_t to_sample(double seconds, std::int64_t sample_rate_hz) {
+  const double samples = std::round(seconds * static_cast<double>(sample_rate_hz));
+  // 2^63 is exactly representable; anything at or beyond it (or NaN) does not fit.
+  if (!(std::fabs(samples) < 9223372036854775808.0)) {
+    throw std::out_of_range("time " + std::to_string(seconds) + " s is off the sample grid");
+  }
+  return static_cast<std::int64_t>(samples);
+}
+
+std::ostream& operator<<(std::ostream& out, const Interval& interval) {
+  return out << "[" << interval.start_s << ", " << interval.end_s << ") \"" << interval.label << "\"";
+}
+
+std::ostream& operator<<(std::ostream& out, const TimePoint& point) {
+  return out << point.time_s << " \"" << point.mark << "\"";
+}
+
+std::ostream& operator<<(std::ostream& out, const LabelTier& tier) {
+  out << (tier.kind == TierKind::intervals ? "IntervalTier" : "TextTier") << " \"" << tier.name
+      << "\" [" << tier.start_s << ", " << tier.end_s << "]";
+  if (tier.kind == TierKind::intervals) {
+    for (const Interval& i : tier.intervals) out << "\n  " << i;
+  } else {
+    for (const TimePoint& p : tier.points) out << "\n  " << p;
+  }
+  return out;
+}
+
+}  // namespace fapcast

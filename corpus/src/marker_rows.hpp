@@ -1,0 +1,39 @@
+#pragma once
+// Private: the row-per-frame layout that TRC and marker CSV share (three cells per marker, empty
+// cells for a missing sample), read into and written from a MarkerSet.
+#include "fapcast/corpus/marker_set.hpp"
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fapcast::detail {
+
+class MarkerRows {
+ public:
+  // `format` prefixes rule ids ("trc" -> "trc-partial-sample").
+  MarkerRows(std::size_t markers, double mm_per_unit, const std::string& source, std::string_view format);
+
+  // Adds one frame from its coordinate cells (x y z per marker; missing trailing cells count as
+  // empty). Throws InputError for a half-empty sample or a cell that is not a number.
+  void add(std::span<const std::string_view> cells, std::uint64_t line);
+  std::size_t frames() const { return frames_; }
+
+  // The set of the frames added so far.
+  MarkerSet finish(std::vector<std::string> labels, double frame_rate_hz, std::int64_t first_frame) const;
+
+ private:
+  std::size_t markers_;
+  double mm_per_unit_;
+  const std::string& source_;
+  std::string format_;
+  std::size_t frames_ = 0;
+  std::vector<double> values_;  // grows one frame at a time: never sized from a header count
+  std::vector<bool> missing_;
+};
+
+// The 3M cells of frame `frame` joined by `separator`: shortest decimals, empty where missing.
+std::string marker_cells(const MarkerSet& markers, Eigen::Index frame, char separator);
+
+}  // namespace fapcast::detail

@@ -1,0 +1,403 @@
+#include "fapcast/corpus/textgrid.hpp"
+
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/core/text_input.hpp"
+
+#include <optional>
+#include <stdexcept>
+
+namespace fapcast {
+namespace {
+
+using detail::excerpt;
+
+// A problem with one item of a tier, shared by the reader (which adds the line) and the writer.
+struct Problem {
+  std::string rule;
+  std::string detail;
+};
+
+std::optional<Problem> check_span(double start_s, double end_s, const std::string& what) {
+  if (!(start_s < end_s)) {
+    return Problem{"textgrid-time-range", what + " has xmin " + detail::shortest_decimal(start_s) +
+                                              " not below xmax " + detail::shortest_decimal(end_s)};
+  }
+  return std::nullopt;
+}
+
+std::optional<Problem> check_tier_span(const Alignment& grid, const LabelTier& tier) {
+  if (auto p = check_span(tier.start_s, tier.end_s, "tier \"" + tier.name + "\"")) return p;
+  if (tier.start_s < grid.start_s || tier.end_s > grid.end_s) {
+    return Problem{"textgrid-time-range", "tier \"" + tier.name + "\" lies outside the TextGrid's [" +
+                                              detail::shortest_decimal(grid.start_s) + ", " +
+                                              detail::shortest_decimal(grid.end_s) + "]"};
+  }
+  return std::nullopt;
+}
+
+// Interval `i` of `tier` (the ones before it already checked): non-empty, after the previous
+// one, inside the tier.
+std::optional<Problem> check_interval(const LabelTier& tier, std::size_t i) {
+  const Interval& v = tier.intervals[i];
+  const std::string what = "interval " + std::to_string(i + 1) + " of tier \"" + tier.name + "\"";
+  if (!(v.start_s < v.end_s)) {
+    return Problem{"textgrid-interval-order", what + " is empty or reversed (" +
+                                                  detail::shortest_decimal(v.start_s) + " to " +
+                                                  detail::shortest_decimal(v.end_s) + ")"};
+  }
+  if (v.start_s < tier.start_s || v.end_s > tier.end_s) {
+    return Problem{"textgrid-interval-order", what + " lies outside its tier"};
+  }
+  if (i > 0 && v.start_s < tier.intervals[i - 1].end_s) {
+    return Problem{"textgrid-interval-order",
+                   what + " starts at " + detail::shortest_decimal(v.start_s) +
+                       ", before the previous one ends (" +
+                       detail::shortest_decimal(tier.intervals[i - 1].end_s) + ")"};
+  }
+  return std::nullopt;
+}
+
+std::optional<Problem> check_point(const LabelTier& tier, std::size_t i) {
+  const TimePoint& p = tier.points[i];
+  const std::string what = "point " + std::to_string(i + 1) + " of tier \"" + tier.name + "\"";
+  if (p.time_s < tier.start_s || p.time_s > tier.end_s) {
+    return Problem{"textgrid-point-order", what + " lies outside its tier"};
+  }
+  if (i > 0 && !(p.time_s > tier.points[i - 1].time_s)) {
+    return Problem{"textgrid-point-order", what + " is not after the previous point"};
+  }
+  return std::nullopt;
+}
+
+// ---- reading -------------------------------------------------------------------------------
+
+enum class TokenKind { number, string, flag, end };
+
+struct Token {
+  TokenKind kind = TokenKind::end;
+  std::string text;        // the number's spelling, the decoded string, or the flag's name
+  std::string label;       // words before the value ("xmin =", "intervals [1]: xmin ="), spaced
+  std::uint64_t line = 1;  // where the value starts
+};
+
+// Splits the TextGrid text into values (numbers, "strings", <flags>) and the key words before
+// them. Both forms share it; the parser decides whether keys must be present (long) or absent.
+class Tokenizer {
+ public:
+  Tokenizer(std::string_view text, const std::string& source) : text_(text), source_(source) {}
+
+  Token next() {
+    Token t;
+    for (;;) {
+      skip_space();
+      if (pos_ >= text_.size()) {
+        t.line = line_;
+        return t;
+      }
+      const char c = text_[pos_];
+      if (c == '"') return string_token(std::move(t));
+      if (c == '<') return flag_token(std::move(t));
+      if ((c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.') {
+        t.kind = TokenKind::number;
+        t.line = line_;
+        t.text = std::string(word());
+        return t;
+      }
+      if (!t.label.empty()) t.label += ' ';
+      t.label += word();
+    }
+  }
+
+ private:
+  void skip_space() {
+    while (pos_ < text_.size() && is_space(text_[pos_])) line_ += text_[pos_++] == '\n';
+  }
+  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+  std::string_view word() {
+    const std::size_t start = pos_;
+    while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '"') ++pos_;
+    return text_.substr(start, pos_ - start);
+  }
+  Token string_token(Token t) {
+    t.kind = TokenKind::string;
+    t.line = line_;
+    ++pos_;
+    for (;;) {
+      if (pos_ >= text_.size()) {
+        throw InputError({source_, t.line, std::nullopt}, "textgrid-unterminated-string",
+                         "string has no closing quote");
+      }
+      const char c = text_[pos_++];
+      if (c == '"') {
+        if (pos_ < text_.size() && text_[pos_] == '"') {
+          t.text += '"';  // "" inside a string is one quote
+          ++pos_;
+          continue;
+        }
+        return t;
+      }
+      line_ += c == '\n';
+      t.text += c;
+    }
+  }
+  Token flag_token(Token t) {
+    t.kind = TokenKind::flag;
+    t.line = line_;
+    const std::string_view w = word();
+    if (w.size() < 2 || w.back() != '>') {
+      throw InputError({source_, line_, std::nullopt}, "textgrid-syntax",
+                       "flag \"" + excerpt(w) + "\" has no closing '>'");
+    }
+    t.text = std::string(w.substr(1, w.size() - 2));
+    return t;
+  }
+
+  std::string_view text_;
+  const std::string& source_;
+  std::size_t pos_ = 0;
+  std::uint64_t line_ = 1;
+};
+
+const char* kind_name(TokenKind kind) {
+  switch (kind) {
+    case TokenKind::number: return "a number";
+    case TokenKind::string: return "a string";
+    case TokenKind::flag: return "a <flag>";
+    case TokenKind::end: return "the end of the file";
+  }
+  return "?";
+}
+
+class Parser {
+ public:
+  Parser(std::string_view text, const std::string& source) : tokens_(text, source), source_(source) {}
+
+  Alignment parse() {
+    const Token type = expect(TokenKind::string, "File type =", "the file type");
+    if (type.text != "ooTextFile" && type.text != "ooTextFile short") {
+      fail(type.line, "textgrid-header", "file type \"" + excerpt(type.text) + "\" is not ooTextFile");
+    }
+    const Token klass = expect(TokenKind::string, "Object class =", "the object class");
+    if (klass.text != "TextGrid") {
+      fail(klass.line, "textgrid-header", "object class \"" + excerpt(klass.text) + "\" is not TextGrid");
+    }
+    const Token first = next();
+    long_form_ = !first.label.empty();  // the long form names every value; the short form none
+    pending_ = first;
+
+    Alignment grid;
+    grid.start_s = number("xmin =", "the TextGrid's xmin");
+    const Token end = expect(TokenKind::number, "xmax =", "the TextGrid's xmax");
+    grid.end_s = to_double(end);
+    if (auto p = check_span(grid.start_s, grid.end_s, "the TextGrid")) fail(end.line, *p);
+    const Token tiers = expect(TokenKind::flag, "tiers?", "whether tiers exist");
+    if (tiers.text == "exists") {
+      const std::int64_t n = count("size =", "the number of tiers");
+      for (std::int64_t i = 0; i < n; ++i) grid.tiers.push_back(tier(grid, i + 1));
+    } else if (tiers.text != "absent") {
+      fail(tiers.line, "textgrid-syntax", "flag <" + excerpt(tiers.text) + "> is neither <exists> nor <absent>");
+    }
+    const Token rest = next();
+    if (rest.kind != TokenKind::end || !rest.label.empty()) {
+      fail(rest.line, "textgrid-trailing-data", "content after the last tier");
+    }
+    return grid;
+  }
+
+ private:
+  LabelTier tier(const Alignment& grid, std::int64_t index) {
+    const std::string which = "tier " + std::to_string(index);
+    LabelTier t;
+    const Token klass = expect(TokenKind::string, "class =", "the class of " + which);
+    if (klass.text == "IntervalTier") {
+      t.kind = TierKind::intervals;
+    } else if (klass.text == "TextTier") {
+      t.kind = TierKind::points;
+    } else {
+      fail(klass.line, "textgrid-tier-class",
+           which + " has class \"" + excerpt(klass.text) + "\", not IntervalTier or TextTier");
+    }
+    t.name = expect(TokenKind::string, "name =", "the name of " + which).text;
+    t.start_s = number("xmin =", "the xmin of " + which);
+    const Token end = expect(TokenKind::number, "xmax =", "the xmax of " + which);
+    t.end_s = to_double(end);
+    if (auto p = check_tier_span(grid, t)) fail(end.line, *p);
+    if (t.kind == TierKind::intervals) {
+      const std::int64_t n = count("intervals: size =", "the interval count of " + which);
+      for (std::int64_t i = 0; i < n; ++i) {
+        Interval v;
+        v.start_s = number("xmin =", "an interval's xmin");
+        v.end_s = number("xmax =", "an interval's xmax");
+        const Token text = expect(TokenKind::string, "text =", "an interval's text");
+        v.label = text.text;
+        t.intervals.push_back(std::move(v));
+        if (auto p = check_interval(t, t.intervals.size() - 1)) fail(text.line, *p);
+      }
+    } else {
+      const std::int64_t n = count("points: size =", "the point count of " + which);
+      for (std::int64_t i = 0; i < n; ++i) {
+        TimePoint p;
+        p.time_s = number("number =", "a point's time");
+        const Token mark = expect(TokenKind::string, "mark =", "a point's mark");
+        p.mark = mark.text;
+        t.points.push_back(std::move(p));
+        if (auto problem = check_point(t, t.points.size() - 1)) fail(mark.line, *problem);
+      }
+    }
+    return t;
+  }
+
+  Token next() {
+    if (pending_) {
+      Token t = std::move(*pending_);
+      pending_.reset();
+      return t;
+    }
+    return tokens_.next();
+  }
+
+  // The next value, which must be of `kind` and (long form) follow words ending in `key`.
+  Token expect(TokenKind kind, std::string_view key, const std::string& what) {
+    Token t = next();
+    if (t.kind == TokenKind::end) fail(t.line, "textgrid-truncated", "the file ends before " + what);
+    if (t.kind != kind) {
+      fail(t.line, "textgrid-syntax", "expected " + std::string(kind_name(kind)) + " for " + what +
+                                          ", found " + kind_name(t.kind));
+    }
+    const bool header = key == "File type =" || key == "Object class =";
+    if (!header && long_form_ && !t.label.ends_with(key)) {
+      fail(t.line, "textgrid-syntax", "expected \"" + std::string(key) + "\" before " + what +
+                                          ", found \"" + excerpt(t.label) + "\"");
+    }
+    if (!header && !long_form_ && !t.label.empty()) {
+      fail(t.line, "textgrid-syntax", "short-form TextGrid has words (\"" + excerpt(t.label) +
+                                          "\") before " + what);
+    }
+    return t;
+  }
+
+  double to_double(const Token& t) {
+    double v = 0;
+    if (!detail::parse_finite(t.text, v)) {
+      fail(t.line, "textgrid-bad-number", "\"" + excerpt(t.text) + "\" is not a finite number");
+    }
+    return v;
+  }
+  double number(std::string_view key, const std::string& what) {
+    return to_double(expect(TokenKind::number, key, what));
+  }
+  std::int64_t count(std::string_view key, const std::string& what) {
+    const Token t = expect(TokenKind::number, key, what);
+    std::int64_t n = 0;
+    if (!detail::parse_count(t.text, n)) {
+      fail(t.line, "textgrid-bad-count", what + " \"" + excerpt(t.text) + "\" is not a count");
+    }
+    return n;  // never used to allocate: items are appended as they are read
+  }
+
+  [[noreturn]] void fail(std::uint64_t line, const std::string& rule, const std::string& detail) {
+    throw InputError({source_, line, std::nullopt}, rule, detail);
+  }
+  [[noreturn]] void fail(std::uint64_t line, const Problem& p) { fail(line, p.rule, p.detail); }
+
+  Tokenizer tokens_;
+  const std::string& source_;
+  std::optional<Token> pending_;
+  bool long_form_ = true;
+};
+
+// ---- writing -------------------------------------------------------------------------------
+
+std::string praat_quoted(std::string_view s) {
+  std::string out = "\"";
+  for (char c : s) {
+    out += c;
+    if (c == '"') out += '"';
+  }
+  return out + "\"";
+}
+
+// Appends values either as Praat's long form ("key = value " lines, indented) or the short one.
+class Writer {
+ public:
+  explicit Writer(TextGridForm form) : long_(form == TextGridForm::long_form) {}
+  void line(int indent, std::string_view key, const std::string& value) {
+    if (long_) {
+      out_.append(static_cast<std::size_t>(indent) * 4, ' ');
+      out_ += key;
+      out_ += " = ";
+    }
+    out_ += value;
+    out_ += long_ ? " \n" : "\n";
+  }
+  void heading(int indent, const std::string& text) {
+    if (long_) out_.append(static_cast<std::size_t>(indent) * 4, ' ').append(text).append("\n");
+  }
+  void number(int indent, std::string_view key, double v) { line(indent, key, detail::shortest_decimal(v)); }
+  void flag(const char* value) {
+    out_ += long_ ? "tiers? " : "";
+    out_ += value;
+    out_ += long_ ? " \n" : "\n";
+  }
+  std::string take() { return std::move(out_); }
+
+ private:
+  bool long_;
+  std::string out_ = "File type = \"ooTextFile\"\nObject class = \"TextGrid\"\n\n";
+};
+
+[[noreturn]] void refuse(const Problem& p) {
+  throw std::invalid_argument("write_textgrid: " + p.rule + ": " + p.detail);
+}
+
+}  // namespace
+
+Alignment read_textgrid(std::string_view bytes, const std::string& source) {
+  const std::string text = detail::decode_text(bytes, source, "textgrid");
+  return Parser(text, source).parse();
+}
+
+std::string write_textgrid(const Alignment& grid, TextGridForm form) {
+  if (auto p = check_span(grid.start_s, grid.end_s, "the TextGrid")) refuse(*p);
+  Writer w(form);
+  w.number(0, "xmin", grid.start_s);
+  w.number(0, "xmax", grid.end_s);
+  if (grid.tiers.empty()) {
+    w.flag("<absent>");
+    return w.take();
+  }
+  w.flag("<exists>");
+  w.line(0, "size", std::to_string(grid.tiers.size()));
+  w.heading(0, "item []: ");
+  for (std::size_t k = 0; k < grid.tiers.size(); ++k) {
+    const LabelTier& tier = grid.tiers[k];
+    if (auto p = check_tier_span(grid, tier)) refuse(*p);
+    const bool intervals = tier.kind == TierKind::intervals;
+    w.heading(1, "item [" + std::to_string(k + 1) + "]:");
+    w.line(2, "class", praat_quoted(intervals ? "IntervalTier" : "TextTier"));
+    w.line(2, "name", praat_quoted(tier.name));
+    w.number(2, "xmin", tier.start_s);
+    w.number(2, "xmax", tier.end_s);
+    if (intervals) {
+      w.line(2, "intervals: size", std::to_string(tier.intervals.size()));
+      for (std::size_t i = 0; i < tier.intervals.size(); ++i) {
+        if (auto p = check_interval(tier, i)) refuse(*p);
+        w.heading(2, "intervals [" + std::to_string(i + 1) + "]:");
+        w.number(3, "xmin", tier.intervals[i].start_s);
+        w.number(3, "xmax", tier.intervals[i].end_s);
+        w.line(3, "text", praat_quoted(tier.intervals[i].label));
+      }
+    } else {
+      w.line(2, "points: size", std::to_string(tier.points.size()));
+      for (std::size_t i = 0; i < tier.points.size(); ++i) {
+        if (auto p = check_point(tier, i)) refuse(*p);
+        w.heading(2, "points [" + std::to_string(i + 1) + "]:");
+        w.number(3, "number", tier.points[i].time_s);
+        w.line(3, "mark", praat_quoted(tier.points[i].mark));
+      }
+    }
+  }
+  return w.take();
+}
+
+}  // namespace fapcast

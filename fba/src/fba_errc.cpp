@@ -1,0 +1,45 @@
+#include "fapcast/fba/fba_errc.hpp"
+
+#include <string>
+
+namespace fapcast {
+namespace {
+
+class FbaCategory final : public std::error_category {
+ public:
+  const char* name() const noexcept override { return "fba"; }
+  std::string message(int code) const override {
+    switch (static_cast<fba_errc>(code)) {
+      case fba_errc::ok: return "ok";
+      case fba_errc::truncated: return "truncated: the bits end before the plane does";
+      case fba_errc::bad_start_code: return "bad-start-code: expected an object-plane start code";
+      case fba_errc::stuffing_bit_missing: return "stuffing-bit-missing: 22 zeros not followed by a stuffed 1";
+      case fba_errc::marker_bit_missing: return "marker-bit-missing: a marker bit is 0";
+      case fba_errc::unsupported_object: return "unsupported-object: fba_object_mask is not 1 (FAP only)";
+      case fba_errc::dct_coding_unsupported: return "dct-coding-unsupported: coding_type 1 (DCT) is not implemented";
+      case fba_errc::predicted_without_intra: return "predicted-without-intra: a P plane with no intra plane before it";
+      case fba_errc::bad_frame_rate: return "bad-frame-rate: frame_rate or seconds is 0";
+      case fba_errc::bad_time_code: return "bad-time-code: minutes or seconds above 59";
+      case fba_errc::skip_too_long: return "skip-too-long: more skipped frames than the decoder accepts";
+      case fba_errc::bad_alignment_bits: return "bad-alignment-bits: byte-alignment bits are not all 1";
+      case fba_errc::trailing_bytes: return "trailing-bytes: bytes after the end of a plane or of the stream";
+      case fba_errc::missing_object_start_code: return "missing-object-start-code: the file does not open with 0x000001BA";
+      case fba_errc::missing_end_code: return "missing-end-code: the file does not close with 0x000001B1";
+      case fba_errc::uncodable_value: return "uncodable-value: a value beyond the codable range";
+      case fba_errc::uncodable_frame_rate: return "uncodable-frame-rate: the frame rate has no frame_rate/seconds form";
+      case fba_errc::bad_frame_number: return "bad-frame-number: an intra plane's frame_number is not the frame it lands on";
+    }
+    return "unknown fba error " + std::to_string(code);
+  }
+};
+
+}  // namespace
+
+const std::error_category& fba_category() {
+  static const FbaCategory category;
+  return category;
+}
+
+std::error_code make_error_code(fba_errc e) { return {static_cast<int>(e), fba_category()}; }
+
+}  // namespace fapcast

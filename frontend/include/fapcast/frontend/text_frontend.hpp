@@ -1,0 +1,84 @@
+#pragma once
+// The text front-end: English text in, speech audio and a phone timeline out, from espeak-ng
+// (en-us voice) through its C API. Positions are samples of the returned audio, taken from the
+// events' exact `sample` field (their millisecond field is rounded).
+//
+// Segments: espeak-ng's phoneme events mark where each phone's sound starts; for a stop that
+// is its release. The lips (or tongue) close earlier, in the near-silence before the burst, so
+// for phones with a closure (stops, affricates, /m/; has_closure()) the segment starts at the
+// closure found in the audio (find_closure). The timeline is contiguous: each phone ends where
+// the next begins.
+//
+// Input rules (spec/phones.md, "Text front-end"):
+//  - valid UTF-8 of at most kMaxTextBytes bytes; no control characters except TAB, LF, CR;
+//    anything else throws InputError (input_error.hpp) naming the byte offset;
+//  - empty or whitespace-only text gives empty speech (no samples, no phones) without espeak;
+//  - text espeak-ng says nothing for (e.g. "...") gives a short stretch of silence, phones all SIL;
+//  - emoji and non-Latin characters are read out by espeak-ng by name ("grinning face").
+// espeak-ng is not thread-safe: calls are serialised by a process-wide mutex.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/phonetics/phone.hpp"
+#include "fapcast/phonetics/timed_phone.hpp"
+
+namespace fapcast {
+
+// Longest accepted text: 32 KiB is about 5,000 words, half an hour of speech, 80 MB of audio.
+// Longer texts must be split by the caller (e.g. per paragraph).
+inline constexpr std::size_t kMaxTextBytes = 32 * 1024;
+
+struct TimedWord {
+  std::string text;             // the word as written in the input (UTF-8)
+  std::size_t byte_offset;      // where it starts in the input
+  std::int64_t start_sample;    // first phone's start
+  std::int64_t end_sample;      // last phone's end
+  friend bool operator==(const TimedWord&, const TimedWord&) = default;
+};
+
+struct Speech {
+  MonoAudio audio;              // espeak-ng's own rate (22050 Hz for its voices), mono int16
+  std::vector<TimedPhone> phones;
+  std::vector<TimedWord> words;
+};
+
+struct SpeakOptions {
+  // Treat text inside [[ ]] as espeak-ng phoneme mnemonics (espeakPHONEMES), e.g. nonsense
+  // syllables of the recording script. Off by default: user text is text.
+  bool phoneme_input = false;
+  // Speaking rate relative to espeak-ng's default of 175 words per minute (1.1 = 10 % faster);
+  // the reference talker varies it per utterance. Clamped to espeak-ng's 80..450 wpm.
+  double rate_factor = 1.0;
+};
+
+// Synthesises `text` (UTF-8) with espeak-ng en-us and segments it into phones and words.
+// Throws InputError for text that breaks the input rules above, std::runtime_error
+// if espeak-ng fails (e.g. its data is missing).
+Speech speak(std::string_view text, const SpeakOptions& options = {});
+
+// Checks the input rules; throws InputError "text: byte N: <rule>: <detail>" on the first
+// violation. Returns the byte offset of every code point (for espeak's character positions).
+std::vector<std::size_t> validate_text(std::string_view text);
+
+// A closure found in the audio: where the energy drops (onset) and where it returns (release).
+struct Closure {
+  std::int64_t onset_sample;
+  std::int64_t release_sample;
+  friend bool operator==(const Closure&, const Closure&) = default;
+};
+
+// Finds the closure of a phone whose event is at `event_sample`, searching back to
+// `region_begin` (the previous phone's start) and forward to `region_end` (its own end): the
+// near-silent stretch (short-time RMS below a fifth of the previous phone's peak, 10 ms
+// windows every 2.5 ms) that starts at most 10 ms before and at most 40 ms after the event.
+// With no quiet stretch the closure is the event itself. After silence (nothing to drop from)
+// the onset is 50 ms before the event, bounded by region_begin.
+Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
+                     std::int64_t region_begin, std::int64_t event_sample, std::int64_t region_end);
+
+}  // namespace fapcast

@@ -1,0 +1,32 @@
+#include "fapcast/phonetics/phone.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace fapcast {
+
+namespace {
+
+char to_upper_ascii(char c) { return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c; }
+
+}  // namespace
+
+StressedPhone parse_arpabet(std::string_view symbol, std::string_view source) {
+  std::string upper;
+  upper.reserve(symbol.size());
+  for (char c : symbol) upper.push_back(to_upper_ascii(c));
+  std::optional<Stress> stress;
+  if (!upper.empty() && upper.back() >= '0' && upper.back() <= '2') {
+    stress = static_cast<Stress>(upper.back() - '0');
+    upper.pop_back();
+  }
+  // Festival's CMU lexicon and the CMU "radio" set write schwa as AX; CMUdict spells it AH0.
+  if (upper == "AX") return {Phone::AH, stress.value_or(Stress::kNone)};
+  for (const PhoneInfo& row : kPhoneTable) {
+    if (row.arpabet == upper && !(stress && row.phone == Phone::SIL)) return {row.phone, stress};
+  }
+  throw std::invalid_argument(std::string(source) + ": unknown ARPAbet phone '" +
+                              std::string(symbol) + "'");
+}
+
+}  // namespace fapcast

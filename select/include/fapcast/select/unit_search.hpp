@@ -1,0 +1,65 @@
+#pragma once
+// Viterbi unit selection over the phone graph (paper section 3.7): the fewest, longest,
+// best-joining runs of recorded phones that spell a target viseme sequence.
+#include "fapcast/select/phone_graph.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace fapcast {
+
+struct SearchOptions {
+  // Weight of the smoothness term: a join costs 1 + beta * C. beta = 0 minimises the number
+  // of units alone.
+  double beta = 0.0;
+  // Keep at most this many active states per target phone (the cheapest); nullopt = all.
+  std::optional<std::size_t> max_active;
+  // Skip the joins that provably cannot win or survive the cap (spec/search.md, "Pruning the
+  // joins"). The result is identical either way, to the bit; false evaluates every pair of
+  // active state and entry state, the reference the tests and the benchmark compare against.
+  bool prune_joins = true;
+  // Weight of the duration term: state j serving a target phone of n_t frames adds
+  // duration_weight * ln^2(n_j / n_t), n_j its recorded frames. The renderer warps every phone to
+  // its target's length, and a large warp distorts the timing of lip opening and closure most;
+  // the term prefers units whose phones already last about as long. 0 = the paper's cost.
+  double duration_weight = 0.0;
+};
+
+// A run of consecutive states of one recording that covers consecutive target phones.
+struct Unit {
+  StateId first_state = 0;
+  std::size_t first_target = 0;  // target phones [first_target, first_target + length)
+  std::size_t length = 0;
+  bool operator==(const Unit&) const = default;
+};
+
+struct SearchStats {
+  std::vector<std::size_t> active_per_step;  // active states after pruning, per target phone
+  std::size_t hard_joins = 0;  // steps where no admissible join existed (see unit_search)
+};
+
+struct SearchResult {
+  std::vector<StateId> states;  // one per target phone
+  std::vector<Unit> units;
+  double cost = 0.0;  // number of units + beta * sum of junction costs + the duration terms
+  SearchStats stats;
+};
+
+// Finds the minimum-cost path. Transitions: to the next state of the same recording at cost 0;
+// to a state j whose parent has the viseme of the state left (G = 0) at cost 1 + beta * C(i, j);
+// a state matches target phone t only if its viseme is targets[t] (d = 0, else infinite), and
+// costs its duration term (SearchOptions::duration_weight) there.
+// Starting costs 1 (the first unit). When some step has no admissible join at all, the search
+// joins into any state of the right viseme (a "hard join", counted in stats) rather than fail.
+// Throws std::invalid_argument naming the first target viseme class the graph has no state of.
+SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
+                         const SearchOptions& options = {});
+// The same with each target's length in voice frames (>= 1 each, one per target), which the
+// duration term weighs (none without lengths). Throws std::invalid_argument when the lengths do
+// not match the targets or one is below 1 while the term is on.
+SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
+                         std::span<const std::int64_t> target_frames, const SearchOptions& options);
+
+}  // namespace fapcast

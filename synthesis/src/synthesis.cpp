@@ -1,0 +1,88 @@
+#include "fapcast/synthesis/synthesis.hpp"
+
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/synthesis/tongue.hpp"
+
+#include <stdexcept>
+
+namespace fapcast {
+namespace {
+
+using V = VisemeClass;
+// The nearest shapes first: same lip posture, then same jaw opening (spec/synthesis.md).
+constexpr std::array<VisemeFallback, kVisemeClassCount> kFallbacks{{
+    {V::kSilence, {V::kBilabial, V::kAlveolar, V::kNearCloseFront}},     // rest: lips together
+    {V::kBilabial, {V::kSilence, V::kLabiodental, V::kAlveolar}},        // closed lips
+    {V::kLabiodental, {V::kBilabial, V::kSibilant, V::kAlveolar}},       // lower lip up
+    {V::kDental, {V::kAlveolar, V::kLateral, V::kSibilant}},             // jaw nearly closed
+    {V::kAlveolar, {V::kSibilant, V::kLateral, V::kDental}},
+    {V::kSibilant, {V::kAlveolar, V::kCloseFront, V::kDental}},          // teeth together, spread
+    {V::kLateral, {V::kAlveolar, V::kDental, V::kNearCloseFront}},
+    {V::kPostalveolar, {V::kRhotic, V::kLabialVelar, V::kSibilant}},     // protruded lips
+    {V::kRhotic, {V::kPostalveolar, V::kNearCloseRounded, V::kLabialVelar}},
+    {V::kBack, {V::kMidFront, V::kNearCloseFront, V::kAlveolar}},        // jaw half open
+    {V::kLabialVelar, {V::kCloseRounded, V::kNearCloseRounded, V::kRhotic}},
+    {V::kCloseFront, {V::kNearCloseFront, V::kSibilant, V::kMidFront}},  // spread, near closed
+    {V::kNearCloseFront, {V::kCloseFront, V::kMidFront, V::kBack}},
+    {V::kMidFront, {V::kNearCloseFront, V::kOpenFront, V::kBack}},
+    {V::kOpenFront, {V::kMidFront, V::kOpenUnrounded, V::kNearCloseFront}},
+    {V::kOpenUnrounded, {V::kOpenFront, V::kOpenToRounded, V::kMidFront}},  // jaw wide open
+    {V::kOpenMidRounded, {V::kMidRounded, V::kOpenToRounded, V::kOpenUnrounded}},
+    {V::kMidRounded, {V::kOpenMidRounded, V::kNearCloseRounded, V::kCloseRounded}},
+    {V::kNearCloseRounded, {V::kCloseRounded, V::kMidRounded, V::kRhotic}},
+    {V::kCloseRounded, {V::kNearCloseRounded, V::kLabialVelar, V::kMidRounded}},
+    {V::kOpenToRounded, {V::kOpenUnrounded, V::kOpenMidRounded, V::kOpenFront}},
+}};
+
+constexpr bool fallbacks_in_order() {
+  for (std::size_t i = 0; i < kVisemeClassCount; ++i)
+    if (static_cast<std::size_t>(kFallbacks[i].viseme) != i) return false;
+  return true;
+}
+static_assert(fallbacks_in_order(), "fallback rows must follow VisemeClass order");
+
+}  // namespace
+
+std::span<const VisemeFallback, kVisemeClassCount> viseme_fallbacks() { return kFallbacks; }
+
+VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v) {
+  if (!graph.with_viseme(v).empty()) return v;
+  const auto& row = kFallbacks[static_cast<std::size_t>(v)];
+  for (VisemeClass s : row.substitutes)
+    if (!graph.with_viseme(s).empty()) return s;
+  std::string names;
+  for (VisemeClass s : row.substitutes) names += (names.empty() ? "" : ", ") + std::string(viseme_class_name(s));
+  throw InputError({"voice", {}, {}}, "viseme-not-covered",
+                   "the voice has no phone of viseme class " + std::string(viseme_class_name(v)) +
+                       " nor of its substitutes (" + names + ")");
+}
+
+SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
+                            std::span<const TimedPhone> phones, std::int64_t sample_rate_hz,
+                            std::int64_t end_sample, const SynthesisOptions& options,
+                            const std::string& source) {
+  SynthesizedTrack out;
+  out.timeline = place_on_voice_grid(phones, sample_rate_hz, end_sample, source);
+  const auto& targets = out.timeline.phones;
+  if (targets.empty()) {
+    out.pca_frames.resize(0, frame_coefficients.cols());
+    out.tongue.resize(0, static_cast<Eigen::Index>(kTongueFapCount));
+    return out;
+  }
+  // The search and the renderer see the covered classes; the timeline keeps what was asked for.
+  std::vector<TargetPhone> covered(targets.begin(), targets.end());
+  std::vector<VisemeClass> classes(covered.size());
+  std::vector<std::int64_t> lengths(covered.size());
+  for (std::size_t t = 0; t < covered.size(); ++t) {
+    const VisemeClass c = covered_viseme(graph, covered[t].viseme);
+    if (c != covered[t].viseme) ++out.substituted;
+    covered[t].viseme = classes[t] = c;
+    lengths[t] = covered[t].end_frame - covered[t].first_frame;
+  }
+  out.search = unit_search(graph, classes, lengths, options.search);
+  out.pca_frames = render_units(graph, frame_coefficients, out.search, covered, options.render);
+  out.tongue = tongue_track(targets, out.timeline.phone_of);
+  return out;
+}
+
+}  // namespace fapcast

@@ -1,0 +1,116 @@
+#include "fapcast/talker/coarticulation.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace fapcast {
+namespace {
+
+// Effort scales only the channels whose extent varies with effort; contacts (closure, lip to
+// teeth, tongue contacts) must be met whatever the effort.
+constexpr std::array<bool, kChannelCount> kEffortScaled{true, true, true, true,
+                                                        false, false, false, false};
+
+// A phone's articulation and centre, looked up once per timeline rather than once per frame.
+struct PlacedPhone {
+  const PhoneArticulation* articulation;
+  double centre_s;
+};
+
+std::vector<PlacedPhone> place(const PhoneTimeline& timeline) {
+  std::vector<PlacedPhone> placed;
+  placed.reserve(timeline.phones.size());
+  for (const auto& p : timeline.phones)
+    placed.push_back({&phone_articulation(p.phone),
+                      0.5 * static_cast<double>(p.start_sample + p.end_sample) / timeline.sample_rate_hz});
+  return placed;
+}
+
+std::array<float, kChannelCount> values_at(const std::vector<PlacedPhone>& phones, double t_s,
+                                           float effort) {
+  std::array<double, kChannelCount> numerator{};
+  std::array<double, kChannelCount> denominator{};
+  for (const auto& p : phones) {
+    const double tau = t_s - p.centre_s;
+    for (std::size_t c = 0; c < kChannelCount; ++c) {
+      const double d = p.articulation->dominance[c].at(tau);
+      float target = p.articulation->target[c];
+      if (kEffortScaled[c]) target = std::clamp(target * effort, 0.0f, 1.0f);
+      numerator[c] += d * target;
+      denominator[c] += d;
+    }
+  }
+  std::array<float, kChannelCount> out{};
+  for (std::size_t c = 0; c < kChannelCount; ++c)
+    out[c] = denominator[c] > 0 ? static_cast<float>(numerator[c] / denominator[c]) : 0.0f;
+  return out;
+}
+
+}  // namespace
+
+std::array<float, kChannelCount> ChannelTracks::frame(Eigen::Index k) const {
+  std::array<float, kChannelCount> out{};
+  for (std::size_t c = 0; c < kChannelCount; ++c) out[c] = values(static_cast<Eigen::Index>(c), k);
+  return out;
+}
+
+void validate_timeline(const PhoneTimeline& timeline) {
+  if (timeline.sample_rate_hz <= 0)
+    throw std::invalid_argument("phone timeline: sample rate " +
+                                std::to_string(timeline.sample_rate_hz) + " Hz is not positive");
+  std::int64_t previous_end = 0;
+  for (std::size_t i = 0; i < timeline.phones.size(); ++i) {
+    const auto& p = timeline.phones[i];
+    const auto where = "phone timeline: phone " + std::to_string(i) + " '" + p.phone + "': ";
+    if (p.start_sample < previous_end)
+      throw std::invalid_argument(where + "starts at sample " + std::to_string(p.start_sample) +
+                                  " before the previous phone ends (" +
+                                  std::to_string(previous_end) + ")");
+    if (p.end_sample <= p.start_sample)
+      throw std::invalid_argument(where + "empty or reversed span");
+    try {
+      (void)phone_articulation(p.phone);
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(where + e.what());
+    }
+    previous_end = p.end_sample;
+  }
+}
+
+std::array<float, kChannelCount> channel_values_at(const PhoneTimeline& timeline, double t_s,
+                                                   float effort) {
+  validate_timeline(timeline);
+  return values_at(place(timeline), t_s, effort);
+}
+
+ChannelTracks coarticulate(const PhoneTimeline& timeline, const CoarticulationOptions& options) {
+  validate_timeline(timeline);
+  if (options.frame_rate_hz <= 0)
+    throw std::invalid_argument("coarticulate: frame rate must be positive");
+  if (!(options.effort > 0.0f))
+    throw std::invalid_argument("coarticulate: effort must be positive");
+  ChannelTracks tracks;
+  tracks.frame_rate_hz = options.frame_rate_hz;
+  const std::int64_t end = timeline.phones.empty() ? 0 : timeline.phones.back().end_sample;
+  const std::int64_t frames =
+      (end * options.frame_rate_hz + timeline.sample_rate_hz - 1) / timeline.sample_rate_hz;
+  tracks.values.resize(static_cast<int>(kChannelCount), frames);
+  const auto phones = place(timeline);
+  for (std::int64_t k = 0; k < frames; ++k) {
+    const auto v = values_at(phones, static_cast<double>(k) / options.frame_rate_hz, options.effort);
+    for (std::size_t c = 0; c < kChannelCount; ++c)
+      tracks.values(static_cast<Eigen::Index>(c), k) = std::clamp(v[c], 0.0f, 1.0f);
+  }
+  return tracks;
+}
+
+Eigen::MatrixXf expression_weights(const ChannelTracks& tracks, const ShapeMapper& mapper) {
+  Eigen::MatrixXf weights(static_cast<Eigen::Index>(mapper.shape_count()), tracks.frame_count());
+  for (Eigen::Index k = 0; k < tracks.frame_count(); ++k) {
+    const auto w = mapper(tracks.frame(k));
+    weights.col(k) = Eigen::Map<const Eigen::VectorXf>(w.data(), static_cast<Eigen::Index>(w.size()));
+  }
+  return weights;
+}
+
+}  // namespace fapcast

@@ -1,0 +1,417 @@
+// `fapcast say` and `fapcast animate` end to end on a voice built from a small SYNTHETIC
+// reference corpus: outputs in every format, frame counts on the WAV timeline, and the refusals
+// of bad input (exit 1, named) and bad usage (exit 2).
+#include "cli/fapcast_command.hpp"
+#include "support/run_command.hpp"
+
+#include "fapcast/core/frame_rate.hpp"
+#include "fapcast/codec/gltf_export.hpp"
+#include "fapcast/corpus/alignment_phones.hpp"
+#include "fapcast/face/face_model.hpp"
+#include "fapcast/face/facial_expression.hpp"
+#include "fapcast/face/obj_mesh.hpp"
+#include "fapcast/synthesis/synthesis.hpp"
+#include "fapcast/voice/voice.hpp"
+#include "fapcast/corpus/lab_file.hpp"
+#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/corpus/textgrid.hpp"
+#include "fapcast/core/file_io.hpp"
+#include "fapcast/transport/track_file.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+
+namespace fapcast::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The fixture records 40 script items and builds their voice once per process; CTest runs each
+// test in its own process, so the end-to-end checks share one test.
+class SayCli : public ::testing::Test {
+ public:
+  static void SetUpTestSuite() {
+    dir_ = new std::string(make_temp_dir("say-cli"));
+    const auto r = run_command(fapcast("corpus record-reference -q --count 40 --seed 1 -o " + corpus()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto b = run_command(fapcast("voice build -q " + corpus() + " -o " + voice()));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete dir_;
+  }
+  static std::string corpus() { return *dir_ + "/corpus"; }
+  static std::string voice() { return *dir_ + "/v.fapv"; }
+  static std::string out(const std::string& name) { return *dir_ + "/" + name; }
+  static std::string take(const std::string& ext) { return corpus() + "/utt0003." + ext; }
+  static std::string* dir_;
+};
+std::string* SayCli::dir_ = nullptr;
+
+std::string voice() { return SayCli::voice(); }
+std::string out(const std::string& name) { return SayCli::out(name); }
+std::string take(const std::string& ext) { return SayCli::take(ext); }
+
+// The frames shown while the audio plays: every j whose first sample (frame_to_sample)
+// lies before the audio's end.
+std::int64_t frames_for(const MonoAudio& a, std::uint32_t fps) {
+  const auto n = static_cast<std::int64_t>(a.samples.size());
+  std::int64_t j = 0;
+  while (frame_to_sample(j, {fps, 1}, a.sample_rate_hz) < n) ++j;
+  return j;
+}
+
+void SayWritesTheTrackInSyncWithTheWav() {
+  const auto r = run_command(fapcast("say \"Maybe the thin cat will go home.\" --voice " + voice() + " -o " +
+                                     out("say.fap") + " --wav " + out("say.wav") + " --viseme"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("frames at 25 fps"), std::string::npos) << r.out;
+  const MonoAudio audio = read_wav(out("say.wav"));
+  const FapSequence seq = read_track_file(out("say.fap"));
+  EXPECT_EQ(seq.rate, (FrameRate{25, 1}));
+  ASSERT_EQ(static_cast<std::int64_t>(seq.frames.size()), frames_for(audio, 25));
+  int jaw_min = 1 << 30, jaw_max = -(1 << 30), tip_max = -(1 << 30);
+  bool bilabial = false;
+  for (const auto& f : seq.frames) {
+    ASSERT_TRUE(f.mask.test(3) && f.mask.test(5) && f.mask.test(44) && f.mask.test(1));
+    jaw_min = std::min(jaw_min, f.value(3));
+    jaw_max = std::max(jaw_max, f.value(3));
+    tip_max = std::max(tip_max, f.value(44));
+    bilabial = bilabial || f.viseme.select1 == 1;
+  }
+  EXPECT_GT(jaw_max - jaw_min, 50) << "the jaw moves";
+  EXPECT_GT(tip_max, 250) << "/th t/ lift the tongue tip";
+  EXPECT_TRUE(bilabial) << "/m/ shows viseme 1";
+}
+
+void EveryFormatAndRate() {
+  for (const std::string name : {"a.fba", "a.json", "a.bvh", "b.fap"}) {
+    const std::string fps = name == "b.fap" ? " --fps 30" : "";
+    const std::string timed = name == "a.json" ? " --duration-weight 0.3" : "";  // the search's duration term
+    const auto r = run_command(fapcast("say \"Hello world.\" --voice " + voice() + fps + timed + " --beta 0 --max-active 0 -o " +
+                                       out(name) + " --wav " + out("hello.wav")));
+    ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  }
+  const MonoAudio audio = read_wav(out("hello.wav"));
+  EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("a.fba")).frames.size()), frames_for(audio, 25));
+  EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("b.fap")).frames.size()), frames_for(audio, 30));
+  const auto j = nlohmann::json::parse(read_file(out("a.json")));
+  EXPECT_EQ(j["frames"].size(), static_cast<std::size_t>(frames_for(audio, 25)));
+  EXPECT_EQ(read_file(out("a.bvh")).rfind("HIERARCHY", 0), 0u);
+}
+
+void AnimateFromTextGridAndLab() {
+  const MonoAudio audio = read_wav(take("wav"));
+  auto r = run_command(fapcast("animate --wav " + take("wav") + " --align " + take("TextGrid") + " --voice " + voice() +
+                               " --fps 60 -o " + out("anim.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("anim.fap")).frames.size()), frames_for(audio, 60));
+
+  // The same phones as a .lab (HTK units), plus a zero-length segment: dropped, not an error.
+  const Alignment a = read_textgrid(read_file(take("TextGrid")), take("TextGrid"));
+  LabFile lab;
+  for (const auto& t : a.tiers)
+    if (t.name == "phones") lab.segments = t.intervals;
+  ASSERT_FALSE(lab.segments.empty());
+  lab.segments.insert(lab.segments.begin() + 1, {lab.segments[1].start_s, lab.segments[1].start_s, "t"});
+  lab.scores.assign(lab.segments.size(), std::nullopt);
+  write_file_atomically(out("take.lab"), write_lab(lab));
+  r = run_command(fapcast("animate --wav " + take("wav") + " --align " + out("take.lab") + " --voice " + voice() +
+                          " -o " + out("anim-lab.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 phones shorter than a frame dropped"), std::string::npos) << r.out;
+
+  // Shorter than the WAV: padded with silence and said so.
+  LabFile cut = lab;
+  cut.segments.resize(cut.segments.size() / 2);
+  cut.scores.resize(cut.segments.size());
+  write_file_atomically(out("short.lab"), write_lab(cut));
+  r = run_command(fapcast("animate --wav " + take("wav") + " --align " + out("short.lab") + " --voice " + voice() +
+                          " -o " + out("short.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("short.fap")).frames.size()), frames_for(audio, 25));
+
+  // Longer than the WAV by a second: refused.
+  LabFile longer = lab;
+  const double end = longer.segments.back().end_s;
+  longer.segments.push_back({end, end + 1.0, "sil"});
+  longer.scores.push_back(std::nullopt);
+  write_file_atomically(out("long.lab"), write_lab(longer));
+  r = run_command(fapcast("animate --wav " + take("wav") + " --align " + out("long.lab") + " --voice " + voice() +
+                          " -o " + out("long.fap")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("alignment-longer-than-audio"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("long.fap")));
+}
+
+void BadInputExitsOneAndNamesIt() {
+  auto expect_error = [](const std::string& args, const std::string& what) {
+    const auto r = run_command(fapcast(args));
+    EXPECT_EQ(r.exit_code, 1) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << args << "\n" << r.err;
+  };
+  expect_error("say \"   \" --voice " + voice() + " -o " + out("e.fap"), "empty-text");
+  expect_error("animate --wav " + out("none.wav") + " --align " + take("TextGrid") + " --voice " + voice() +
+                   " -o " + out("e.fap"), "none.wav");
+  expect_error("animate --wav " + take("wav") + " --align " + out("none.lab") + " --voice " + voice() +
+                   " -o " + out("e.fap"), "none.lab");
+  write_file_atomically(out("bad.lab"), "0 1000000 sil\n1000000 2000000 xyz\n");
+  expect_error("animate --wav " + take("wav") + " --align " + out("bad.lab") + " --voice " + voice() + " -o " +
+                   out("e.fap"), "phone-label");
+  write_file_atomically(out("overlap.lab"), "0 2000000 sil\n1000000 3000000 aa\n");
+  expect_error("animate --wav " + take("wav") + " --align " + out("overlap.lab") + " --voice " + voice() + " -o " +
+                   out("e.fap"), "overlap.lab");
+  write_file_atomically(out("not-a-voice.fapv"), "this is not a voice\n");
+  expect_error("say \"Hello.\" --voice " + out("not-a-voice.fapv") + " -o " + out("e.fap"), "not-a-voice.fapv");
+  expect_error("say \"Hello.\" --voice " + out("missing.fapv") + " -o " + out("e.fap"), "missing.fapv");
+  EXPECT_FALSE(fs::exists(out("e.fap")));
+}
+
+// The take's phones as `animate` reads them, synthesised by the library with the CLI's defaults.
+SynthesizedTrack library_track(const Voice& v, const MonoAudio& audio) {
+  const Alignment a = read_textgrid(read_file(take("TextGrid")), take("TextGrid"));
+  const auto samples = static_cast<std::int64_t>(audio.samples.size());
+  const auto phones = fit_phones_to_audio(phones_from_tier(*phone_tier(a), audio.sample_rate_hz, "t"),
+                                                 samples, audio.sample_rate_hz / 50, "t");
+  SynthesisOptions options;
+  options.search.beta = 0.1;
+  options.search.max_active = 64;
+  return synthesize(v.graph(), v.frame_coefficients(), phones, audio.sample_rate_hz, samples, options, "t");
+}
+
+double mean_fap(const FapSequence& seq, int fap) {
+  double sum = 0;
+  for (const auto& f : seq.frames) sum += f.value(fap);
+  return sum / static_cast<double>(seq.frames.size());
+}
+
+// --expression: FAP 2 in every frame of .fap and .fba, and the lips' FAPs come from the blended
+// face: joy pulls the lip corners outwards and up.
+void ExpressionBlendsWithSpeech() {
+  const std::string animate = "animate --wav " + take("wav") + " --align " + take("TextGrid") + " --voice " + voice();
+  auto r = run_command(fapcast(animate + " -o " + out("plain.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const std::string name : {"joy.fap", "joy.fba"}) {
+    r = run_command(fapcast(animate + " --expression joy:63 -o " + out(name)));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_NE(r.out.find("expression joy:63"), std::string::npos) << r.out;
+  const auto plain = read_track_file(out("plain.fap"));
+  for (const std::string name : {"joy.fap", "joy.fba"}) {
+    SCOPED_TRACE(name);
+    const auto joy = read_track_file(out(name));
+    ASSERT_EQ(joy.frames.size(), plain.frames.size());
+    for (const auto& f : joy.frames) {
+      ASSERT_TRUE(f.mask.test(2));
+      ASSERT_EQ(f.expression.select1, 1);  // joy
+      ASSERT_EQ(f.expression.intensity1, 63);
+      ASSERT_EQ(f.expression.select2, 0);
+    }
+    for (const int fap : {53, 54, 59, 60}) {  // stretch / raise the outer lip corners 8.3, 8.4
+      ASSERT_TRUE(joy.frames[0].mask.test(fap)) << fap;
+      EXPECT_GT(mean_fap(joy, fap), mean_fap(plain, fap) + 20) << "FAP " << fap;
+    }
+    EXPECT_FALSE(plain.frames[0].mask.test(2));
+  }
+  // Two expressions: both fields.
+  r = run_command(fapcast(animate + " --expression joy:40,surprise:20 -o " + out("two.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto two = read_track_file(out("two.fap"));
+  EXPECT_EQ(two.frames[0].expression, (ExpressionField{1, 40, 6, 20, false, false}));
+}
+
+// -o OUT.glb: the voice's mean is the mesh, its k components the targets, the synthesised PCA
+// frames the weights at 60 fps; --expression adds one target with weight 1; three.js loads it.
+void GlbCarriesThePcaFrames() {
+  const Voice v = Voice::open(voice());
+  const MonoAudio audio = read_wav(take("wav"));
+  const std::string animate = "animate --wav " + take("wav") + " --align " + take("TextGrid") + " --voice " + voice();
+  auto r = run_command(fapcast(animate + " -o " + out("anim.glb")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("frames at 60 fps"), std::string::npos) << r.out;
+  const auto a = read_glb(read_file(out("anim.glb")), out("anim.glb"));
+  const auto k = static_cast<std::size_t>(v.component_count());
+  ASSERT_EQ(a.targets_m.size(), k);
+  EXPECT_EQ(a.target_names.front(), "pc1");
+  EXPECT_EQ(a.rate, (FrameRate{60, 1}));
+  const Eigen::Index n = v.dimension() / 3;
+  EXPECT_EQ(a.base_positions_m, Eigen::Map<const Eigen::Matrix3Xf>(v.pca_mean().data(), 3, n));
+  for (std::size_t i = 0; i < k; ++i) {
+    const Eigen::Matrix<float, 1, Eigen::Dynamic> row = v.pca_components().row(static_cast<Eigen::Index>(i));
+    ASSERT_EQ(a.targets_m[i], Eigen::Map<const Eigen::Matrix3Xf>(row.data(), 3, n)) << "component " << i;
+  }
+  const SynthesizedTrack track = library_track(v, audio);
+  ASSERT_EQ(a.weights.rows(), frames_for(audio, 60));
+  ASSERT_LE(a.weights.rows(), track.pca_frames.rows());
+  EXPECT_EQ(a.weights, track.pca_frames.topRows(a.weights.rows())) << "the weights are the PCA frames, bit for bit";
+  EXPECT_EQ(a.triangles, triangulate(ict_face_model().faces));
+
+  r = run_command(fapcast(animate + " --expression joy:40 -o " + out("joy.glb")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = read_glb(read_file(out("joy.glb")), out("joy.glb"));
+  ASSERT_EQ(j.targets_m.size(), k + 1);
+  EXPECT_EQ(j.target_names.back(), "joy:40");
+  EXPECT_TRUE((j.weights.col(static_cast<Eigen::Index>(k)).array() == 1.0f).all());
+  EXPECT_EQ(j.weights.leftCols(static_cast<Eigen::Index>(k)), a.weights);
+  const Positions joy_m =
+      0.01f * expression_displacement(ict_face_model(), {Expression::joy, 40});
+  EXPECT_LT((j.targets_m.back() - joy_m).cwiseAbs().maxCoeff(), 1e-9f);
+
+  // say: the WAV goes beside the .glb.
+  r = run_command(fapcast("say \"Hello.\" --voice " + voice() + " --expression joy:40 -o " + out("hello.glb") +
+                          " --obj-frames " + out("hello-obj")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const MonoAudio hello = read_wav(out("hello.wav"));
+  const auto h = read_glb(read_file(out("hello.glb")), "hello.glb");
+  EXPECT_EQ(h.weights.rows(), frames_for(hello, 60));
+  // --obj-frames: every frame as an OBJ of the mesh the .glb shows.
+  std::size_t objs = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(out("hello-obj"))) ++objs;
+  EXPECT_EQ(objs, static_cast<std::size_t>(h.weights.rows()));
+  const auto frame5 = read_obj_mesh(out("hello-obj") + "/frame_000005.obj");
+  EXPECT_LT((frame5.vertices - frame_positions(h, 5)).cwiseAbs().maxCoeff(), 1e-7f);
+
+  // A standard viewer: three.js's GLTFLoader (Debian libjs-three) in Node sees k + 1 morph
+  // targets and one morphTargetInfluences track with a key per frame, holding the file's weights.
+  const std::string script = std::string(FAPCAST_SOURCE_DIR) + "/tests/viewer/three_gltf_check.js";
+  r = run_command("node '" + script + "' '" + out("hello.glb") + "' --targets " + std::to_string(k + 1) +
+                  " --frames " + std::to_string(h.weights.rows()) + " --fps 60");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto seen = nlohmann::json::parse(r.out);
+  EXPECT_EQ(seen["vertices"], n);
+  EXPECT_EQ(seen["names"].front(), "pc1");
+  EXPECT_EQ(seen["names"].back(), "joy:40");
+  const auto& track0 = seen["animations"][0]["tracks"][0];
+  ASSERT_EQ(track0["weights"].size(), static_cast<std::size_t>(h.weights.size()));
+  for (Eigen::Index f = 0; f < h.weights.rows(); ++f)
+    for (Eigen::Index c = 0; c <= static_cast<Eigen::Index>(k); ++c)
+      ASSERT_EQ(track0["weights"][static_cast<std::size_t>(f * (static_cast<Eigen::Index>(k) + 1) + c)].get<float>(),
+                h.weights(f, c))
+          << "frame " << f << ", target " << c;
+}
+
+// voice retarget: on a face 1.5 times the generic one (moved), every displacement is 1.5 times
+// the generic one and the FAPs (displacements over the face's own FAPU) stay the same; on an
+// actor made of ICT identity shapes the voice speaks and its FAPU are the actor's.
+void RetargetedVoiceSpeaks() {
+  const std::string ict = std::string(FAPCAST_SOURCE_DIR) + "/data/ict-facekit/generic_neutral_mesh.obj";
+  const ObjMesh generic = read_obj_mesh(ict);
+  const Positions big = (1.5f * generic.vertices).colwise() + Eigen::Vector3f(1, 2, 3);
+  write_file_atomically(out("big.obj"), write_obj_mesh(big, generic.faces));
+  auto r = run_command(fapcast("voice retarget " + voice() + " --generic '" + ict + "' --specific " + out("big.obj") +
+                               " -o " + out("big.fapv")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("components re-targeted"), std::string::npos) << r.out;
+  const std::string animate = "animate --wav " + take("wav") + " --align " + take("TextGrid");
+  for (const std::string v : {"v", "big"}) {
+    r = run_command(fapcast(animate + " --voice " + out(v + ".fapv") + " -o " + out("rt-" + v + ".fap")));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    r = run_command(fapcast(animate + " --voice " + out(v + ".fapv") + " -o " + out("rt-" + v + ".glb")));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const auto g = read_track_file(out("rt-v.fap")), s = read_track_file(out("rt-big.fap"));
+  ASSERT_EQ(g.frames.size(), s.frames.size());
+  int worst = 0;
+  for (std::size_t f = 0; f < g.frames.size(); ++f) {
+    ASSERT_EQ(g.frames[f].mask, s.frames[f].mask);
+    for (int fap = 3; fap <= 68; ++fap)
+      if (g.frames[f].mask.test(fap)) worst = std::max(worst, std::abs(g.frames[f].value(fap) - s.frames[f].value(fap)));
+  }
+  EXPECT_LE(worst, 1) << "FAPs are in the face's own units: a scaled face plays the same values (+-1 rounding)";
+  const auto gg = read_glb(read_file(out("rt-v.glb")), "rt-v.glb");
+  const auto sg = read_glb(read_file(out("rt-big.glb")), "rt-big.glb");
+  ASSERT_EQ(gg.targets_m.size(), sg.targets_m.size());
+  const Eigen::Matrix3Xf generic_m = 0.01f * generic.vertices, big_m = 0.01f * big;
+  EXPECT_LT((sg.base_positions_m - (big_m + 1.5f * (gg.base_positions_m - generic_m))).cwiseAbs().maxCoeff(), 1e-5f);
+  for (std::size_t i = 0; i < gg.targets_m.size(); ++i)  // the components (expressions: speech_expression_test)
+    EXPECT_LT((sg.targets_m[i] - 1.5f * gg.targets_m[i]).cwiseAbs().maxCoeff(), 1e-6f) << "target " << i;
+  EXPECT_EQ(sg.weights, gg.weights) << "the PCA frames are the voice's, unchanged";
+
+  // An actor from three ICT identity shapes: the voice speaks with the actor's FAPU.
+  const FaceModel& face = ict_face_model();
+  Positions actor = face.neutral_cm;
+  for (std::size_t i = 0; i < 3; ++i) add_scaled(actor, face.identities[i], i == 1 ? -0.8f : 0.9f);
+  write_file_atomically(out("actor.obj"), write_obj_mesh(actor, face.faces));
+  r = run_command(fapcast("voice retarget " + voice() + " --generic '" + ict + "' --specific " + out("actor.obj") +
+                          " -o " + out("actor.fapv")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_command(fapcast(animate + " --voice " + out("actor.fapv") + " -o " + out("rt-actor.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  r = run_command(fapcast("say \"Hello.\" --voice " + out("actor.fapv") + " -o " + out("actor-say.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_GT(read_track_file(out("actor-say.fap")).frames.size(), 5u);
+  const Voice actor_voice = Voice::open(out("actor.fapv"));
+  for (const auto& p : actor_voice.feature_points())
+    ASSERT_LT((p.neutral_m - 0.01 * actor.col(p.vertex).cast<double>()).norm(), 1e-7) << p.label;
+  const auto a = read_track_file(out("rt-actor.fap"));
+  ASSERT_EQ(a.frames.size(), g.frames.size());
+  int differ = 0;
+  for (std::size_t f = 0; f < g.frames.size(); ++f) differ += g.frames[f].value(3) != a.frames[f].value(3);
+  EXPECT_GT(differ, 0) << "another face: other displacements and other FAPU";
+
+  // Bad input: the generic mesh in the wrong unit names the rule and the feature point.
+  r = run_command(fapcast("voice retarget " + voice() + " --generic '" + ict + "' --obj-unit m --specific " +
+                          out("big.obj") + " -o " + out("bad.fapv")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("generic-mismatch"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("bad.fapv")));
+}
+
+TEST_F(SayCli, SayAndAnimateEndToEnd) {
+  {
+    SCOPED_TRACE("SayWritesTheTrackInSyncWithTheWav");
+    SayWritesTheTrackInSyncWithTheWav();
+  }
+  {
+    SCOPED_TRACE("EveryFormatAndRate");
+    EveryFormatAndRate();
+  }
+  {
+    SCOPED_TRACE("AnimateFromTextGridAndLab");
+    AnimateFromTextGridAndLab();
+  }
+  {
+    SCOPED_TRACE("BadInputExitsOneAndNamesIt");
+    BadInputExitsOneAndNamesIt();
+  }
+  {
+    SCOPED_TRACE("ExpressionBlendsWithSpeech");
+    ExpressionBlendsWithSpeech();
+  }
+  {
+    SCOPED_TRACE("GlbCarriesThePcaFrames");
+    GlbCarriesThePcaFrames();
+  }
+  {
+    SCOPED_TRACE("RetargetedVoiceSpeaks");
+    RetargetedVoiceSpeaks();
+  }
+}
+
+TEST(SayCliUsage, MistakesExitTwo) {
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.txt --voice v.fapv")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\"")).exit_code, 2);  // no -o
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 0")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 500")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --duration-weight -1")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("animate --wav a.wav -o x.fap")).exit_code, 2);  // no --align
+  EXPECT_EQ(run_command(fapcast("animate --wav a.wav --align a.txt -o x.fap")).exit_code, 2);
+  // Expressions: an unknown name or an intensity outside 0..63 is a usage mistake, said clearly.
+  for (const std::string bad : {"glee:40", "joy:64", "joy:40,fear:10,anger:5"}) {
+    const auto r = run_command(fapcast("say \"Hi.\" -o x.fap --voice v.fapv --expression " + bad));
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_NE(r.err.find("--expression"), std::string::npos) << r.err;
+  }
+  EXPECT_NE(run_command(fapcast("say \"Hi.\" -o x.fap --expression glee")).err.find("joy, sadness"), std::string::npos);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.glb --fps 25")).exit_code, 2);  // .glb keys are the voice's 60 fps
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.glb --viseme")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --obj-frames d")).exit_code, 2);  // OBJ frames: .glb only
+  EXPECT_EQ(run_command(fapcast("voice retarget v.fapv --generic g.obj -o v2.fapv")).exit_code, 2);  // no --specific
+}
+
+}  // namespace
+}  // namespace fapcast::test

@@ -1,0 +1,82 @@
+// `fapcast stream` into `fapcast recv` on loopback, end to end through the executable.
+#include "fapcast/transport/asio.hpp"
+#include "fapcast/transport/fba_track.hpp"
+#include "fapcast/transport/track_file.hpp"
+#include "cli/fapcast_command.hpp"
+#include "support/run_command.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+namespace fapcast::test {
+namespace {
+
+using namespace std::chrono_literals;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A free loopback port (bound once by the OS, then released for the command to bind).
+int free_port() {
+  asio::io_context io;
+  udp::socket s(io, udp::endpoint(asio::ip::make_address("127.0.0.1"), 0));
+  return s.local_endpoint().port();
+}
+
+class StreamRecv : public testing::TestWithParam<const char*> {};
+
+TEST_P(StreamRecv, TheReceivedTrackEqualsTheSentOne) {
+  const std::string dir = make_temp_dir("stream");
+  const std::string input = std::string(FAPCAST_TEST_DATA) + "/xface/joy.fap";
+  const std::string out = dir + "/out" + GetParam();
+  const std::string url = "udp://127.0.0.1:" + std::to_string(free_port());
+  CommandResult recv;
+  std::thread receiver([&] {
+    recv = run_command("(" + fapcast("recv " + url + " -o " + out + " --timeout 1") + " 2>" + dir + "/recv.err)");
+  });
+  for (int i = 0; i < 100 && slurp(dir + "/recv.err").find("listening") == std::string::npos; ++i)
+    std::this_thread::sleep_for(50ms);
+  const CommandResult send = run_command(fapcast("stream " + input + " --to " + url + " --no-pace --iperiod 10"));
+  receiver.join();
+  ASSERT_EQ(send.exit_code, 0) << send.err;
+  ASSERT_EQ(recv.exit_code, 0) << slurp(dir + "/recv.err");
+  EXPECT_NE(recv.out.find("108 accepted, 0 lost"), std::string::npos) << recv.out;
+  // Expected: the sent frames as the FBA frame coder reconstructs them (quant 1 is lossy).
+  const auto sent = read_track_file(input);
+  FbaEncoderOptions o;
+  o.intra_period = 10;
+  std::vector<MediaUnit> units;
+  ASSERT_FALSE(encode_track_units(sent, 48000, o, units));
+  FbaFrameDecoder decoder;
+  std::vector<FapFrame> expected(units.size());
+  for (std::size_t k = 0; k < units.size(); ++k) ASSERT_FALSE(decoder.decode(units[k].bytes, expected[k]));
+  const auto got = read_track_file(out);
+  EXPECT_EQ(got.frames, expected);
+  EXPECT_EQ(got.rate, sent.rate);
+}
+INSTANTIATE_TEST_SUITE_P(Formats, StreamRecv, testing::Values(".fap", ".fba", ".json"),
+                         [](const auto& info) { return std::string(info.param + 1); });
+
+TEST(StreamRecvCli, BadUsageAndBadInput) {
+  EXPECT_EQ(run_command(fapcast("stream x.txt --to udp://127.0.0.1:9")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("recv udp://127.0.0.1:0 -o out.wav")).exit_code, 2);
+  const auto missing = run_command(fapcast("stream /nonexistent/a.fap --to udp://127.0.0.1:9"));
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("/nonexistent/a.fap"), std::string::npos) << missing.err;
+  const auto bad_url = run_command(fapcast("stream " + std::string(FAPCAST_TEST_DATA) + "/xface/joy.fap --to 127.0.0.1:9"));
+  EXPECT_EQ(bad_url.exit_code, 1);
+  EXPECT_NE(bad_url.err.find("udp-url"), std::string::npos) << bad_url.err;
+  const auto silent = run_command(fapcast("recv udp://127.0.0.1:0 -o /tmp/never.fap --timeout 0.2"));
+  EXPECT_EQ(silent.exit_code, 1);
+  EXPECT_NE(silent.err.find("no decodable frames"), std::string::npos) << silent.err;
+}
+
+}  // namespace
+}  // namespace fapcast::test

@@ -1,0 +1,1 @@
+#include "fapcast/high/high.hpp"

@@ -1,0 +1,1 @@
+#include "fapcast/low/low.hpp"

@@ -1,0 +1,70 @@
+// The table, JSON and plots of `fapcast eval synth`, from a hand-made report.
+#include "fapcast/eval/synthesis_report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace fapcast::cli {
+namespace {
+
+EvaluationReport report() {
+  EvaluationReport r;
+  r.phones = 40;
+  r.frames = 120;
+  SystemReport a{"variable-length", {}, 0.35};
+  a.score.lips.height = {4.5, 0.91, 120};
+  a.score.lip_rms_mm = 1.25;
+  a.score.all_rms_mm = 0.75;
+  SystemReport b{"dominance", {}, 0.0};
+  r.systems = {a, b};
+  UtteranceCurves u{"heldout01", "Bob & \"Jo\" <said>", {}, {{}, {}}};
+  for (int n = 0; n < 120; ++n) {
+    const double v = 10 + 5 * std::sin(0.1 * n);
+    u.recorded.push_back({v, 50.0, 90.0});
+    u.synthesised[0].push_back({v + 1, 49.0, 90.5});
+    u.synthesised[1].push_back({v - 1, 51.0, 89.5});
+  }
+  r.utterances.push_back(u);
+  return r;
+}
+
+TEST(SynthesisReport, TableHasOneRowPerSystemAndSaysSynthetic) {
+  const std::string t = format_evaluation_table(report(), {"v.fapv", 2, "fapcast eval synth --seed 2"});
+  EXPECT_NE(t.find("SYNTHETIC"), std::string::npos);
+  EXPECT_NE(t.find("variable-length"), std::string::npos);
+  EXPECT_NE(t.find("4.50"), std::string::npos);
+  EXPECT_NE(t.find("0.910"), std::string::npos);
+  EXPECT_NE(t.find("0.350"), std::string::npos);
+  EXPECT_NE(t.find("reproduce: fapcast eval synth --seed 2"), std::string::npos);
+  const auto row = t.substr(t.find("\ndominance"));
+  EXPECT_NE(row.find(" -\n"), std::string::npos) << "no units for the dominance model: " << row;
+
+  const auto j = evaluation_json(report(), {"v.fapv", 2, ""});
+  EXPECT_TRUE(j["synthetic"].get<bool>());
+  EXPECT_EQ(j["systems"].size(), 2u);
+  EXPECT_DOUBLE_EQ(j["systems"][0]["lip_height"]["error_percent"].get<double>(), 4.5);
+  EXPECT_DOUBLE_EQ(j["systems"][0]["lip_fp_rms_mm"].get<double>(), 1.25);
+}
+
+TEST(SynthesisReport, LipPlotHasThreePanelsAndALinePerSystem) {
+  const LinePlot plot = lip_curve_plot(report(), 0);
+  EXPECT_NE(plot.title.find("SYNTHETIC"), std::string::npos);
+  ASSERT_EQ(plot.panels.size(), 3u);
+  for (const auto& p : plot.panels) {
+    ASSERT_EQ(p.series.size(), 3u);
+    EXPECT_EQ(p.series[0].name, "recorded");
+    EXPECT_EQ(p.series[2].name, "dominance");
+    EXPECT_EQ(p.series[1].values.size(), 120u);
+  }
+  EXPECT_DOUBLE_EQ(plot.panels[1].series[1].values[0], 49.0) << "width panel, first system";
+  const std::string svg = svg_line_plot(plot);
+  EXPECT_NE(svg.find("Bob &amp; &quot;Jo&quot; &lt;said&gt;"), std::string::npos);
+  std::size_t polylines = 0;
+  for (auto p = svg.find("<polyline"); p != std::string::npos; p = svg.find("<polyline", p + 1)) ++polylines;
+  EXPECT_EQ(polylines, 9u);
+  EXPECT_THROW(lip_curve_plot(report(), 1), std::out_of_range);
+}
+
+}  // namespace
+}  // namespace fapcast::cli

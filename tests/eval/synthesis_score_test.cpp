@@ -1,0 +1,141 @@
+// Scoring synthesised tracks against recorded ones on the target face.
+#include "fapcast/eval/synthesis_score.hpp"
+
+#include "fapcast/face/marker_map.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace fapcast {
+namespace {
+
+// Every feature point of the marker table (the rigid H.* markers excluded), with its vertex.
+struct FeaturePoints {
+  std::vector<std::string> labels;
+  std::vector<std::int32_t> vertices;
+};
+
+FeaturePoints feature_points() {
+  FeaturePoints f;
+  for (const auto& s : marker_sites())
+    if (s.role != MarkerRole::rigid) f.labels.emplace_back(s.label), f.vertices.push_back(s.vertex);
+  return f;
+}
+
+TEST(EvaluationPoints, FindsTheLipsAndTheTemples) {
+  const auto f = feature_points();
+  const auto p = evaluation_points(f.labels, f.vertices);
+  EXPECT_EQ(p.vertices.size(), f.vertices.size() + 2);
+  EXPECT_EQ(p.feature_points.size(), f.vertices.size());
+  EXPECT_EQ(p.lip_points.size(), 16u) << "inner lip 2.2-2.9 and outer lip 8.1-8.8";
+  for (std::size_t i = 0; i < kLipMarkerLabels.size(); ++i)
+    EXPECT_EQ(p.labels[static_cast<std::size_t>(p.lip_measure[i])], kLipMarkerLabels[i]);
+
+  auto without_81 = f;
+  const auto at = std::find(without_81.labels.begin(), without_81.labels.end(), "8.1") - without_81.labels.begin();
+  without_81.labels.erase(without_81.labels.begin() + at);
+  without_81.vertices.erase(without_81.vertices.begin() + at);
+  EXPECT_THROW(evaluation_points(without_81.labels, without_81.vertices), std::invalid_argument);
+  auto twice = f;
+  twice.labels[1] = twice.labels[0];
+  EXPECT_THROW(evaluation_points(twice.labels, twice.vertices), std::invalid_argument);
+}
+
+TEST(VertexTracks, PcaTracksAreTheReconstructedMeshAtTheVertices) {
+  std::mt19937_64 rng(5);
+  std::normal_distribution<float> normal;
+  const int N = 50, k = 4, F = 7;
+  RowMajorMatrixXf mean(1, 3 * N), components(k, 3 * N);
+  Eigen::MatrixXf coefficients(F, k);
+  for (auto* m : {&mean, &components})
+    for (Eigen::Index i = 0; i < m->size(); ++i) m->data()[i] = normal(rng);
+  for (Eigen::Index i = 0; i < coefficients.size(); ++i) coefficients.data()[i] = normal(rng);
+  const std::vector<std::int32_t> vertices{3, 49, 0, 17};
+  const Eigen::MatrixXf tracks = vertex_tracks(mean, components, coefficients, vertices);
+  ASSERT_EQ(tracks.rows(), F);
+  ASSERT_EQ(tracks.cols(), 12);
+  const Eigen::MatrixXf mesh = (coefficients * components).rowwise() + mean.row(0);
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    EXPECT_LT((tracks.middleCols<3>(3 * static_cast<Eigen::Index>(i)) - mesh.middleCols<3>(3 * vertices[i])).cwiseAbs().maxCoeff(), 1e-5f);
+  EXPECT_THROW(vertex_tracks(mean, components, coefficients, std::vector<std::int32_t>{50}), std::invalid_argument);
+  EXPECT_THROW(vertex_tracks(mean, components, Eigen::MatrixXf(F, k + 1), vertices), std::invalid_argument);
+}
+
+TEST(VertexTracks, RbfTracksAreTheMapAtTheVertices) {
+  std::mt19937_64 rng(6);
+  std::normal_distribution<double> normal;
+  const int m = 6, d = 9, N = 20;
+  Eigen::MatrixXd centres(m, d), targets(m, 3 * N), sources(d, 5);
+  for (auto* x : {&centres, &targets, &sources})
+    for (Eigen::Index i = 0; i < x->size(); ++i) x->data()[i] = normal(rng);
+  const RbfMap map = fit_rbf_by_gcv(centres, targets, 4.0);
+  const std::vector<std::int32_t> vertices{19, 2};
+  const Eigen::MatrixXf tracks = vertex_tracks(map, sources, vertices);
+  ASSERT_EQ(tracks.rows(), 5);
+  for (Eigen::Index f = 0; f < 5; ++f) {
+    const Eigen::VectorXd y = map(sources.col(f));
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(tracks(f, 3 * static_cast<Eigen::Index>(i) + c), y(3 * vertices[i] + c), 1e-5);
+  }
+  EXPECT_THROW(vertex_tracks(map, Eigen::MatrixXd(d + 1, 2), vertices), std::invalid_argument);
+}
+
+// Tracks of a made-up face (a point cloud of the right size), in metres, whose mouth opens and
+// closes: 8.2 and 2.3 move down by up to 2 * amplitude.
+Eigen::MatrixXf talking(const EvaluationPoints& p, int frames, double amplitude_m) {
+  Eigen::MatrixXf t(frames, 3 * static_cast<Eigen::Index>(p.vertices.size()));
+  for (int n = 0; n < frames; ++n)
+    for (std::size_t i = 0; i < p.vertices.size(); ++i) {
+      const double a = static_cast<double>(i);
+      Eigen::Vector3f x(static_cast<float>(0.03 * std::sin(a)), static_cast<float>(0.03 * std::cos(1.7 * a)),
+                        static_cast<float>(0.05 + 0.01 * std::sin(2.3 * a)));
+      if (p.labels[i] == "8.2" || p.labels[i] == "2.3")
+        x.y() -= static_cast<float>(amplitude_m * (1.0 - std::cos(0.3 * n)));
+      t.block<1, 3>(n, 3 * static_cast<Eigen::Index>(i)) = x.transpose();
+    }
+  return t;
+}
+
+TEST(SynthesisScorer, PerfectAndShiftedSyntheses) {
+  const auto f = feature_points();
+  const auto p = evaluation_points(f.labels, f.vertices);
+  const Eigen::MatrixXf recorded = talking(p, 60, 0.004);
+
+  SynthesisScorer perfect(p);
+  perfect.add(recorded, recorded);
+  const auto s = perfect.score();
+  EXPECT_EQ(s.frames, 60u);
+  EXPECT_NEAR(s.lips.height.mean_error_percent, 0.0, 1e-9);
+  EXPECT_NEAR(s.lips.height.correlation, 1.0, 1e-9);
+  EXPECT_EQ(s.lip_rms_mm, 0.0);
+  EXPECT_EQ(s.all_rms_mm, 0.0);
+
+  // The whole face moved 1 mm forward and 2 frames longer: RMS 1 mm, lips unchanged.
+  Eigen::MatrixXf shifted = talking(p, 62, 0.004);
+  for (Eigen::Index c = 2; c < shifted.cols(); c += 3) shifted.col(c).array() += 0.001f;
+  SynthesisScorer moved(p);
+  moved.add(recorded, shifted);
+  const auto m = moved.score();
+  EXPECT_EQ(m.frames, 60u) << "compared over the frames both have";
+  EXPECT_NEAR(m.lip_rms_mm, 1.0, 1e-3);
+  EXPECT_NEAR(m.all_rms_mm, 1.0, 1e-3);
+  EXPECT_NEAR(m.lips.height.correlation, 1.0, 1e-6);
+
+  // A mouth that opens half as far: the height curve still correlates, but its error grows and
+  // only the two moving points contribute distance.
+  SynthesisScorer half(p);
+  half.add(recorded, talking(p, 60, 0.002));
+  half.add(recorded, recorded);
+  const auto h = half.score();
+  EXPECT_EQ(h.utterances, 2u);
+  EXPECT_GT(h.lips.height.mean_error_percent, 1.0);
+  EXPECT_GT(h.lips.height.correlation, 0.8) << "same shape, half the size in one of two utterances";
+  EXPECT_GT(h.lip_rms_mm, h.all_rms_mm) << "the error sits on the lips";
+  EXPECT_THROW(half.add(recorded, Eigen::MatrixXf(60, 3)), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace fapcast

@@ -1,0 +1,44 @@
+#pragma once
+// Helpers the FBA tests share: the seed from FAPCAST_SEED, and smooth random tracks.
+#include "fapcast/codec/fap_frame.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace fapcast::test {
+
+// FAPCAST_SEED from the environment, or `fallback`.
+inline std::uint64_t fba_seed(std::uint64_t fallback = 20261122) {
+  const char* env = std::getenv("FAPCAST_SEED");
+  return env ? std::strtoull(env, nullptr, 10) : fallback;
+}
+
+// What to run to see a random failure again.
+inline std::string reproduce(std::uint64_t seed, const std::string& filter) {
+  return "reproduce: FAPCAST_SEED=" + std::to_string(seed) +
+         " build/dev/tests/fapcast_codec_tests --gtest_filter='" + filter + "'";
+}
+
+// A smooth random walk per masked FAP (a low-passed random walk), values within +/-limit.
+inline std::vector<FapFrame> smooth_track(std::mt19937_64& rng, const FapMask& mask,
+                                                 std::size_t frames, int limit) {
+  std::vector<FapFrame> out(frames);
+  std::normal_distribution<double> noise(0.0, limit / 40.0);
+  std::vector<double> velocity(kFapCount + 1, 0.0), value(kFapCount + 1, 0.0);
+  for (auto& f : out) {
+    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
+      if (!mask.test(n)) continue;
+      velocity[n] = 0.8 * velocity[n] + noise(rng);
+      value[n] = std::clamp(0.98 * value[n] + velocity[n], -double(limit), double(limit));
+      f.set(n, static_cast<std::int32_t>(std::lround(value[n])));
+    }
+  }
+  return out;
+}
+
+}  // namespace fapcast::test

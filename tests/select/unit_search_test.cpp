@@ -1,0 +1,452 @@
+// The Viterbi unit search against brute force on small random graphs, and its contracts.
+#include "fapcast/select/unit_search.hpp"
+#include "support/synthetic_voice_graph.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <random>
+
+namespace fapcast {
+namespace {
+
+VisemeClass V(int i) { return static_cast<VisemeClass>(i); }
+
+std::vector<VisemeClass> Vs(std::initializer_list<int> classes) {
+  std::vector<VisemeClass> out;
+  for (int c : classes) out.push_back(V(c));
+  return out;
+}
+
+std::uint64_t test_seed() {
+  const char* s = std::getenv("FAPCAST_SEED");
+  return s ? std::strtoull(s, nullptr, 10) : 20061;
+}
+
+// Utterances given as viseme strings; each phone one frame long, PCA frames random.
+struct Toy {
+  std::vector<PhoneState> states;
+  Eigen::MatrixXf frames;
+};
+
+// With `max_frames_per_phone` above `frames_per_phone`, each phone lasts a random count between.
+Toy make_toy(const std::vector<std::vector<int>>& utterances, std::mt19937_64& rng, int k = 3,
+             int frames_per_phone = 2, int max_frames_per_phone = 0) {
+  Toy toy;
+  std::uniform_int_distribution<int> count(frames_per_phone, std::max(frames_per_phone, max_frames_per_phone));
+  std::uint32_t f = 0;
+  for (std::uint32_t u = 0; u < utterances.size(); ++u)
+    for (int v : utterances[u]) {
+      const auto n = static_cast<std::uint32_t>(max_frames_per_phone > frames_per_phone ? count(rng) : frames_per_phone);
+      toy.states.push_back({u, V(v), {f, n}});
+      f += n;
+    }
+  std::normal_distribution<float> normal;
+  toy.frames = Eigen::MatrixXf(f, k);
+  for (Eigen::Index i = 0; i < toy.frames.size(); ++i) toy.frames.data()[i] = normal(rng);
+  return toy;
+}
+
+SearchOptions with_duration(double beta, double weight) {
+  SearchOptions o;
+  o.beta = beta;
+  o.duration_weight = weight;
+  return o;
+}
+
+// The duration term as SearchOptions defines it, written out independently of the search.
+double duration_term(const PhoneGraph& g, StateId j, std::int64_t target_frames, double weight) {
+  const double r = std::log(static_cast<double>(g.state(j).frames.count) / static_cast<double>(target_frames));
+  return weight * r * r;
+}
+
+// Minimum cost over every admissible state sequence, or +inf when there is none; with `lengths`,
+// each state also pays its duration term at `weight`.
+double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, double beta, double weight = 0.0,
+                   std::span<const std::int64_t> lengths = {}) {
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<StateId> path;
+  std::function<void(std::size_t, double)> go = [&](std::size_t t, double cost) {
+    if (t == targets.size()) {
+      best = std::min(best, cost);
+      return;
+    }
+    for (StateId j = 0; j < g.size(); ++j) {
+      if (g.state(j).viseme != targets[t]) continue;
+      double step;
+      if (t == 0) {
+        step = 1.0;
+      } else {
+        const StateId i = path.back();
+        const bool next_in_recording = g.has_child(i) && j == i + 1;
+        const bool admissible_join = g.has_parent(j) && g.state(j - 1).viseme == g.state(i).viseme;
+        if (next_in_recording) step = 0.0;
+        else if (admissible_join) step = 1.0 + beta * junction_cost(g, i, j);
+        else continue;
+      }
+      if (!lengths.empty()) step += duration_term(g, j, lengths[t], weight);
+      path.push_back(j);
+      go(t + 1, cost + step);
+      path.pop_back();
+    }
+  };
+  go(0, 0.0);
+  return best;
+}
+
+class UnitSearchBruteForce : public ::testing::TestWithParam<double> {};
+
+TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
+  const double beta = GetParam();
+  const auto seed = test_seed();
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> visemes(0, 2), length(2, 5), count(2, 4), tlen(1, 5);
+  int compared = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<std::vector<int>> utts(static_cast<std::size_t>(count(rng)));
+    for (auto& u : utts) {
+      u.resize(static_cast<std::size_t>(length(rng)));
+      for (auto& v : u) v = visemes(rng);
+    }
+    const Toy toy = make_toy(utts, rng);
+    const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+    std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
+    for (auto& v : targets) v = V(visemes(rng));
+    bool covered = true;
+    for (auto v : targets) covered = covered && !g.with_viseme(v).empty();
+    if (!covered) {
+      EXPECT_THROW(unit_search(g, targets, {beta, {}}), std::invalid_argument);
+      continue;
+    }
+    const double expected = brute_force(g, targets, beta);
+    const SearchResult r = unit_search(g, targets, {beta, {}});
+    if (std::isinf(expected)) {
+      EXPECT_GT(r.stats.hard_joins, 0u) << "no admissible path exists, so a hard join is needed";
+      continue;
+    }
+    ++compared;
+    ASSERT_NEAR(r.cost, expected, 1e-4 * (1 + expected))
+        << "trial " << trial << "; reproduce with FAPCAST_SEED=" << seed;
+    EXPECT_EQ(r.stats.hard_joins, 0u);
+    // The path is real: visemes match and units are runs within one recording.
+    ASSERT_EQ(r.states.size(), targets.size());
+    for (std::size_t t = 0; t < targets.size(); ++t) EXPECT_EQ(g.state(r.states[t]).viseme, targets[t]);
+    std::size_t covered_targets = 0;
+    for (const Unit& u : r.units) {
+      EXPECT_EQ(u.first_target, covered_targets);
+      for (std::size_t n = 0; n < u.length; ++n) EXPECT_EQ(r.states[u.first_target + n], u.first_state + n);
+      covered_targets += u.length;
+    }
+    EXPECT_EQ(covered_targets, targets.size());
+    if (beta == 0.0) {
+      EXPECT_EQ(r.cost, static_cast<double>(r.units.size())) << "beta = 0 counts units";
+    }
+  }
+  EXPECT_GT(compared, 100) << "too few comparable trials to mean anything";
+}
+
+INSTANTIATE_TEST_SUITE_P(Betas, UnitSearchBruteForce, ::testing::Values(0.0, 0.05, 1.0));
+
+// The duration term: phones of random lengths, targets of random lengths; the search's cost is
+// the brute-force minimum, and its path's cost written out term by term is that cost.
+TEST(UnitSearch, DurationTermFindsTheMinimumCostOnRandomSmallGraphs) {
+  const auto seed = test_seed();
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> visemes(0, 2), length(2, 5), count(2, 4), tlen(1, 5), frames(1, 9);
+  int compared = 0, moved = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    std::vector<std::vector<int>> utts(static_cast<std::size_t>(count(rng)));
+    for (auto& u : utts) {
+      u.resize(static_cast<std::size_t>(length(rng)));
+      for (auto& v : u) v = visemes(rng);
+    }
+    const Toy toy = make_toy(utts, rng, 3, 1, 6);
+    const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+    std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
+    std::vector<std::int64_t> lengths(targets.size());
+    for (auto& v : targets) v = V(visemes(rng));
+    for (auto& n : lengths) n = frames(rng);
+    bool covered = true;
+    for (auto v : targets) covered = covered && !g.with_viseme(v).empty();
+    if (!covered) continue;
+    const double beta = trial % 2 ? 0.05 : 0.0, weight = 0.5;
+    const double expected = brute_force(g, targets, beta, weight, lengths);
+    if (std::isinf(expected)) continue;
+    const SearchResult r = unit_search(g, targets, lengths, with_duration(beta, weight));
+    const std::string where = "trial " + std::to_string(trial) + "; reproduce with FAPCAST_SEED=" + std::to_string(seed);
+    ASSERT_NEAR(r.cost, expected, 1e-9 * (1 + expected)) << where;
+    double path = static_cast<double>(r.units.size());
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      ASSERT_EQ(g.state(r.states[t]).viseme, targets[t]) << where;
+      path += duration_term(g, r.states[t], lengths[t], weight);
+      if (t > 0 && r.states[t] != r.states[t - 1] + 1) path += beta * junction_cost(g, r.states[t - 1], r.states[t]);
+    }
+    EXPECT_NEAR(path, r.cost, 1e-9 * (1 + path)) << where;
+    ++compared;
+    moved += unit_search(g, targets, {beta, {}}).states != r.states;
+  }
+  EXPECT_GT(compared, 100) << "too few comparable trials to mean anything";
+  EXPECT_GT(moved, 10) << "the duration term never changed a path: the trials do not exercise it";
+}
+
+// Two recordings of the same word, one with its vowel as long as the target's: the term picks it;
+// without the term the search takes the first (lowest state ids) as ties are broken.
+TEST(UnitSearch, DurationTermPrefersTheUnitThatNeedsLessWarping) {
+  std::vector<PhoneState> states{{0, V(0), {0, 3}}, {0, V(1), {3, 2}}, {0, V(0), {5, 3}},
+                                 {1, V(0), {8, 3}}, {1, V(1), {11, 12}}, {1, V(0), {23, 3}}};
+  Eigen::MatrixXf frames = Eigen::MatrixXf::Zero(26, 2);
+  const PhoneGraph g(states, junction_features(states, frames));
+  const std::vector<VisemeClass> targets = Vs({0, 1, 0});
+  const std::vector<std::int64_t> lengths{3, 11, 3};
+  const SearchResult plain = unit_search(g, targets, lengths, with_duration(0.1, 0.0));
+  EXPECT_EQ(plain.states, (std::vector<StateId>{0, 1, 2}));
+  EXPECT_EQ(plain.cost, 1.0);
+  const SearchResult timed = unit_search(g, targets, lengths, with_duration(0.1, 1.0));
+  EXPECT_EQ(timed.states, (std::vector<StateId>{3, 4, 5}));
+  const double r = std::log(12.0 / 11.0);
+  EXPECT_DOUBLE_EQ(timed.cost, 1.0 + r * r);
+}
+
+TEST(UnitSearch, DurationTermRejectsBadLengthsAndWeights) {
+  std::mt19937_64 rng(7);
+  const Toy toy = make_toy({{0, 1}}, rng);
+  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const std::vector<VisemeClass> targets = Vs({0, 1});
+  const std::vector<std::int64_t> one{4}, zero{4, 0}, good{4, 5};
+  EXPECT_THROW(unit_search(g, targets, one, with_duration(0.0, 1.0)), std::invalid_argument);
+  EXPECT_THROW(unit_search(g, targets, zero, with_duration(0.0, 1.0)), std::invalid_argument);
+  EXPECT_NO_THROW(unit_search(g, targets, zero, {}));  // the term is off: lengths are not read
+  EXPECT_THROW(unit_search(g, targets, good, with_duration(0.0, -1.0)), std::invalid_argument);
+  EXPECT_THROW(unit_search(g, targets, good, with_duration(0.0, std::numeric_limits<double>::infinity())),
+               std::invalid_argument);
+  EXPECT_THROW(unit_search(g, targets, good, with_duration(0.0, std::nan(""))), std::invalid_argument);
+}
+
+// The pruned join evaluation (the default) against the reference that evaluates every pair:
+// identical states, units, cost (to the bit) and active counts, on random graphs of random shape
+// and spread, with and without caps and hard joins; on every other graph phones and targets have
+// random lengths and the duration term is on.
+TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
+  const auto seed = test_seed();
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> classes(3, 9), k(1, 9), recordings(6, 24), phones(3, 12), tlen(1, 30);
+  const std::optional<std::size_t> caps[] = {std::nullopt, 1, 3, 16, 64};
+  const double betas[] = {0.02, 0.1, 1.0};
+  const float noises[] = {0.0f, 0.05f, 1.0f};
+  int searches = 0, hard = 0;
+  for (int graph = 0; graph < 60; ++graph) {
+    std::vector<VisemeClass> alphabet;
+    for (int c = 0, n = classes(rng); c < n; ++c) alphabet.push_back(V(c));
+    const bool timed = graph % 2 == 1;
+    const double weight = timed ? 0.3 : 0.0;
+    const auto voice = test::synthetic_voice_graph(static_cast<std::uint32_t>(recordings(rng)), phones(rng), 1 + graph % 3, k(rng),
+                                                   rng(), noises[graph % 3], alphabet, true, timed ? 9 : 0);
+    for (int target = 0; target < 5; ++target) {
+      std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
+      for (auto& v : targets) v = alphabet[std::uniform_int_distribution<std::size_t>(0, alphabet.size() - 1)(rng)];
+      std::vector<std::int64_t> lengths(targets.size());
+      for (auto& n : lengths) n = std::uniform_int_distribution<std::int64_t>(1, 12)(rng);
+      bool covered = true;
+      for (auto v : targets) covered = covered && !voice.graph->with_viseme(v).empty();
+      if (!covered) continue;
+      for (double beta : betas)
+        for (auto cap : caps) {
+          const SearchResult reference = unit_search(*voice.graph, targets, lengths, {beta, cap, false, weight});
+          const SearchResult pruned = unit_search(*voice.graph, targets, lengths, {beta, cap, true, weight});
+          const std::string where = "graph " + std::to_string(graph) + " target " + std::to_string(target) +
+                                    " beta " + std::to_string(beta) + " cap " + (cap ? std::to_string(*cap) : "none") +
+                                    " duration weight " + std::to_string(weight) +
+                                    "; reproduce with FAPCAST_SEED=" + std::to_string(seed);
+          ASSERT_EQ(pruned.cost, reference.cost) << where;
+          ASSERT_EQ(pruned.states, reference.states) << where;
+          ASSERT_EQ(pruned.units, reference.units) << where;
+          ASSERT_EQ(pruned.stats.active_per_step, reference.stats.active_per_step) << where;
+          ASSERT_EQ(pruned.stats.hard_joins, reference.stats.hard_joins) << where;
+          ++searches;
+          hard += reference.stats.hard_joins > 0;
+        }
+    }
+  }
+  EXPECT_GT(searches, 900) << "too few searches to mean anything";
+  EXPECT_GT(hard, 0) << "no search went through a hard join";
+}
+
+// The same on graphs large enough that every step has hundreds of entries and a full cap (the
+// cap's selection, the sketches and the reading order all at the sizes of a voice), with class
+// shapes under light and heavy noise, as the synthesis benchmark has them; under heavy noise with
+// the duration term on.
+TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultOnLargeSteps) {
+  std::mt19937_64 rng(test_seed());
+  int searches = 0;
+  for (float noise : {0.1f, 1.0f}) {
+    // Under heavy noise the phones have random lengths and the duration term is on.
+    const bool timed = noise > 0.5f;
+    const auto voice = test::synthetic_voice_graph(200, 30, 3, 6, rng(), noise, Vs({0, 1, 2, 3, 4}), true, timed ? 8 : 0);
+    std::vector<VisemeClass> targets(40);
+    for (auto& v : targets) v = V(std::uniform_int_distribution<int>(0, 4)(rng));
+    std::vector<std::int64_t> lengths(targets.size());
+    for (auto& n : lengths) n = std::uniform_int_distribution<std::int64_t>(2, 9)(rng);
+    for (const std::optional<std::size_t> cap : {std::optional<std::size_t>{}, std::optional<std::size_t>{16},
+                                                 std::optional<std::size_t>{64}}) {
+      const double weight = timed ? 0.3 : 0.0;
+      const SearchResult reference = unit_search(*voice.graph, targets, lengths, {0.1, cap, false, weight});
+      const SearchResult pruned = unit_search(*voice.graph, targets, lengths, {0.1, cap, true, weight});
+      const std::string where = "noise " + std::to_string(noise) + " cap " + (cap ? std::to_string(*cap) : "none") +
+                                "; reproduce with FAPCAST_SEED=" + std::to_string(test_seed());
+      ASSERT_EQ(pruned.cost, reference.cost) << where;
+      ASSERT_EQ(pruned.states, reference.states) << where;
+      ASSERT_EQ(pruned.units, reference.units) << where;
+      ASSERT_EQ(pruned.stats.active_per_step, reference.stats.active_per_step) << where;
+      ++searches;
+    }
+  }
+  EXPECT_EQ(searches, 6);
+}
+
+// The bounds the pruning rests on (junction_bound.hpp, junction_sketch.hpp) never exceed the cost
+// they bound: every admissible join of random graphs, at scales from 1e-6 to 1e6 and far from the
+// origin.
+TEST(JunctionBound, NeverExceedsTheJunctionCost) {
+  std::mt19937_64 rng(test_seed());
+  int pairs = 0, tight = 0;
+  for (float scale : {1e-6f, 1.0f, 1e6f})
+    for (float offset : {0.0f, 1e3f})
+      for (int graph = 0; graph < 4; ++graph) {
+        auto voice = test::synthetic_voice_graph(12, 8, 1 + graph % 3, 1 + 4 * graph, rng(), 0.3f, Vs({0, 1, 2, 3}));
+        voice.frames = (voice.frames.array() * scale + offset * scale).matrix();
+        const PhoneGraph g(voice.states, junction_features(voice.states, voice.frames));
+        const auto& bound = g.junction_bound();
+        for (StateId j = 0; j < g.size(); ++j) {
+          if (!g.has_parent(j)) continue;
+          const VisemeClass from = g.state(j - 1).viseme, to = g.state(j).viseme;
+          const DivisemePoints& points = bound.points(g, from, to);
+          const auto entries = g.entries(from, to);
+          const auto m = static_cast<std::size_t>(std::find(entries.begin(), entries.end(), j) - entries.begin());
+          ASSERT_LT(m, entries.size());
+          for (StateId i : g.with_viseme(from)) {
+            // Computed per call at first, then from the diviseme's table (the same values).
+            JunctionPoint exit;
+            bound.exits(g, from, to, std::span(&i, 1), std::span(&exit, 1));
+            const float floor = JunctionBound::twice_cost_floor(points.entry[m], exit);
+            const float cost = junction_cost(g, i, j);
+            ASSERT_LE(floor, 2.0f * cost) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
+            // The sketch bound (junction_sketch.hpp), from the same tables the search reads.
+            ASSERT_TRUE(bound.sketched());
+            const DivisemeSketches* entry_sketches = bound.entry_sketches(g, from, to);
+            if (!entry_sketches) entry_sketches = bound.entry_sketches(g, from, to);  // made on the second call
+            ASSERT_NE(entry_sketches, nullptr);
+            SketchRef sketch;
+            std::vector<std::int16_t> buffer;
+            bound.exit_sketches(g, from, std::span(&i, 1), std::span(&sketch, 1), buffer);
+            const auto dims = g.junction().entry.cols();
+            const std::int32_t distance2 =
+                sketch_distance2(entry_sketches->entry.data() + m * static_cast<std::size_t>(dims), sketch.values, dims);
+            const double sketch_floor = sketch_cost_floor(
+                distance2, double{entry_sketches->error[m]} + sketch.error, bound.sketch_grid().step);
+            ASSERT_LE(sketch_floor, double{cost}) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
+            tight += sketch_floor > 0.9 * cost;
+            ++pairs;
+          }
+        }
+      }
+  EXPECT_GT(pairs, 10000);
+  EXPECT_GT(tight, pairs / 2) << "the sketch bound is valid but too loose to prune";
+}
+
+TEST(UnitSearch, PrefersOneLongUnitOverPieces) {
+  std::mt19937_64 rng(1);
+  // Recording 1 holds the whole target; recordings 0 and 2 hold only pieces of it.
+  const Toy toy = make_toy({{0, 1, 5}, {3, 0, 1, 2, 4}, {2, 4, 3}}, rng);
+  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const std::vector<VisemeClass> targets = Vs({0, 1, 2, 4});
+  const SearchResult r = unit_search(g, targets);
+  ASSERT_EQ(r.units.size(), 1u);
+  EXPECT_EQ(r.units[0], (Unit{4, 0, 4}));
+  EXPECT_EQ(r.cost, 1.0);
+}
+
+TEST(UnitSearch, JoinsOnlyWhereTheParentVisemeMatches) {
+  std::mt19937_64 rng(2);
+  // Target 0 1 2: recording 0 gives "0 1"; "2" exists after a 1 (recording 1) and after a 3
+  // (recording 2). Only recording 1's /2/ may follow a unit ending in viseme 1.
+  const Toy toy = make_toy({{0, 1}, {1, 2}, {3, 2}}, rng);
+  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const std::vector<VisemeClass> targets = Vs({0, 1, 2});
+  const SearchResult r = unit_search(g, targets, {1.0, {}});
+  ASSERT_EQ(r.states.size(), 3u);
+  EXPECT_EQ(r.states[2], 3u);
+  EXPECT_EQ(r.stats.hard_joins, 0u);
+}
+
+TEST(UnitSearch, UncoverableVisemeIsNamed) {
+  std::mt19937_64 rng(3);
+  const Toy toy = make_toy({{0, 1}}, rng);
+  const PhoneGraph g(toy.states);
+  const std::vector<VisemeClass> targets = Vs({0, 7});  // class 7: sibilant, never recorded
+  try {
+    unit_search(g, targets);
+    FAIL();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("(target phone 1)"), std::string::npos) << e.what();
+  }
+}
+
+TEST(UnitSearch, CapBoundsActiveStatesAndStillFindsAPath) {
+  std::mt19937_64 rng(4);
+  std::uniform_int_distribution<int> visemes(0, 5);
+  std::vector<std::vector<int>> utts(200);
+  for (auto& u : utts) {
+    u.resize(12);
+    for (auto& v : u) v = visemes(rng);
+  }
+  const Toy toy = make_toy(utts, rng);
+  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  std::vector<VisemeClass> targets(40);
+  for (auto& v : targets) v = V(visemes(rng));
+  const SearchResult full = unit_search(g, targets, {0.1, {}});
+  const SearchResult capped = unit_search(g, targets, {0.1, 8});
+  for (auto n : capped.stats.active_per_step) EXPECT_LE(n, 8u);
+  EXPECT_GT(*std::max_element(full.stats.active_per_step.begin(), full.stats.active_per_step.end()), 8u);
+  EXPECT_GE(capped.cost, full.cost - 1e-9) << "pruning can only lose optimality, never gain it";
+  EXPECT_EQ(capped.states.size(), targets.size());
+}
+
+TEST(UnitSearch, HardJoinWhenADivisemeWasNeverRecorded) {
+  std::mt19937_64 rng(5);
+  const Toy toy = make_toy({{0, 1}, {2, 3}}, rng);
+  const PhoneGraph g(toy.states);
+  const std::vector<VisemeClass> targets = Vs({1, 3});  // "1 3" never occurs; no /3/ follows a /1/
+  const SearchResult r = unit_search(g, targets);
+  EXPECT_EQ(r.stats.hard_joins, 1u);
+  EXPECT_EQ(r.states, (std::vector<StateId>{1, 3}));
+}
+
+TEST(PhoneGraph, IndexesStatesByVisemeAndDiviseme) {
+  std::mt19937_64 rng(6);
+  const Toy toy = make_toy({{0, 1, 0}, {1, 0}}, rng);
+  const PhoneGraph g(toy.states);
+  EXPECT_EQ(std::vector<StateId>(g.with_viseme(V(0)).begin(), g.with_viseme(V(0)).end()), (std::vector<StateId>{0, 2, 4}));
+  EXPECT_EQ(std::vector<StateId>(g.entries(V(1), V(0)).begin(), g.entries(V(1), V(0)).end()), (std::vector<StateId>{2, 4}));
+  EXPECT_TRUE(g.entries(V(0), V(0)).empty());
+  EXPECT_FALSE(g.has_parent(3));
+  EXPECT_TRUE(g.has_parent(4));
+  EXPECT_THROW(PhoneGraph({{1, V(0), {0, 1}}, {0, V(0), {1, 1}}}), std::invalid_argument);
+  EXPECT_THROW(PhoneGraph({{0, V(21), {0, 1}}}), std::invalid_argument);
+}
+
+TEST(PhoneGraph, JunctionCostIsTheMeanSquaredSecondDifference) {
+  // Two recordings of one phone each, 2 frames each, k = 1: trajectories [0, 1] and [5, 3].
+  std::vector<PhoneState> states{{0, V(0), {0, 2}}, {1, V(1), {2, 2}}};
+  Eigen::MatrixXf frames(4, 1);
+  frames << 0, 1, 5, 3;
+  const PhoneGraph g(states, junction_features(states, frames));
+  // Concatenated 0 1 5 3: second differences at the junction are 5-2+0 = 3 and 3-10+1 = -6.
+  EXPECT_FLOAT_EQ(junction_cost(g, 0, 1), 0.5f * (9 + 36));
+}
+
+}  // namespace
+}  // namespace fapcast

@@ -1,0 +1,115 @@
+// The reference talker: what it writes reads back through the importers, takes are reproducible,
+// and everything it writes says SYNTHETIC (pose removal on its takes:
+// tests/pipeline/reference_talker_pose_test.cpp).
+#include "fapcast/talker/reference_talker.hpp"
+
+#include "fapcast/corpus/c3d.hpp"
+#include "fapcast/corpus/marker_conversion.hpp"
+#include "fapcast/face/marker_map.hpp"
+#include "fapcast/core/synthetic_label.hpp"
+#include "fapcast/corpus/textgrid.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace fapcast {
+namespace {
+
+ScriptItem word(const std::string& text) { return {ScriptSection::kCommonWord, text, {}, "", 0.0}; }
+
+const FaceModel& actor() {
+  static const FaceModel a = reference_actor(ict_face_model(), 7);
+  return a;
+}
+
+// RMS (cm) of the difference between two takes over the frames both have and the samples
+// present in both (another seed also draws another speaking rate, so lengths may differ).
+double rms_difference(const MarkerFrames& a, const MarkerFrames& b, std::size_t* samples = nullptr) {
+  double sum = 0;
+  std::size_t n = 0;
+  for (Eigen::Index k = 0; k < std::min(a.frame_count(), b.frame_count()); ++k)
+    for (Eigen::Index m = 0; m < a.marker_count(); ++m)
+      if (a.present(m, k) && b.present(m, k)) {
+        sum += (a.at(m, k) - b.at(m, k)).squaredNorm();
+        ++n;
+      }
+  if (samples) *samples = n;
+  return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
+TEST(ReferenceTalker, C3dAndTextGridReadBackWhatWasRecorded) {
+  PortableRandom random(11);
+  const ReferenceTake take = record_take(word("a pup"), "utt0001", actor(), random);
+  ASSERT_GT(take.captured.frame_count(), 20);
+
+  const C3dFile c3d = read_c3d(write_c3d(to_marker_set(take.captured), {c3d_synthetic_parameter()}), "utt0001.c3d");
+  EXPECT_EQ(c3d.text_parameters.at("FAPCAST:SYNTHETIC"), kSyntheticLabel);
+  const MarkerFrames back = to_marker_frames(c3d.markers);
+  ASSERT_EQ(back.labels, take.captured.labels);
+  ASSERT_EQ(back.frame_count(), take.captured.frame_count());
+  std::size_t samples = 0;
+  EXPECT_LT(rms_difference(back, take.captured, &samples), 1e-5) << "float32 mm in the file";
+  for (Eigen::Index k = 0; k < back.frame_count(); ++k)
+    for (Eigen::Index m = 0; m < back.marker_count(); ++m)
+      ASSERT_EQ(back.present(m, k), take.captured.present(m, k)) << "marker " << m << " frame " << k;
+
+  const Alignment alignment = read_textgrid(write_textgrid(take.alignment), "utt0001.TextGrid");
+  EXPECT_EQ(alignment, take.alignment);
+  EXPECT_TRUE(is_synthetic(alignment));
+  const LabelTier* phones = alignment.find("phones");
+  ASSERT_NE(phones, nullptr);
+  std::string spelled;
+  for (const auto& i : phones->intervals)
+    if (i.label != "sil" && !i.label.empty()) spelled += i.label + " ";
+  EXPECT_NE(spelled.find("P AH P"), std::string::npos) << spelled;
+}
+
+// Reproducibility across runs is a property of whole processes (espeak-ng keeps state between
+// calls): tests/cli/corpus_cli_test.cpp records the same corpus twice and compares the bytes.
+TEST(ReferenceTalker, AnotherSeedGivesAnotherTake) {
+  PortableRandom a(5), c(6);
+  const ReferenceTake ta = record_take(word("moon"), "x", actor(), a);
+  const ReferenceTake tc = record_take(word("moon"), "x", actor(), c);
+  EXPECT_GT(rms_difference(ta.captured, tc.captured), 1e-3);
+}
+
+TEST(ReferenceTalker, ActorIsNotTheGenericFace) {
+  const double moved = (actor().neutral_cm - ict_face_model().neutral_cm).colwise().norm().maxCoeff();
+  EXPECT_GT(moved, 0.1) << "cm: the identity mix must change the face";
+}
+
+TEST(ReferenceTalker, CorpusDirectoryHasManifestAndSaysSynthetic) {
+  const auto dir = std::filesystem::temp_directory_path() / "fapcast-refcorpus-test";
+  std::filesystem::remove_all(dir);
+  RecordingScript script;
+  script.items = {word("a bob"), word("strewn"), {ScriptSection::kNonsense, "B AA D", {}, "[[b'A:d]]", 1.0}};
+  std::map<std::string, std::string> files;
+  const auto summary = record_reference_corpus(script, dir, {.count = 0, .seed = 3, .script = {}},
+                                               [&](const std::string& name, std::string_view bytes) {
+                                                 files[name] = std::string(bytes);
+                                               });
+  EXPECT_EQ(summary.utterances, 3u);
+  ASSERT_TRUE(files.count("manifest.json"));
+  const auto manifest = nlohmann::json::parse(files["manifest.json"]);
+  EXPECT_EQ(manifest["synthetic"], true);
+  EXPECT_EQ(manifest["provenance"], kSyntheticLabel);
+  ASSERT_EQ(manifest["utterances"].size(), 3u);
+  for (const auto& u : manifest["utterances"]) {
+    const std::string stem = u["id"];
+    EXPECT_TRUE(files.count(stem + ".c3d")) << stem;
+    EXPECT_TRUE(files.count(stem + ".TextGrid")) << stem;
+    EXPECT_TRUE(std::filesystem::exists(dir / (stem + ".wav"))) << stem;
+    EXPECT_EQ(read_wav(dir / (stem + ".wav")).sample_rate_hz, u["sample_rate_hz"]);
+  }
+  EXPECT_EQ(manifest["utterances"][2]["section"], "nonsense");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace fapcast

@@ -1,0 +1,175 @@
+#include "fapcast/voice/voice.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/voice/voice_graph.hpp"
+
+namespace fapcast {
+namespace {
+
+namespace vs = voice_section;
+
+[[noreturn]] void refuse(const VoiceFileView& view, SectionId id, const std::string& rule, const std::string& detail) {
+  const SectionInfo* s = view.find(id);
+  throw InputError({view.source(), std::nullopt, s ? s->offset : 0}, rule,
+                   "section '" + id.str() + "' (" + std::string(section_name(id)) + "): " + detail);
+}
+
+nlohmann::json vector_json(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+// Reads FPNT: {"feature_points": [{label, vertex, neutral_m}], "rigid_markers": [{label, vertex,
+// neutral_m, source_reference_m}]}.
+void read_feature_points(const VoiceFileView& view, Eigen::Index vertices, Eigen::Index source_dimension,
+                         std::vector<VoiceFeaturePoint>& points, std::vector<VoiceRigidMarker>& rigid) {
+  const SectionInfo& s = view.require(vs::kFeaturePoints);
+  if (s.type != ElementType::kJson)
+    refuse(view, vs::kFeaturePoints, "section-type", "element type " + std::to_string(static_cast<unsigned>(s.type)) + ", expected 5 (json)");
+  const auto raw = view.bytes(vs::kFeaturePoints);
+  const nlohmann::json j = nlohmann::json::parse(std::string_view(reinterpret_cast<const char*>(raw.data()), raw.size()),
+                                                 nullptr, /*allow_exceptions=*/false);
+  const auto bad = [&](const std::string& detail) { refuse(view, vs::kFeaturePoints, "feature-points", detail); };
+  if (j.is_discarded() || !j.is_object()) bad("not a JSON object");
+  std::set<std::string> labels;
+  const auto read3 = [&](const nlohmann::json& e, const std::string& where, const char* key, Eigen::Vector3d& out) {
+    const auto a = e.find(key);
+    if (a == e.end() || !a->is_array() || a->size() != 3 || !(*a)[0].is_number() || !(*a)[1].is_number() ||
+        !(*a)[2].is_number())
+      bad(where + ": \"" + key + "\" must be 3 numbers");
+    out = {(*a)[0].get<double>(), (*a)[1].get<double>(), (*a)[2].get<double>()};
+  };
+  const auto point = [&](const nlohmann::json& e, const std::string& where, std::string& label, std::int32_t& vertex,
+                         Eigen::Vector3d& neutral) {
+    if (!e.is_object()) bad(where + " is not an object");
+    const auto l = e.find("label");
+    if (l == e.end() || !l->is_string() || l->get<std::string>().empty()) bad(where + ": \"label\" must be a non-empty string");
+    label = l->get<std::string>();
+    if (!labels.insert(label).second) bad(where + ": label \"" + label + "\" repeats");
+    const auto v = e.find("vertex");
+    if (v == e.end() || !v->is_number_integer() || v->get<std::int64_t>() < 0 || v->get<std::int64_t>() >= vertices)
+      bad(where + " (" + label + "): \"vertex\" must be an integer in [0, " + std::to_string(vertices) + ")");
+    vertex = static_cast<std::int32_t>(v->get<std::int64_t>());
+    read3(e, where, "neutral_m", neutral);
+  };
+  const auto fps = j.find("feature_points");
+  if (fps == j.end() || !fps->is_array()) bad("\"feature_points\" must be an array");
+  for (std::size_t i = 0; i < fps->size(); ++i) {
+    VoiceFeaturePoint p{};
+    point((*fps)[i], "feature_points[" + std::to_string(i) + "]", p.label, p.vertex, p.neutral_m);
+    points.push_back(std::move(p));
+  }
+  if (3 * static_cast<Eigen::Index>(points.size()) != source_dimension)
+    bad(std::to_string(points.size()) + " feature points, but the RBF centres have " + std::to_string(source_dimension) +
+        " source coordinates (3 per point)");
+  const auto rms = j.find("rigid_markers");
+  if (rms == j.end() || !rms->is_array()) bad("\"rigid_markers\" must be an array");
+  for (std::size_t i = 0; i < rms->size(); ++i) {
+    VoiceRigidMarker r{};
+    const std::string where = "rigid_markers[" + std::to_string(i) + "]";
+    point((*rms)[i], where, r.label, r.vertex, r.neutral_m);
+    read3((*rms)[i], where, "source_reference_m", r.source_reference_m);
+    rigid.push_back(std::move(r));
+  }
+  if (rigid.size() < 3) bad(std::to_string(rigid.size()) + " rigid markers, head-pose removal needs at least 3");
+}
+
+}  // namespace
+
+std::string voice_feature_points_json(std::span<const VoiceFeaturePoint> feature_points,
+                                      std::span<const VoiceRigidMarker> rigid_markers) {
+  nlohmann::ordered_json j;
+  j["feature_points"] = nlohmann::ordered_json::array();
+  for (const auto& p : feature_points)
+    j["feature_points"].push_back({{"label", p.label}, {"vertex", p.vertex}, {"neutral_m", vector_json(p.neutral_m)}});
+  j["rigid_markers"] = nlohmann::ordered_json::array();
+  for (const auto& r : rigid_markers)
+    j["rigid_markers"].push_back({{"label", r.label},
+                                  {"vertex", r.vertex},
+                                  {"neutral_m", vector_json(r.neutral_m)},
+                                  {"source_reference_m", vector_json(r.source_reference_m)}});
+  return j.dump(1) + "\n";
+}
+
+Voice::Voice(VoiceFileView view, VoiceProvenance provenance, std::vector<VoiceFeaturePoint> feature_points,
+             std::vector<VoiceRigidMarker> rigid_markers, Eigen::MatrixXf frame_coefficients, PhoneGraph graph,
+             std::vector<Phone> phones, std::vector<FrameSpan> utterances, RbfMap map)
+    : view_(std::move(view)),
+      provenance_(std::move(provenance)),
+      feature_points_(std::move(feature_points)),
+      rigid_markers_(std::move(rigid_markers)),
+      frame_coefficients_(std::move(frame_coefficients)),
+      graph_(std::move(graph)),
+      phones_(std::move(phones)),
+      utterances_(std::move(utterances)),
+      map_(std::move(map)) {
+  components_rows_ = static_cast<Eigen::Index>(view_.require(vs::kPcaComponents).rows);
+  dimension_ = static_cast<Eigen::Index>(view_.require(vs::kPcaMean).cols);
+}
+
+Voice::Voice(Voice&&) noexcept = default;
+Voice& Voice::operator=(Voice&&) noexcept = default;
+Voice::~Voice() = default;
+
+Voice Voice::open(const std::filesystem::path& path) {
+  return from_view(open_voice(path));  // container, sections, shapes, provenance
+}
+
+Voice Voice::over_bytes(std::span<const std::byte> bytes, std::string source) {
+  VoiceFileView view = VoiceFileView::over_bytes(bytes, std::move(source));
+  check_voice_sections(view);
+  return from_view(std::move(view));
+}
+
+Voice Voice::from_view(VoiceFileView view) {
+  VoiceProvenance provenance = view.provenance();
+  const Eigen::Index d = static_cast<Eigen::Index>(view.require(vs::kPcaMean).cols);
+  if (d % 3 != 0) refuse(view, vs::kPcaMean, "section-shape", "D = " + std::to_string(d) + " is not 3 x vertices");
+  const auto centres = view.matrix_f64(vs::kRbfCentres);
+  std::vector<VoiceFeaturePoint> points;
+  std::vector<VoiceRigidMarker> rigid;
+  read_feature_points(view, d / 3, centres.cols(), points, rigid);
+
+  const SectionInfo& grph = view.require(vs::kPhoneGraph);
+  VoiceGraphData graph = decode_voice_graph(view.bytes(vs::kPhoneGraph), view.source(), grph.offset);
+  const auto coefficients = view.matrix_f32(vs::kFrameCoefficients);
+  if (static_cast<Eigen::Index>(graph.frame_count) != coefficients.rows())
+    refuse(view, vs::kPhoneGraph, "section-shape", "the graph covers " + std::to_string(graph.frame_count) +
+                                                       " frames, FCOE has " + std::to_string(coefficients.rows()));
+  const auto scalars = view.matrix_f64(vs::kRbfScalars);
+  const double r_squared = scalars(0, 0), lambda = scalars(0, 1);
+  if (!(r_squared > 0) || !std::isfinite(r_squared) || !(lambda >= 0) || !std::isfinite(lambda)) {
+    std::ostringstream detail;
+    detail << "r^2 = " << r_squared << " must be positive and lambda = " << lambda << " non-negative, both finite";
+    refuse(view, vs::kRbfScalars, "rbf-scalars", detail.str());
+  }
+  RbfMap map(Eigen::MatrixXd(centres), r_squared, view.matrix_f32(vs::kRbfWeights).cast<double>(),
+             view.matrix_f32(vs::kRbfOffset).row(0).transpose().cast<double>(), lambda);
+  if (const SectionInfo* maps = view.find(vs::kFaceMaps)) {
+    if (maps->type != ElementType::kFloat32 || maps->rows != static_cast<std::uint64_t>(d / 3) || maps->cols != 9)
+      refuse(view, vs::kFaceMaps, "section-shape",
+             "expected float32 " + std::to_string(d / 3) + " x 9 (one 3 x 3 map per vertex), found type " +
+                 std::to_string(static_cast<unsigned>(maps->type)) + ", " + std::to_string(maps->rows) + " x " +
+                 std::to_string(maps->cols));
+    if (!view.matrix_f32(vs::kFaceMaps).allFinite())
+      refuse(view, vs::kFaceMaps, "non-finite", "a face map holds a NaN or an infinity");
+  }
+  Eigen::MatrixXf frames = coefficients;
+  JunctionFeatures junction = junction_features(graph.states, frames);
+  PhoneGraph phone_graph(std::move(graph.states), std::move(junction));
+  return Voice(std::move(view), std::move(provenance), std::move(points), std::move(rigid), std::move(frames),
+               std::move(phone_graph), std::move(graph.phones), std::move(graph.utterances), std::move(map));
+}
+
+Eigen::Map<const RowMajorMatrixXf> Voice::pca_mean() const { return view_.matrix_f32(vs::kPcaMean); }
+Eigen::Map<const RowMajorMatrixXf> Voice::pca_components() const { return view_.matrix_f32(vs::kPcaComponents); }
+Eigen::Map<const RowMajorMatrixXf> Voice::pca_variances() const { return view_.matrix_f32(vs::kPcaVariances); }
+std::optional<Eigen::Map<const RowMajorMatrixXf>> Voice::face_maps() const {
+  if (view_.find(vs::kFaceMaps) == nullptr) return std::nullopt;
+  return view_.matrix_f32(vs::kFaceMaps);
+}
+
+}  // namespace fapcast

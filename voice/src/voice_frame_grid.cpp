@@ -1,0 +1,81 @@
+#include "fapcast/voice/voice_frame_grid.hpp"
+
+#include "fapcast/core/input_error.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace fapcast {
+namespace {
+__extension__ typedef __int128 Int128;
+
+std::string describe(std::span<const TimedPhone> phones, std::size_t i) {
+  return "phone " + std::to_string(i) + " '" + std::string(arpabet(phones[i].phone)) + "' [" +
+         std::to_string(phones[i].start_sample) + ", " + std::to_string(phones[i].end_sample) + ")";
+}
+
+void append(TargetTimeline& out, Phone phone, std::int64_t first, std::int64_t end) {
+  if (end <= first) return;
+  const VisemeClass v = search_viseme(phone);
+  out.phones.push_back({v, first, end, is_held(v)});
+  out.phone_of.push_back(phone);
+}
+
+}  // namespace
+
+std::int64_t voice_frame_sample(std::int64_t n, std::int64_t sample_rate_hz) {
+  // round(n * rate / 60) with halves up = floor((2 n rate + 60) / 120).
+  const Int128 twice = static_cast<Int128>(2) * n * sample_rate_hz + kVoiceFramesPerSecond;
+  return static_cast<std::int64_t>(twice / (2 * kVoiceFramesPerSecond));
+}
+
+std::int64_t first_voice_frame_at(std::int64_t sample, std::int64_t sample_rate_hz) {
+  // Smallest n >= 0 with floor((2 n R + 60) / 120) >= s, i.e. 2 n R >= 120 s - 60.
+  const Int128 need = static_cast<Int128>(2 * kVoiceFramesPerSecond) * sample - kVoiceFramesPerSecond;
+  if (need <= 0) return 0;
+  const Int128 step = static_cast<Int128>(2) * sample_rate_hz;
+  return static_cast<std::int64_t>((need + step - 1) / step);
+}
+
+TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, std::int64_t sample_rate_hz,
+                                   std::int64_t end_sample, const std::string& source) {
+  if (sample_rate_hz < 1)
+    throw std::invalid_argument("voice grid: sample rate " + std::to_string(sample_rate_hz) + " Hz");
+  TargetTimeline out;
+  out.sample_rate_hz = sample_rate_hz;
+  std::int64_t previous_end = 0;
+  std::int64_t frame = 0;  // where the next target starts
+  auto fill_silence_to = [&](std::int64_t sample) {
+    const std::int64_t to = first_voice_frame_at(sample, sample_rate_hz);
+    if (to > frame) {
+      append(out, Phone::SIL, frame, to);
+      ++out.gaps_filled;
+      frame = to;
+    }
+  };
+  for (std::size_t i = 0; i < phones.size(); ++i) {
+    const TimedPhone& p = phones[i];
+    if (p.start_sample < 0)
+      throw InputError({source, {}, {}}, "phone-negative-start", describe(phones, i) + " starts before sample 0");
+    if (p.end_sample < p.start_sample)
+      throw InputError({source, {}, {}}, "phone-reversed", describe(phones, i) + " ends before it starts");
+    if (p.start_sample < previous_end)
+      throw InputError({source, {}, {}}, "phone-overlap",
+                       describe(phones, i) + " starts before the previous phone ends (sample " +
+                           std::to_string(previous_end) + "): phones must be in time order");
+    fill_silence_to(p.start_sample);
+    const std::int64_t end = first_voice_frame_at(p.end_sample, sample_rate_hz);
+    if (end <= frame) {
+      ++out.dropped;  // zero duration, or between two frame instants
+    } else {
+      // Two silences in a row (a gap next to a SIL phone) stay two targets: harmless.
+      append(out, p.phone, frame, end);
+      frame = end;
+    }
+    previous_end = p.end_sample;
+  }
+  if (end_sample > previous_end) fill_silence_to(end_sample);
+  return out;
+}
+
+}  // namespace fapcast

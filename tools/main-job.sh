@@ -12,11 +12,11 @@ cd "$(dirname "$0")/.."
 bash tools/build.sh
 fapcast=build/release/cli/fapcast
 mkdir -p out
-"$fapcast" say "The quick brown fox jumps over the lazy dog." -o out/say.fap --wav out/say.wav --viseme
+"$fapcast" say "The quick brown fox jumps over the lazy dog." -o out/say.fap --wav-out out/say.wav --viseme
 "$fapcast" fap info out/say.fap
 sample=tests/data/xface/joy.fap
 "$fapcast" fap info "$sample"
-"$fapcast" fap convert "$sample" out/joy.strict.fap
+"$fapcast" fap convert "$sample" -o out/joy.strict.fap
 "$fapcast" encode "$sample" -o out/joy.fba --quant 1
 "$fapcast" decode out/joy.fba -o out/joy.decoded.fap
 "$fapcast" fap info out/joy.fba

@@ -39,7 +39,7 @@ std::string shown_default(const std::string& help, const std::string& option) {
   if (at == std::string::npos) return "(no " + option + ")";
   const auto end = help.find('\n', at);
   const std::string line = help.substr(at, end - at);
-  const auto eq = line.rfind('=');
+  const auto eq = line.find('=');
   if (eq == std::string::npos) return "(no default)";
   return line.substr(eq + 1, line.find_first_of(" \t", eq) - eq - 1);
 }

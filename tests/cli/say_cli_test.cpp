@@ -165,6 +165,10 @@ void BadInputExitsOneAndNamesIt() {
   write_file_atomically(out("overlap.lab"), "0 2000000 sil\n1000000 3000000 aa\n");
   expect_error("animate " + take("wav") + " " + out("overlap.lab") + " --voice " + voice() + " -o " +
                    out("e.fap"), "overlap.lab");
+  // A time no sample count can hold is the alignment's fault (exit 1), not an internal error.
+  write_file_atomically(out("huge.lab"), "0 1e300 aa\n");
+  expect_error("animate " + take("wav") + " " + out("huge.lab") + " --voice " + voice() + " -o " + out("e.fap"),
+               "huge.lab: tier 'phones' interval 1: time-off-sample-grid");
   write_file_atomically(out("not-a-voice.fapv"), "this is not a voice\n");
   expect_error("say \"Hello.\" --voice " + out("not-a-voice.fapv") + " -o " + out("e.fap"), "not-a-voice.fapv");
   expect_error("say \"Hello.\" --voice " + out("missing.fapv") + " -o " + out("e.fap"), "missing.fapv");

@@ -1,6 +1,6 @@
 #pragma once
-// The default voice (VOICE-API.md): built from the SYNTHETIC reference corpus (seed 1) on first
-// use and cached, so `say` and `animate` work without --voice.
+// The default voice (spec/architecture.md, "The default world"): built from the SYNTHETIC
+// reference corpus (seed 1) on first use and cached, so `say` and `animate` work without --voice.
 #include <filesystem>
 #include <string>
 

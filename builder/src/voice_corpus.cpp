@@ -8,6 +8,7 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "fapcast/corpus/c3d.hpp"
 #include "fapcast/capture/head_pose.hpp"
@@ -314,7 +315,12 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
                                                            " (label it so, or map a label to it in manifest.json's marker_map)");
 
   const AlignedPhones aligned_phones = read_alignment(u.alignment);
-  const std::int64_t aligned = to_sample(aligned_phones.end_s, kVoiceFrameClock);
+  std::int64_t aligned = 0;
+  try {
+    aligned = to_sample(aligned_phones.end_s, kVoiceFrameClock);
+  } catch (const std::out_of_range& e) {
+    refuse(u.alignment, "time-off-sample-grid", e.what());
+  }
   if (std::llabs(aligned - frames) > kMaxLengthMismatchFrames)
     refuse(u.alignment, "corpus-length", "the alignment ends at frame " + std::to_string(aligned) + " (" +
                                              std::to_string(aligned_phones.end_s) + " s), " + u.markers.filename().string() +

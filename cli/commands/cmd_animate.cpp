@@ -1,4 +1,4 @@
-// `fapcast animate --wav IN.wav --align IN.TextGrid|IN.lab -o OUT.fap [--voice V] ...`: animates
+// `fapcast animate SPEECH.wav ALIGNMENT.TextGrid|.lab -o OUT.fap [--voice V] ...`: animates
 // recorded speech from its phone alignment (spec/synthesis.md). Argument parsing only.
 #include "command.hpp"
 #include "file_extension.hpp"
@@ -31,7 +31,7 @@ Alignment read_alignment(const std::string& path) {
   return a;
 }
 
-const cli::Registration reg{"21-animate", [](CLI::App& app) {
+const cli::Registration reg{"animate", [](CLI::App& app) {
   struct Args {
     std::string wav;
     std::string align;
@@ -59,8 +59,8 @@ const cli::Registration reg{"21-animate", [](CLI::App& app) {
         cli::synthesize_to_file(args->synthesis, phones, audio.sample_rate, samples, args->align,
                                   "fapcast animate");
       });
-  cmd->add_option("--wav", args->wav, "The speech (mono WAV): the timeline")->required();
-  cmd->add_option("--align", args->align, "Its phone alignment: .TextGrid or .lab")->required();
+  cmd->add_option("SPEECH", args->wav, "The speech (mono WAV): the timeline")->required();
+  cmd->add_option("ALIGNMENT", args->align, "Its phone alignment: .TextGrid or .lab")->required();
 }};
 
 }  // namespace

@@ -1,4 +1,4 @@
-// `fapcast fap info FILE [--json]` and `fapcast fap convert IN OUT [--dialect strict|69]`:
+// `fapcast fap info FILE [--json]` and `fapcast fap convert IN -o OUT [--dialect strict|69]`:
 // inspect and convert .fap text files (spec/fap-text.md). Argument parsing and printing only;
 // reading, writing and statistics are codec functions.
 #include "command.hpp"
@@ -147,7 +147,7 @@ void convert(const std::string& in, const std::string& out, const std::string& d
             << (d == FapTextDialect::kMask69 ? "69-token" : "strict") << " dialect\n";
 }
 
-const cli::Registration reg{"40-fap", [](CLI::App& app) {
+const cli::Registration reg{"fap", [](CLI::App& app) {
   auto* fap = app.add_subcommand("fap", "Inspect and convert .fap text files");
   fap->require_subcommand(1);
 
@@ -164,7 +164,7 @@ const cli::Registration reg{"40-fap", [](CLI::App& app) {
   auto out = std::make_shared<std::string>();
   auto dialect = std::make_shared<std::string>("strict");
   conv->add_option("IN", *in, "input .fap file")->required();
-  conv->add_option("OUT", *out, "output .fap file (written atomically)")->required();
+  conv->add_option("-o,--output", *out, "output .fap file (written atomically)")->required();
   conv->add_option("--dialect", *dialect, "strict (default) or 69")
       ->check(CLI::IsMember({"strict", "69"}));
   conv->callback([=] { convert(*in, *out, *dialect); });

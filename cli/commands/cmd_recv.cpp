@@ -67,10 +67,10 @@ void run_recv(const RecvArgs& a) {
   write_track_file(a.output, track.sequence(), SampleRate{a.clock_rate});
 }
 
-const cli::Registration reg{"61-recv", [](CLI::App& app) {
+const cli::Registration reg{"recv", [](CLI::App& app) {
   auto args = std::make_shared<RecvArgs>();
   auto* cmd = app.add_subcommand("recv", "Receive a FAP track over RTP/UDP and write it to a file");
-  cmd->add_option("url", args->url, "Listen on udp://HOST:PORT (a multicast group joins it)")->required();
+  cmd->add_option("URL", args->url, "Listen on udp://HOST:PORT (a multicast group joins it)")->required();
   cmd->add_option("-o,--output", args->output, "Output track: .fap, .fba or .json")->required();
   cmd->add_option("--timeout", args->timeout_seconds, "Stop after this many seconds without packets")
       ->check(CLI::Range(0.01, 86400.0));

@@ -1,4 +1,4 @@
-// `fapcast say "TEXT" -o OUT.fap|OUT.glb [--wav OUT.wav] [--voice V] [--fps N] [--expression E] ...`:
+// `fapcast say "TEXT" -o OUT.fap|OUT.glb [--wav-out OUT.wav] [--voice V] [--fps N] [--expression E] ...`:
 // speaks the text with espeak-ng and animates it (spec/synthesis.md). Argument parsing only.
 #include "command.hpp"
 #include "synthesis_cli.hpp"
@@ -13,7 +13,7 @@
 namespace {
 using namespace fapcast;
 
-const cli::Registration reg{"20-say", [](CLI::App& app) {
+const cli::Registration reg{"say", [](CLI::App& app) {
   struct Args {
     std::string text;
     std::string wav;
@@ -34,7 +34,7 @@ const cli::Registration reg{"20-say", [](CLI::App& app) {
                                   static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");
       });
   cmd->add_option("TEXT", args->text, "The text (UTF-8)")->required();
-  cmd->add_option("--wav", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");
+  cmd->add_option("--wav-out", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");
 }};
 
 }  // namespace

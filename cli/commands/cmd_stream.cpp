@@ -1,4 +1,4 @@
-// `fapcast stream IN.fap|IN.fba|IN.json [--wav IN.wav] --to udp://HOST:PORT [...]`: sends a FAP
+// `fapcast stream IN.fap|IN.fba|IN.json [--wav IN.wav] -o udp://HOST:PORT [...]`: sends a FAP
 // track as RTP (spec/rtp.md), optionally with its audio as L16, paced in real time. Argument
 // parsing only; reading, encoding and sending are transport functions.
 #include "command.hpp"
@@ -74,12 +74,12 @@ void run_stream(const StreamArgs& a) {
             << " sender reports\n";
 }
 
-const cli::Registration reg{"60-stream", [](CLI::App& app) {
+const cli::Registration reg{"stream", [](CLI::App& app) {
   auto args = std::make_shared<StreamArgs>();
   auto* cmd = app.add_subcommand("stream", "Send a FAP track (and its audio) as RTP over UDP");
-  cmd->add_option("input", args->input, "Track to send: .fap, .fba or .json")->required();
+  cmd->add_option("IN", args->input, "Track to send: .fap, .fba or .json")->required();
   cmd->add_option("--wav", args->wav, "Audio to send alongside as L16 (its rate becomes the RTP clock)");
-  cmd->add_option("--to", args->to, "Destination udp://HOST:PORT (unicast or multicast group)")->required();
+  cmd->add_option("-o,--output", args->to, "Destination udp://HOST:PORT (unicast or a multicast group)")->required();
   cmd->add_flag("--no-pace", args->no_pace, "Send as fast as possible instead of in real time");
   cmd->add_option("--ttl", args->ttl, "Hop limit (multicast TTL)")->check(CLI::Range(0, 255));
   cmd->add_option("--interface", args->interface, "Outgoing interface address for multicast");

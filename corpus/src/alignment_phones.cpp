@@ -51,8 +51,15 @@ std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, SampleRate sampl
     const Interval& in = tier.intervals[i];
     const std::string where = source + ": tier '" + tier.name + "' interval " + std::to_string(i + 1);
     const TimitPhone p = parse_label(in.label, where);
-    const std::int64_t start = to_sample(in.start_s, sample_rate);
-    const std::int64_t end = to_sample(in.end_s, sample_rate);
+    const auto sample = [&](double seconds) {
+      try {
+        return to_sample(seconds, sample_rate);
+      } catch (const std::out_of_range& e) {
+        throw InputError({where, {}, {}}, "time-off-sample-grid", e.what());
+      }
+    };
+    const std::int64_t start = sample(in.start_s);
+    const std::int64_t end = sample(in.end_s);
     if (previous_closure && !p.closure && out.back().phone == p.phone && out.back().end_sample == start) {
       out.back().end_sample = end;  // closure + release: one phone
     } else {

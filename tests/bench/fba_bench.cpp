@@ -156,7 +156,7 @@ const std::vector<Source>& all_sources() {
 double kbps(std::size_t bytes, std::size_t frames) { return 8.0 * static_cast<double>(bytes) / (static_cast<double>(frames) / kFps) / 1000.0; }
 
 // One row of the table: bitrates of FBA with the default options (intra period 25, predictors
-// chosen), without predictors (previous-value prediction, as the published FBA codec spec/fba.md draws on), with an intra
+// chosen), without predictors (previous-value prediction, as the published FBA codec), with an intra
 // period of 250 (10 s), with the archival preset (20 s); and of gzip -9 and xz -9 of the same
 // quantised values as .fap text.
 void BM_Bitrate(benchmark::State& state) {

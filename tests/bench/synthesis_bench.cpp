@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <random>
 
 namespace {
@@ -83,7 +84,7 @@ void report(benchmark::State& state, const SynthesizedTrack& s) {
 SynthesisOptions options_of(const benchmark::State& state) {
   SynthesisOptions o;
   o.search.beta = static_cast<double>(state.range(0)) / 100.0;
-  if (state.range(1) > 0) o.search.max_active = static_cast<std::size_t>(state.range(1));
+  o.search.max_active = state.range(1) > 0 ? std::optional<std::size_t>(state.range(1)) : std::nullopt;
   o.search.prune_joins = state.range(2) != 0;
   return o;
 }
@@ -179,9 +180,7 @@ BENCHMARK(BM_PhonesToFaps)
 const SynthesizedTrack& default_track() {
   static const SynthesizedTrack s = [] {
     const World& w = world();
-    SynthesisOptions o;
-    o.search.beta = 0.1;
-    o.search.max_active = 64;
+    const SynthesisOptions o;  // the shipped defaults: beta 0.1, cap 64
     return synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, o);
   }();
   return s;

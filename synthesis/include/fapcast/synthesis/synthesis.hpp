@@ -31,9 +31,11 @@ std::span<const VisemeFallback, kVisemeClassCount> viseme_fallbacks();
 // "viseme-not-covered") naming the class and its substitutes when none is covered.
 VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v);
 
+// Everything that shapes a synthesised track; the default value is what fapcast ships (the CLI's
+// defaults are these members' defaults, so `eval synth` scores what `say` and `animate` make).
 struct SynthesisOptions {
-  SearchOptions search;  // beta, max_active
-  ConcatenationOptions concatenation;  // cross-fade, smoothing, hold weight
+  SearchOptions search;  // beta, max_active, duration term
+  ConcatenationOptions concatenation;  // where units hand over, cross-fade, smoothing, hold weight
 };
 
 struct SynthesizedTrack {

@@ -77,8 +77,8 @@ inline std::int32_t fba_predict(int predictor, std::int32_t r1, std::int32_t r2,
 }
 // fapcast profile: the part of a FAP's P level its reference FAP predicts, round(c * e / 16) for
 // the reference's level e of the same frame and the coefficient c in sixteenths (64-bit, half up).
-inline std::int64_t fba_reference_part(std::int32_t coefficient, std::int32_t reference_level) {
-  return (std::int64_t{coefficient} * reference_level + 8) >> 4;
+inline std::int64_t fba_reference_part(std::int32_t coefficient, std::int64_t reference_level) {
+  return (coefficient * reference_level + 8) >> 4;
 }
 
 // What P levels are predicted from: each FAP's predictor (set by the intra header) and its last
@@ -147,7 +147,7 @@ struct FbaCodingState {
   FbaModels intra, predicted;
   FrequencyModel escape_bits;  // fapcast: bit length of an escaped P level (41 symbols: 0..40)
   int increment = 1;           // P models' count increment (fapcast: 1 << log2_increment)
-  std::array<std::int32_t, kFapCount> levels{};  // fapcast: this frame's P levels, by coded position
+  std::array<std::int64_t, kFapCount> levels{};  // fapcast: this frame's P levels, by coded position
   std::uint64_t planes = 0;  // planes coded since the state was made
 
   // Standard: an intra header's fap_quant, mask and range fields applied to the ranges in force

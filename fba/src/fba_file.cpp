@@ -51,7 +51,7 @@ std::vector<std::uint8_t> encode_standard(const FapSequence& seq, const FbaEncod
   for (std::size_t k = 0; k < seq.frames.size();) {
     check(FbaProfile::kStandard, seq.frames[k], o.fap_quant, k);
     const std::size_t nominal = nominal_end(seq, k, period, FbaProfile::kStandard, o.fap_quant);
-    detail::StandardPlan plan = detail::plan_standard_period(seq.frames, k, nominal, state, o.fap_quant);
+    detail::StandardPlan plan = detail::plan_standard_period(seq.frames, k, nominal, state, o.fap_quant, !inline_intra);
     plan.header.rate = rate;
     if (o.time_codes) plan.header.time_code = detail::fba_time_code(k, seq.rate);
     if (!inline_intra) planes.start_code(kFbaPlaneStartCode);
@@ -67,6 +67,7 @@ std::vector<std::uint8_t> encode_standard(const FapSequence& seq, const FbaEncod
   }
   out.stuff_to_start_code();
   out.start_code(kFbaEndCode);
+  stats.state_checksum = state.checksum();
   return std::move(out.bytes());
 }
 
@@ -96,6 +97,7 @@ std::vector<std::uint8_t> encode_fapcast(const FapSequence& seq, const FbaEncode
   }
   out.stuff_to_start_code();
   out.start_code(kFbaEndCode);
+  stats.state_checksum = state.checksum();
   return std::move(out.bytes());
 }
 
@@ -164,19 +166,26 @@ FbaDecodeResult decode_body(std::span<const std::uint8_t> bytes, std::size_t bod
     std::error_code e;
     const bool opening_only = first_region && profile == FbaProfile::kFapcast && region.empty();
     while (!opening_only) {
+      // next_start_code() stuffing ends the region: a 0, then 1s (no plane begins so: an intra
+      // plane begins with a 1, a P plane's first two bits are 0 0 in the standard syntax, and one
+      // of the fapcast profile that begins 0 1 1 ... needs more than 8 bits).
       const std::uint64_t left = in.size_bits() - in.position().raw_bits;
-      if (left <= 8 && next < bytes.size()) {
-        if (!is_stuffing(in, in.position().raw_bits, in.size_bits())) {
-          e = fba_errc::bad_stuffing;
+      if (is_stuffing(in, in.position().raw_bits, in.size_bits())) break;
+      if (left == 0) {
+        if (next < bytes.size() && !opening_only) {
+          e = fba_errc::bad_stuffing;  // a start code right after a plane, without stuffing
           in.fail(e);
         }
-        break;
+        break;  // else the data ends here (no end code: reported below)
       }
-      if (left == 0) break;  // the data ends here (no end code: reported below)
       ++run_planes;
       ++planes;
       detail::PlaneInfo info;
       e = detail::read_plane(state, in, frames.emplace_back(), info);  // decoded in place
+      if (e && left <= 8 && next < bytes.size()) {
+        e = fba_errc::bad_stuffing;  // the bits before a start code are no plane and no stuffing
+        in.fail(e);
+      }
       if (!e && !affordable(run_skipped + static_cast<std::uint64_t>(info.skip_frames))) {
         e = fba_errc::skip_too_long;  // more held frames than the file could justify
         in.fail(e);
@@ -198,6 +207,8 @@ FbaDecodeResult decode_body(std::span<const std::uint8_t> bytes, std::size_t bod
     }
     if (e) {
       state.have_intra = false;
+      state.ranges = {};  // what the lost planes set is unknown: the next intra plane starts from the defaults
+      state.blend_levels = fba_blend_levels(0);
       frames.resize(first_slot);  // a corrupt run is lost whole: its frames cannot be trusted
       // P planes refused after a loss are part of that loss, not new errors.
       if (!(in_loss && e == fba_errc::predicted_without_intra)) note(at + in.error_bits() / 8, e);
@@ -250,6 +261,7 @@ FbaDecodeResult decode_body(std::span<const std::uint8_t> bytes, std::size_t bod
   }
   if (in_loss && affordable(pending_lost)) lose(frames.size(), pending_lost);
   result.sequence.rate = state.rate;
+  report.state_checksum = state.checksum();
   return result;
 }
 

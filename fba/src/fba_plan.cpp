@@ -21,16 +21,16 @@ std::int64_t se_bits(std::int64_t v) { return ue_bits(v > 0 ? 2 * static_cast<st
 
 // Bits of an alphabet [lo, hi] coding `symbols` adaptively (symbols outside: escaped, each about
 // its bit length twice plus the escape symbol's share).
-std::int64_t alphabet_cost(std::span<const std::int32_t> symbols, std::int32_t lo, std::int32_t hi, int increment,
+std::int64_t alphabet_cost(std::span<const std::int64_t> symbols, std::int64_t lo, std::int64_t hi, int increment,
                            std::int64_t enough) {
-  const int size = hi - lo + 1;
-  std::vector<std::int32_t> counts(static_cast<std::size_t>(size) + 1, 0);  // + the escape symbol
-  std::int64_t total = size + 1, cost = 0;
-  for (const std::int32_t s : symbols) {
+  const auto size = static_cast<std::size_t>(hi - lo + 1);
+  std::vector<std::int32_t> counts(size + 1, 0);  // + the escape symbol
+  std::int64_t total = static_cast<std::int64_t>(size) + 1, cost = 0;
+  for (const std::int64_t s : symbols) {
     const bool escaped = s < lo || s > hi;
-    const std::size_t i = escaped ? static_cast<std::size_t>(size) : static_cast<std::size_t>(s - lo);
+    const std::size_t i = escaped ? size : static_cast<std::size_t>(s - lo);
     cost += log2_q8(static_cast<std::uint64_t>(total)) - log2_q8(static_cast<std::uint64_t>(1 + increment * std::int64_t{counts[i]}));
-    if (escaped) cost += kBit * (2 * std::bit_width(static_cast<std::uint64_t>(s < 0 ? -std::int64_t{s} : s)) + 2);
+    if (escaped) cost += kBit * (2 * std::bit_width(static_cast<std::uint64_t>(s < 0 ? -s : s)) + 2);
     ++counts[i];
     total += increment;
     if (cost > enough) break;
@@ -40,15 +40,15 @@ std::int64_t alphabet_cost(std::span<const std::int32_t> symbols, std::int32_t l
 
 // The alphabet for `symbols`: their extremes (0 included), narrowed around the median to at most
 // kMaxDirectSymbols - 1 values when wider (the rest escaped).
-std::pair<std::int32_t, std::int32_t> alphabet_for(std::span<const std::int32_t> symbols) {
-  std::int32_t lo = 0, hi = 0;
-  for (const std::int32_t s : symbols) {
+std::pair<std::int32_t, std::int32_t> alphabet_for(std::span<const std::int64_t> symbols) {
+  std::int64_t lo = 0, hi = 0;
+  for (const std::int64_t s : symbols) {
     lo = std::min(lo, s);
     hi = std::max(hi, s);
   }
-  const std::int64_t width = std::int64_t{hi} - lo + 1;
-  if (width <= kMaxDirectSymbols - 1) return {lo, hi};
-  std::vector<std::int32_t> sorted(symbols.begin(), symbols.end());
+  const std::int64_t width = hi - lo + 1;
+  if (width <= kMaxDirectSymbols - 1) return {static_cast<std::int32_t>(lo), static_cast<std::int32_t>(hi)};
+  std::vector<std::int64_t> sorted(symbols.begin(), symbols.end());
   std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
   const std::int64_t half = (kMaxDirectSymbols - 2) / 2;
   const std::int64_t median = sorted[sorted.size() / 2];
@@ -59,17 +59,19 @@ std::pair<std::int32_t, std::int32_t> alphabet_for(std::span<const std::int32_t>
 // Closed-loop P levels of FAP index i over frames (k, end) with `predictor`, from frames[k]'s
 // intra reconstruction.
 void predicted_run(std::span<const FapFrame> frames, std::size_t k, std::size_t end, std::size_t i, int step,
-                   int predictor, std::vector<std::int32_t>& levels) {
+                   int predictor, std::vector<std::int64_t>& levels) {
   levels.clear();
-  const std::int32_t first = fba_quantise(frames[k].values[i], step) * step;
+  const auto first = static_cast<std::int32_t>(std::clamp<std::int64_t>(fba_quantise(frames[k].values[i], step) * step,
+                                                                         std::numeric_limits<std::int32_t>::min(),
+                                                                         std::numeric_limits<std::int32_t>::max()));
   std::int32_t r1 = first, r2 = first, r3 = first;
   for (std::size_t j = k + 1; j < end; ++j) {
     const std::int32_t p = fba_predict(predictor, r1, r2, r3);
-    const std::int32_t level = fba_quantise(std::int64_t{frames[j].values[i]} - p, step);
+    const std::int64_t level = fba_quantise(std::int64_t{frames[j].values[i]} - p, step);
     levels.push_back(level);
     r3 = r2;
     r2 = r1;
-    r1 = static_cast<std::int32_t>(std::clamp<std::int64_t>(std::int64_t{p} + std::int64_t{level} * step,
+    r1 = static_cast<std::int32_t>(std::clamp<std::int64_t>(std::int64_t{p} + level * step,
                                                               std::numeric_limits<std::int32_t>::min(),
                                                               std::numeric_limits<std::int32_t>::max()));
   }
@@ -98,7 +100,7 @@ std::int64_t adaptive_cost(std::span<const std::int32_t> symbols, std::int32_t o
 }
 
 StandardPlan plan_standard_period(std::span<const FapFrame> frames, std::size_t k, std::size_t nominal_end,
-                                  const FbaCodingState& state, int q) {
+                                  const FbaCodingState& state, int q, bool resync_point) {
   StandardPlan plan;
   StandardIntraHeader& h = plan.header;
   h.fap_quant = q;
@@ -125,7 +127,7 @@ StandardPlan plan_standard_period(std::span<const FapFrame> frames, std::size_t 
     bool reachable = true;
     for (const FbaCodedFap& f : steps) reachable = reachable && d[f.index] >= -widest && d[f.index] <= widest;
     if (!reachable) break;
-    for (const FbaCodedFap& f : steps) plevels[f.index].push_back(d[f.index]);
+    for (const FbaCodedFap& f : steps) plevels[f.index].push_back(static_cast<std::int32_t>(d[f.index]));
     extremes.add(d);
     reconstruct(prediction, d, steps, false);
   }
@@ -140,12 +142,23 @@ StandardPlan plan_standard_period(std::span<const FapFrame> frames, std::size_t 
     ++masked;
   }
   const std::int64_t field_cost = kBit * (5 * masked + kMarkersPerFlag);
+  // Keeping a range field is possible where it covers the levels and, at a resync point, where it
+  // is the default (what a decoder entering here holds).
+  const auto keepable = [&](int flag) {
+    if (!resync_point) return true;
+    for (const FbaCodedFap& f : steps) {
+      const FbaRangeLevels d = fba_default_range_levels(f.index + 1, q), b = base[f.index];
+      const bool same = flag == 0 ? b.i_max == d.i_max : flag == 1 ? b.i_min == d.i_min : flag == 2 ? b.p_max == d.p_max : b.p_min == d.p_min;
+      if (!same) return false;
+    }
+    return true;
+  };
   // Intra: symbols are one-shot uniform: cost log2(size) each.
   std::int64_t best = std::numeric_limits<std::int64_t>::max();
   for (int combo = 0; combo < 4; ++combo) {
     const bool send_max = combo & 1, send_min = combo & 2;
     std::int64_t cost = (send_max ? field_cost : 0) + (send_min ? field_cost : 0);
-    bool valid = true;
+    bool valid = (send_max || keepable(0)) && (send_min || keepable(1));
     for (const FbaCodedFap& f : steps) {
       const std::int32_t hi = send_max ? fba_range_levels(ideal[f.index].i_max, q) : base[f.index].i_max;
       const std::int32_t lo = send_min ? -fba_range_levels(ideal[f.index].i_min, q) : base[f.index].i_min;
@@ -163,7 +176,7 @@ StandardPlan plan_standard_period(std::span<const FapFrame> frames, std::size_t 
   for (int combo = 0; combo < 4; ++combo) {
     const bool send_max = combo & 1, send_min = combo & 2;
     std::int64_t cost = (send_max ? field_cost : 0) + (send_min ? field_cost : 0);
-    bool valid = true;
+    bool valid = (send_max || keepable(2)) && (send_min || keepable(3));
     for (const FbaCodedFap& f : steps) {
       const std::int32_t hi = send_max ? fba_range_levels(ideal[f.index].p_max, q) : base[f.index].p_max;
       const std::int32_t lo = send_min ? -fba_range_levels(ideal[f.index].p_min, q) : base[f.index].p_min;
@@ -192,8 +205,8 @@ FapcastIntraHeader plan_fapcast_period(std::span<const FapFrame> frames, std::si
   std::vector<int> order;  // masked low-level FAPs, coded order
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n)
     if (mask.test(n)) order.push_back(n);
-  std::array<std::vector<std::int32_t>, kFapCount> levels;  // the chosen predictor's levels
-  std::vector<std::int32_t> trial;
+  std::array<std::vector<std::int64_t>, kFapCount> levels;  // the chosen predictor's levels
+  std::vector<std::int64_t> trial;
   for (const int n : order) {
     const std::size_t i = at(n);
     const int step = fba_step(n, q);
@@ -210,16 +223,16 @@ FapcastIntraHeader plan_fapcast_period(std::span<const FapFrame> frames, std::si
     }
   }
   // References: a FAP's level predicted from an earlier FAP's level in the same frame.
-  std::array<std::vector<std::int32_t>, kFapCount> symbols = levels;
+  std::array<std::vector<std::int64_t>, kFapCount> symbols = levels;
   for (std::size_t a = 0; a < order.size() && choose; ++a) {
     const std::size_t i = at(order[a]);
-    const std::vector<std::int32_t>& e = levels[i];
+    const std::vector<std::int64_t>& e = levels[i];
     if (e.empty()) break;
     const auto [lo0, hi0] = alphabet_for(e);
     std::int64_t best = alphabet_cost(e, lo0, hi0, increment, std::numeric_limits<std::int64_t>::max()) + kBit;
     for (std::size_t b = 0; b < a; ++b) {
       const std::size_t m = at(order[b]);
-      const std::vector<std::int32_t>& r = levels[m];
+      const std::vector<std::int64_t>& r = levels[m];
       double num = 0, den = 0;
       for (std::size_t j = 0; j < e.size(); ++j) {
         num += double(e[j]) * r[j];
@@ -229,10 +242,8 @@ FapcastIntraHeader plan_fapcast_period(std::span<const FapFrame> frames, std::si
       const auto ls = static_cast<int>(std::lround(std::clamp(16 * num / den, -double(kMaxCoefficient), double(kMaxCoefficient))));
       for (const int c : {ls - 1, ls, ls + 1, 16}) {
         if (c == 0 || c < -kMaxCoefficient || c > kMaxCoefficient) continue;
-        for (std::size_t j = 0; j < e.size(); ++j)
-          trial.resize(e.size()), trial[j] = static_cast<std::int32_t>(std::clamp<std::int64_t>(
-                                      e[j] - fba_reference_part(c, r[j]), std::numeric_limits<std::int32_t>::min(),
-                                      std::numeric_limits<std::int32_t>::max()));
+        trial.resize(e.size());
+        for (std::size_t j = 0; j < e.size(); ++j) trial[j] = e[j] - fba_reference_part(c, r[j]);
         const auto [lo, hi] = alphabet_for(trial);
         const std::int64_t cost = alphabet_cost(trial, lo, hi, increment, best) +
                                   kBit * (ue_bits(a - b) + se_bits(c));

@@ -23,13 +23,15 @@ std::int64_t adaptive_cost(std::span<const std::int32_t> symbols, std::int32_t o
 // Standard: the intra header for frames[k] heading the period [k, end) (end <= nominal_end: cut
 // before a P level no 5-bit field reaches, or a mask change), given the ranges the decoder holds
 // (`state`, before the header). Each of the four flags is sent when sending it is cheaper than
-// keeping the ranges in force (or when they do not cover the levels).
+// keeping the ranges in force (or when they do not cover the levels). At a `resync_point` (after a
+// start code) a decoder may enter with no ranges in force: ranges are kept only where they are
+// the defaults a fresh decoder sets.
 struct StandardPlan {
   StandardIntraHeader header;
   std::size_t end = 0;
 };
 StandardPlan plan_standard_period(std::span<const FapFrame> frames, std::size_t k, std::size_t nominal_end,
-                                  const FbaCodingState& state, int fap_quant);
+                                  const FbaCodingState& state, int fap_quant, bool resync_point);
 
 // fapcast: the intra header for frames[k] heading [k, end), frames after k being what the P
 // planes will code (for the frame-at-a-time coder: earlier frames standing in for them).

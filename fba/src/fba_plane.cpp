@@ -15,6 +15,8 @@ enum MaskType : std::uint32_t { kMaskNone = 0, kMaskBits = 1, kMaskBitsAlt = 2, 
 constexpr int kMarkerEvery = 4;  // a marker bit before group positions 0, 4, 8, 12 of the range fields
 constexpr int kSelect1Levels = 14, kExpressionSelectLevels = 6;
 constexpr int kMaxReferenceCoefficient = 64;  // fapcast: |c| <= 4 (in sixteenths)
+// fapcast: a level is at most the difference of two int32 values (fap_quant 0, any predictor).
+constexpr std::int64_t kMaxLevel = std::int64_t{1} << 33;
 
 std::size_t at(int fap) { return static_cast<std::size_t>(fap - 1); }
 
@@ -142,7 +144,7 @@ void write_fap12(const FbaCodingState& s, const FapFrame& frame, bool intra, Fba
   const int blend = s.blend_levels;
   // A quantised field: the level coded and the field reconstructed from it.
   const auto quantised = [&](int value, int previous, int& reconstructed) {
-    const std::int32_t level = fba_quantise(intra ? value : value - previous, step);
+    const auto level = static_cast<int>(fba_quantise(intra ? value : value - previous, step));  // |level| <= 75
     reconstructed = (intra ? 0 : previous) + level * step;
     return level + (intra ? 0 : blend);
   };
@@ -322,9 +324,9 @@ void write_standard_low_level(const FbaCodingState& s, const FapFrame& frame, bo
   SymbolWriter w(out, intra ? nullptr : updates);
   for (const FbaCodedFap& f : s.coded) {
     if (intra) {
-      w.code_uncounted(levels[f.index] - f.intra_min, m.fap[f.index]);
+      w.code_uncounted(static_cast<int>(levels[f.index] - f.intra_min), m.fap[f.index]);
     } else {
-      w.code(levels[f.index] - f.predicted_min, m.fap[f.index]);
+      w.code(static_cast<int>(levels[f.index] - f.predicted_min), m.fap[f.index]);
     }
   }
   w.flush();
@@ -394,7 +396,7 @@ bool read_fapcast_intra_header(FbaCodingState& state, FbaBitReader& in, FapFrame
       in.fail(fba_errc::bad_field);
       break;
     }
-    levels[f.index] = static_cast<std::int32_t>(level);
+    levels[f.index] = level;
     f.reference = distance == 0 ? std::int8_t{-1} : static_cast<std::int8_t>(k - static_cast<int>(distance));
     f.coefficient = static_cast<std::int16_t>(coefficient);
     f.predicted_min = -static_cast<std::int32_t>(p_min);
@@ -438,7 +440,7 @@ void write_fapcast_low_level(FbaCodingState& s, const FapFrame& frame, FbaBitWri
   ArithmeticEncoder ac(out);
   for (int k = 0; k < s.coded.size(); ++k) {
     const FbaCodedFap& f = s.coded[k];
-    const std::int32_t e = levels[f.index];
+    const std::int64_t e = levels[f.index];
     const std::int64_t symbol = e - (f.reference < 0 ? 0 : fba_reference_part(f.coefficient, s.levels[static_cast<std::size_t>(f.reference)]));
     FrequencyModel& m = s.predicted.fap[f.index];
     if (symbol >= f.predicted_min && symbol <= f.predicted_max) {
@@ -462,12 +464,12 @@ void read_fapcast_low_level(FbaCodingState& s, FbaBitReader& in, FapFrame& out) 
     const int symbol = ad.decode(s.predicted.fap[f.index]);
     const std::int64_t value = symbol < direct ? std::int64_t{symbol} + f.predicted_min : read_escaped(ad, s);
     const std::int64_t e = value + (f.reference < 0 ? 0 : fba_reference_part(f.coefficient, s.levels[static_cast<std::size_t>(f.reference)]));
-    if (e < std::numeric_limits<std::int32_t>::min() || e > std::numeric_limits<std::int32_t>::max()) {
+    if (e < -kMaxLevel || e > kMaxLevel) {
       in.fail(fba_errc::bad_field);  // no level of an encoder's
       break;
     }
-    s.levels[static_cast<std::size_t>(k)] = static_cast<std::int32_t>(e);
-    reconstruct(s.prediction, f, static_cast<std::int32_t>(e), false);
+    s.levels[static_cast<std::size_t>(k)] = e;
+    reconstruct(s.prediction, f, e, false);
     out.values[f.index] = s.prediction.r1[f.index];
   }
   ad.finish();
@@ -501,7 +503,7 @@ void reconstruct(FbaPrediction& p, const FbaLevels& levels, const FbaCodedFaps& 
 
 bool levels_fit(const FbaLevels& levels, const FbaCodedFaps& faps, bool intra) {
   for (const FbaCodedFap& f : faps) {
-    const std::int32_t level = levels[f.index];
+    const std::int64_t level = levels[f.index];
     if (level < (intra ? f.intra_min : f.predicted_min) || level > (intra ? f.intra_max : f.predicted_max)) return false;
   }
   return true;
@@ -516,22 +518,28 @@ std::error_code check_codable(FbaProfile profile, const FapFrame& frame, int fap
     detail = msg.str();
     return make_error_code(fba_errc::uncodable_value);
   };
+  // Blend and intensities: 0..63, or up to the top of fap_quant's grid (64 at 2, 65 at 5: what
+  // a standard stream decodes to).
+  const int weight = std::max(63, fba_blend_levels(fap_quant) * std::max(fap_quant, 1));
+  const std::string weights = "0.." + std::to_string(weight);
   if (frame.mask.test(kVisemeFap)) {
     const VisemeField& v = frame.viseme;
-    if (v.select1 > 14 || v.select2 > 14 || v.blend > 63)
-      return refuse("FAP 1 viseme: select1/select2 must be 0..14 and blend 0..63");
+    if (v.select1 > 14 || v.select2 > 14 || v.blend > weight)
+      return refuse("FAP 1 viseme: select1/select2 must be 0..14 and blend " + weights + " at fap_quant " +
+                    std::to_string(fap_quant));
   }
   if (frame.mask.test(kExpressionFap)) {
     const ExpressionField& e = frame.expression;
-    if (e.select1 > 6 || e.select2 > 6 || e.intensity1 > 63 || e.intensity2 > 63)
-      return refuse("FAP 2 expression: selects must be 0..6 and intensities 0..63");
+    if (e.select1 > 6 || e.select2 > 6 || e.intensity1 > weight || e.intensity2 > weight)
+      return refuse("FAP 2 expression: selects must be 0..6 and intensities " + weights + " at fap_quant " +
+                    std::to_string(fap_quant));
   }
   if (profile == FbaProfile::kFapcast) return {};  // every int32 value is codable there
   const int max_levels = fba_range_levels(kMaxRangeField, fap_quant);
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
     if (!frame.mask.test(n)) continue;
     const int step = fba_step(n, fap_quant);
-    const std::int32_t level = fba_quantise(frame.values[at(n)], step);
+    const std::int64_t level = fba_quantise(frame.values[at(n)], step);
     if (level > max_levels || level < -max_levels) {
       msg << "FAP " << n << " " << fap_info(n).name << ": value " << frame.values[at(n)]
           << " is beyond the standard syntax's codable range +/-" << std::int64_t{max_levels} * step << " at fap_quant "
@@ -546,9 +554,9 @@ std::array<FbaRangeFields, kFapCount> intra_range_fields(const FbaLevels& levels
   std::array<FbaRangeFields, kFapCount> ranges{};
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
     if (!mask.test(n)) continue;
-    const std::int32_t level = levels[at(n)];
-    ranges[at(n)].i_max = static_cast<std::uint8_t>(fba_range_field(std::max(level, 0), fap_quant).value_or(kMaxRangeField));
-    ranges[at(n)].i_min = static_cast<std::uint8_t>(fba_range_field(std::max(-level, 0), fap_quant).value_or(kMaxRangeField));
+    const std::int64_t level = levels[at(n)];
+    ranges[at(n)].i_max = static_cast<std::uint8_t>(fba_range_field(std::max<std::int64_t>(level, 0), fap_quant).value_or(kMaxRangeField));
+    ranges[at(n)].i_min = static_cast<std::uint8_t>(fba_range_field(std::max<std::int64_t>(-level, 0), fap_quant).value_or(kMaxRangeField));
   }
   return ranges;
 }
@@ -565,7 +573,7 @@ bool size_predicted_fields(const LevelExtremes& extremes, const FapMask& mask, i
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
     if (!mask.test(n)) continue;
     const auto hi = fba_range_field(extremes.max[at(n)], fap_quant);
-    const auto lo = fba_range_field(-std::int64_t{extremes.min[at(n)]}, fap_quant);
+    const auto lo = fba_range_field(-extremes.min[at(n)], fap_quant);
     if (!hi || !lo) return false;
     fields[at(n)].p_max = static_cast<std::uint8_t>(*hi);
     fields[at(n)].p_min = static_cast<std::uint8_t>(*lo);

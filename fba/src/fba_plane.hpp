@@ -18,18 +18,19 @@ namespace fapcast::detail {
 
 inline constexpr int kMaxSkipFrames = 255;  // per plane; a decoder refuses more
 
-// Quantisation levels of one frame, index n-1 for FAP n (3..68); 0 where not masked.
-using FbaLevels = std::array<std::int32_t, kFapCount>;
+// Quantisation levels of one frame, index n-1 for FAP n (3..68); 0 where not masked. 64-bit: a
+// fapcast-profile P level at fap_quant 0 is the difference of two int32 values.
+using FbaLevels = std::array<std::int64_t, kFapCount>;
 
 // The levels of `frame` coded as an intra plane at `fap_quant`.
 FbaLevels intra_levels(const FapFrame& frame, int fap_quant);
 // The levels of `frame` coded as a P plane: its differences to the predictions.
 FbaLevels predicted_levels(const FbaPrediction& prediction, const FbaCodedFaps& faps, const FapFrame& frame);
 // One FAP moved on by its level (closed loop: both sides do the same).
-inline void reconstruct(FbaPrediction& p, const FbaCodedFap& f, std::int32_t level, bool intra) {
+inline void reconstruct(FbaPrediction& p, const FbaCodedFap& f, std::int64_t level, bool intra) {
   const std::size_t i = f.index;
   // 64-bit, then saturated: a hostile stream may pile up P steps; an encoder's never do.
-  const std::int64_t delta = std::int64_t{level} * f.step;
+  const std::int64_t delta = level * f.step;
   const std::int64_t value = intra ? delta : fba_predict(p.predictor[i], p.r1[i], p.r2[i], p.r3[i]) + delta;
   const auto r = static_cast<std::int32_t>(
       std::clamp<std::int64_t>(value, std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()));
@@ -50,7 +51,7 @@ std::error_code check_codable(FbaProfile profile, const FapFrame& frame, int fap
 // Standard: range fields sized to intra levels, and P fields sized to the extremes of P levels.
 std::array<FbaRangeFields, kFapCount> intra_range_fields(const FbaLevels& levels, const FapMask& mask, int fap_quant);
 struct LevelExtremes {
-  std::array<std::int32_t, kFapCount> min{}, max{};
+  std::array<std::int64_t, kFapCount> min{}, max{};
   void add(const FbaLevels& levels);
 };
 // P fields covering `extremes`; false when some FAP needs more than 31.

@@ -157,9 +157,10 @@ std::error_code FbaFrameDecoder::decode(std::span<const std::uint8_t> unit, FapF
 }
 
 void FbaFrameDecoder::reset(FbaProfile profile) {
-  if (profile != state_->coding.profile) state_->coding = FbaCodingState{};
+  // After a loss the ranges the lost units set are unknown: from the defaults again, as a decoder
+  // that enters here (every intra unit of fapcast's is self-contained: spec/fba.md §8).
+  state_->coding = FbaCodingState{};
   state_->coding.profile = profile;
-  state_->coding.have_intra = false;
 }
 FbaProfile FbaFrameDecoder::profile() const { return state_->coding.profile; }
 bool FbaFrameDecoder::needs_intra() const { return !state_->coding.have_intra; }

@@ -32,6 +32,7 @@ struct FbaEncodeStats {
   // of which does (their FAP 1/2 fields decide it): coded for the reference reading.
   std::uint64_t recoded_for_decoders = 0;
   std::uint64_t not_read_alike = 0;
+  std::uint64_t state_checksum = 0;  // the coder state after the last plane (decode_fba's report has it too)
 };
 
 // Encodes a whole sequence. Intra planes come every options.intra_period frames, and earlier
@@ -75,6 +76,7 @@ struct FbaDecodeReport {
   std::uint64_t frames_lost = 0;     // corrupt planes, and P planes refused until the next intra
   std::uint64_t frames_skipped = 0;  // skip_frames the stream asked for (held frames)
   std::uint64_t time_code_mismatches = 0;  // standard: time codes off the running time by >= 1 s
+  std::uint64_t state_checksum = 0;  // the coder state after the last plane (as FbaEncodeStats)
   std::vector<FbaDecodeError> errors;  // at most kMaxReportedErrors; errors_total counts all
   std::uint64_t errors_total = 0;
   std::uint64_t bytes = 0;

@@ -41,6 +41,7 @@ struct StreamArgs {
 // (within half a step). Says which on standard output.
 FbaEncoderOptions fba_choice(const FapSequence& seq, const StreamArgs& a) {
   FbaEncoderOptions o;
+  o.fap_quant = 0;  // lossless unless asked or needed otherwise (the options' own default is 1)
   std::string why;
   if (a.profile == "fapcast") {
     o.profile = FbaProfile::kFapcast;

@@ -414,7 +414,9 @@ void Reader::read_frame(const FapMask& mask, std::uint64_t mask_line, const Line
   if (t.count != expected)
     fail(values.number, "value-count",
          std::to_string(t.count) + " tokens where the mask at line " + std::to_string(mask_line) +
-             " asks for " + std::to_string(expected) + " (frame number + values)");
+             " asks for " + std::to_string(expected) + " (frame number + values" +
+             (fap12 && out_.info.single_fap12 ? "; FAP 1 and 2 one integer each, as in the file's earlier frames" : "") +
+             ")");
 
   const auto fd = parse_decimal(t[0]);
   const auto fn = fd && !fd->negative && !fd->has_point ? parse_digits(fd->whole) : std::nullopt;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cassert>
 #include <limits>
+#include <optional>
 
 namespace fapcast::detail {
 namespace {
@@ -136,61 +137,63 @@ StandardPlan plan_standard_period(std::span<const FapFrame> frames, std::size_t 
   const bool sized = size_predicted_fields(extremes, mask, q, ideal);
   assert(sized);
   (void)sized;
-  int masked = 0;
-  for (const FbaCodedFap& f : steps) {
-    (void)f;
-    ++masked;
-  }
-  const std::int64_t field_cost = kBit * (5 * masked + kMarkersPerFlag);
-  // Keeping a range field is possible where it covers the levels and, at a resync point, where it
-  // is the default (what a decoder entering here holds).
-  const auto keepable = [&](int flag) {
+  const std::int64_t field_cost = kBit * (5 * steps.size() + kMarkersPerFlag);
+  // The ends of a FAP's I range (p = false) or P range (p = true): sent (sized to the data) or in force.
+  const auto ends = [&](const FbaCodedFap& f, bool p, bool send_max, bool send_min) {
+    const FbaRangeFields& i = ideal[f.index];
+    const FbaRangeLevels& b = base[f.index];
+    const std::int32_t hi = send_max ? fba_range_levels(p ? i.p_max : i.i_max, q) : (p ? b.p_max : b.i_max);
+    const std::int32_t lo = send_min ? -fba_range_levels(p ? i.p_min : i.i_min, q) : (p ? b.p_min : b.i_min);
+    return std::pair{lo, hi};
+  };
+  // Keeping an end is possible where it covers the levels and, at a resync point, where it is the
+  // default (what a decoder entering here holds).
+  const auto keepable = [&](bool p, bool max_end) {
     if (!resync_point) return true;
     for (const FbaCodedFap& f : steps) {
       const FbaRangeLevels d = fba_default_range_levels(f.index + 1, q), b = base[f.index];
-      const bool same = flag == 0 ? b.i_max == d.i_max : flag == 1 ? b.i_min == d.i_min : flag == 2 ? b.p_max == d.p_max : b.p_min == d.p_min;
-      if (!same) return false;
+      if ((p ? (max_end ? b.p_max != d.p_max : b.p_min != d.p_min) : (max_end ? b.i_max != d.i_max : b.i_min != d.i_min)))
+        return false;
     }
     return true;
   };
-  // Intra: symbols are one-shot uniform: cost log2(size) each.
-  std::int64_t best = std::numeric_limits<std::int64_t>::max();
-  for (int combo = 0; combo < 4; ++combo) {
-    const bool send_max = combo & 1, send_min = combo & 2;
-    std::int64_t cost = (send_max ? field_cost : 0) + (send_min ? field_cost : 0);
-    bool valid = (send_max || keepable(0)) && (send_min || keepable(1));
-    for (const FbaCodedFap& f : steps) {
-      const std::int32_t hi = send_max ? fba_range_levels(ideal[f.index].i_max, q) : base[f.index].i_max;
-      const std::int32_t lo = send_min ? -fba_range_levels(ideal[f.index].i_min, q) : base[f.index].i_min;
-      valid = valid && intra[f.index] <= hi && intra[f.index] >= lo && hi - lo + 1 <= FrequencyModel::kMaxSymbols;
-      cost += log2_q8(static_cast<std::uint64_t>(hi - lo + 1));
+  // The cheapest of sending or keeping each end of the I (p = false) or P ranges. `symbols`: the
+  // modelled bits of one FAP's symbols over [lo, hi] (or nullopt where they do not fit), stopping
+  // past `enough`.
+  const auto choose = [&](bool p, auto&& symbols, bool& send_max, bool& send_min) {
+    std::int64_t best = std::numeric_limits<std::int64_t>::max();
+    for (int combo = 0; combo < 4; ++combo) {
+      const bool max_sent = combo & 1, min_sent = combo & 2;
+      std::int64_t cost = (max_sent ? field_cost : 0) + (min_sent ? field_cost : 0);
+      bool valid = (max_sent || keepable(p, true)) && (min_sent || keepable(p, false));
+      for (int j = 0; j < steps.size() && valid && cost < best; ++j) {
+        const auto [lo, hi] = ends(steps[j], p, max_sent, min_sent);
+        const auto bits = hi - lo + 1 <= FrequencyModel::kMaxSymbols ? symbols(steps[j], lo, hi, best - cost)
+                                                                      : std::optional<std::int64_t>{};
+        valid = bits.has_value();
+        cost += bits.value_or(0);
+      }
+      if (valid && cost < best) {
+        best = cost;
+        send_max = max_sent;
+        send_min = min_sent;
+      }
     }
-    if (valid && cost < best) {
-      best = cost;
-      h.flags.i_max = send_max;
-      h.flags.i_min = send_min;
-    }
-  }
-  // P: the adaptive model over each range coding the period's levels.
-  best = std::numeric_limits<std::int64_t>::max();
-  for (int combo = 0; combo < 4; ++combo) {
-    const bool send_max = combo & 1, send_min = combo & 2;
-    std::int64_t cost = (send_max ? field_cost : 0) + (send_min ? field_cost : 0);
-    bool valid = (send_max || keepable(2)) && (send_min || keepable(3));
-    for (const FbaCodedFap& f : steps) {
-      const std::int32_t hi = send_max ? fba_range_levels(ideal[f.index].p_max, q) : base[f.index].p_max;
-      const std::int32_t lo = send_min ? -fba_range_levels(ideal[f.index].p_min, q) : base[f.index].p_min;
-      valid = valid && extremes.max[f.index] <= hi && extremes.min[f.index] >= lo && hi - lo + 1 <= FrequencyModel::kMaxSymbols;
-      if (!valid) break;
-      cost += adaptive_cost(plevels[f.index], lo, hi - lo + 1, 1, best);
-      if (cost >= best) break;
-    }
-    if (valid && cost < best) {
-      best = cost;
-      h.flags.p_max = send_max;
-      h.flags.p_min = send_min;
-    }
-  }
+  };
+  // Intra: symbols are one-shot uniform, log2(size) each; P: the adaptive model over the range
+  // coding the period's levels.
+  choose(false,
+         [&](const FbaCodedFap& f, std::int32_t lo, std::int32_t hi, std::int64_t) -> std::optional<std::int64_t> {
+           if (intra[f.index] < lo || intra[f.index] > hi) return std::nullopt;
+           return log2_q8(static_cast<std::uint64_t>(hi - lo + 1));
+         },
+         h.flags.i_max, h.flags.i_min);
+  choose(true,
+         [&](const FbaCodedFap& f, std::int32_t lo, std::int32_t hi, std::int64_t enough) -> std::optional<std::int64_t> {
+           if (extremes.min[f.index] < lo || extremes.max[f.index] > hi) return std::nullopt;
+           return adaptive_cost(plevels[f.index], lo, hi - lo + 1, 1, enough);
+         },
+         h.flags.p_max, h.flags.p_min);
   h.fields = ideal;
   return plan;
 }

@@ -31,34 +31,46 @@ int free_port() {
   return s.local_endpoint().port();
 }
 
+// `fapcast recv` into `out` on a free loopback port while `fapcast stream INPUT ARGS` sends to it.
+struct Loopback {
+  CommandResult send, recv;
+  std::string recv_err;
+};
+Loopback stream_into_recv(const std::string& input, const std::string& args, const std::string& out) {
+  const std::string dir = make_temp_dir("stream");
+  const std::string url = "udp://127.0.0.1:" + std::to_string(free_port());
+  Loopback r;
+  std::thread receiver([&] {
+    r.recv = run_command("(" + fapcast("recv " + url + " -o " + out + " --timeout 1") + " 2>" + dir + "/recv.err)");
+  });
+  for (int i = 0; i < 100 && slurp(dir + "/recv.err").find("listening") == std::string::npos; ++i)
+    std::this_thread::sleep_for(50ms);
+  r.send = run_command(fapcast("stream " + input + " --to " + url + " --no-pace " + args));
+  receiver.join();
+  r.recv_err = slurp(dir + "/recv.err");
+  return r;
+}
+
+const std::string kJoy = std::string(FAPCAST_TEST_DATA) + "/xface/joy.fap";
+
 class StreamRecv : public testing::TestWithParam<const char*> {};
 
 // By default the stream delivers the values sent: the Xface clip's head rotations are beyond the
 // standard syntax's reach at fap_quant 0, so the fapcast profile carries it, and both ends say so.
 TEST_P(StreamRecv, TheReceivedTrackEqualsTheSentOne) {
-  const std::string dir = make_temp_dir("stream");
-  const std::string input = std::string(FAPCAST_TEST_DATA) + "/xface/joy.fap";
-  const std::string out = dir + "/out" + GetParam();
-  const std::string url = "udp://127.0.0.1:" + std::to_string(free_port());
-  CommandResult recv;
-  std::thread receiver([&] {
-    recv = run_command("(" + fapcast("recv " + url + " -o " + out + " --timeout 1") + " 2>" + dir + "/recv.err)");
-  });
-  for (int i = 0; i < 100 && slurp(dir + "/recv.err").find("listening") == std::string::npos; ++i)
-    std::this_thread::sleep_for(50ms);
-  const CommandResult send = run_command(fapcast("stream " + input + " --to " + url + " --no-pace --iperiod 10"));
-  receiver.join();
-  ASSERT_EQ(send.exit_code, 0) << send.err;
-  ASSERT_EQ(recv.exit_code, 0) << slurp(dir + "/recv.err");
-  EXPECT_NE(recv.out.find("108 accepted, 0 lost"), std::string::npos) << recv.out;
-  EXPECT_NE(send.out.find("sending:   fapcast profile at fap_quant 0: the values sent, losslessly (the standard "
-                          "syntax cannot code frame "),
+  const std::string out = make_temp_dir("stream-out") + "/out" + GetParam();
+  const Loopback r = stream_into_recv(kJoy, "--iperiod 10", out);
+  ASSERT_EQ(r.send.exit_code, 0) << r.send.err;
+  ASSERT_EQ(r.recv.exit_code, 0) << r.recv_err;
+  EXPECT_NE(r.recv.out.find("108 accepted, 0 lost"), std::string::npos) << r.recv.out;
+  EXPECT_NE(r.send.out.find("sending:   fapcast profile at fap_quant 0: the values sent, losslessly (the standard "
+                            "syntax cannot code frame "),
             std::string::npos)
-      << send.out;
-  EXPECT_NE(recv.out.find("received:  108 units fapcast profile, fap_quant 0 (the values sent, losslessly)"),
+      << r.send.out;
+  EXPECT_NE(r.recv.out.find("received:  108 units fapcast profile, fap_quant 0 (the values sent, losslessly)"),
             std::string::npos)
-      << recv.out;
-  const auto sent = read_track_file(input);
+      << r.recv.out;
+  const auto sent = read_track_file(kJoy);
   const auto got = read_track_file(out);
   EXPECT_EQ(got.frames, sent.frames);
   EXPECT_EQ(got.rate, sent.rate);
@@ -67,27 +79,16 @@ TEST_P(StreamRecv, TheReceivedTrackEqualsTheSentOne) {
 // Only the standard syntax asked for: the smallest fap_quant that codes every value (the head
 // rotations need 1), every value within half a step, and both ends say so.
 TEST(StreamRecvCli, StandardOnlyIsWithinHalfAStep) {
-  const std::string dir = make_temp_dir("stream");
-  const std::string input = std::string(FAPCAST_TEST_DATA) + "/xface/joy.fap";
-  const std::string out = dir + "/out.fap";
-  const std::string url = "udp://127.0.0.1:" + std::to_string(free_port());
-  CommandResult recv;
-  std::thread receiver([&] {
-    recv = run_command("(" + fapcast("recv " + url + " -o " + out + " --timeout 1") + " 2>" + dir + "/recv.err)");
-  });
-  for (int i = 0; i < 100 && slurp(dir + "/recv.err").find("listening") == std::string::npos; ++i)
-    std::this_thread::sleep_for(50ms);
-  const CommandResult send =
-      run_command(fapcast("stream " + input + " --to " + url + " --no-pace --iperiod 10 --profile standard"));
-  receiver.join();
-  ASSERT_EQ(send.exit_code, 0) << send.err;
-  ASSERT_EQ(recv.exit_code, 0) << slurp(dir + "/recv.err");
-  EXPECT_NE(send.out.find("sending:   standard FBA at fap_quant 1: every value within half a quantisation step"),
+  const std::string out = make_temp_dir("stream-out") + "/out.fap";
+  const Loopback r = stream_into_recv(kJoy, "--iperiod 10 --profile standard", out);
+  ASSERT_EQ(r.send.exit_code, 0) << r.send.err;
+  ASSERT_EQ(r.recv.exit_code, 0) << r.recv_err;
+  EXPECT_NE(r.send.out.find("sending:   standard FBA at fap_quant 1: every value within half a quantisation step"),
             std::string::npos)
-      << send.out;
-  EXPECT_NE(recv.out.find("received:  108 units standard FBA, fap_quant 1 (within half a step)"), std::string::npos)
-      << recv.out;
-  const auto sent = read_track_file(input);
+      << r.send.out;
+  EXPECT_NE(r.recv.out.find("received:  108 units standard FBA, fap_quant 1 (within half a step)"), std::string::npos)
+      << r.recv.out;
+  const auto sent = read_track_file(kJoy);
   const auto got = read_track_file(out);
   ASSERT_EQ(got.frames.size(), sent.frames.size());
   for (std::size_t k = 0; k < sent.frames.size(); ++k)

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "fapcast/corpus/c3d.hpp"
 #include "fapcast/capture/head_pose.hpp"
@@ -24,6 +25,9 @@
 namespace fapcast {
 namespace fs = std::filesystem;
 namespace {
+
+// The 60 fps capture grid as a clock: to_sample at it gives frame numbers.
+constexpr SampleRate kVoiceFrameClock{kVoiceFramesPerSecond};
 
 [[noreturn]] void refuse(const fs::path& file, const std::string& rule, const std::string& detail) {
   throw InputError({file.string(), std::nullopt, std::nullopt}, rule, detail);
@@ -180,7 +184,7 @@ std::string_view phone_set_name(CorpusPhoneSet set) {
 
 // A take's markers as read from its file, in mm at the file's rate.
 struct CapturedMarkers {
-  MarkerSet set;
+  MarkerFrames<Millimetres> set;
   bool synthetic = false;
   std::string rate_field;  // what the file calls its rate, for messages
 };
@@ -278,19 +282,19 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
   take.capture_frame_rate_hz = rate;
   // C3D keeps its rate as a float32: agree to float precision.
   if (u.frame_rate_hz && std::abs(rate - *u.frame_rate_hz) > 1e-6 * *u.frame_rate_hz)
-    refuse(u.markers, "corpus-frame-rate", captured.rate_field + " is " + detail::shortest_decimal(rate) + " Hz, manifest.json says " +
-                                               detail::shortest_decimal(*u.frame_rate_hz));
+    refuse(u.markers, "corpus-frame-rate", captured.rate_field + " is " + shortest_decimal(rate) + " Hz, manifest.json says " +
+                                               shortest_decimal(*u.frame_rate_hz));
   if (!(rate >= kMinCaptureFramesPerSecond))
-    refuse(u.markers, "corpus-frame-rate", captured.rate_field + " is " + detail::shortest_decimal(rate) + " Hz; the voice build resamples takes of " +
-                                               detail::shortest_decimal(kMinCaptureFramesPerSecond) + " Hz or more to 60, not slower ones");
+    refuse(u.markers, "corpus-frame-rate", captured.rate_field + " is " + shortest_decimal(rate) + " Hz; the voice build resamples takes of " +
+                                               shortest_decimal(kMinCaptureFramesPerSecond) + " Hz or more to 60, not slower ones");
   // A rate within float precision of 60 (C3D's float32, a CSV rate derived from its times) is 60.
   const bool on_grid = std::abs(rate - kVoiceFramesPerSecond) <= 1e-6 * kVoiceFramesPerSecond;
-  const MarkerSet set = on_grid ? std::move(captured.set) : resample_markers(captured.set, kVoiceFramesPerSecond);
+  const MarkerFrames<Millimetres> set = on_grid ? std::move(captured.set) : resample_markers(captured.set, kVoiceFramesPerSecond);
   const auto sites = marker_sites();
   const Eigen::Index frames = set.frame_count();
-  MarkerFrames& m = take.markers;
+  MarkerFrames<Centimetres>& m = take.markers;
   m.frame_rate_hz = kVoiceFramesPerSecond;
-  m.positions_cm = Eigen::MatrixXd::Constant(3 * static_cast<Eigen::Index>(sites.size()), frames, std::nan(""));
+  m.positions = Eigen::MatrixXd::Constant(3 * static_cast<Eigen::Index>(sites.size()), frames, std::nan(""));
   for (const auto& site : sites) m.labels.emplace_back(site.label);
   std::vector<bool> found(sites.size(), false);
   for (Eigen::Index k = 0; k < set.marker_count(); ++k) {
@@ -304,14 +308,19 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
     const auto r = static_cast<Eigen::Index>(row - sites.begin());
     found[static_cast<std::size_t>(r)] = true;
     for (Eigen::Index f = 0; f < frames; ++f)
-      if (!set.missing(f, k)) m.positions_cm.block<3, 1>(3 * r, f) = set.position(f, k) / 10.0;
+      if (set.present(k, f)) m.positions.block<3, 1>(3 * r, f) = set.at(k, f) / 10.0;
   }
   for (std::size_t r = 0; r < sites.size(); ++r)
     if (!found[r]) refuse(u.markers, "corpus-markers", "no marker for site " + std::string(sites[r].label) +
                                                            " (label it so, or map a label to it in manifest.json's marker_map)");
 
   const AlignedPhones aligned_phones = read_alignment(u.alignment);
-  const std::int64_t aligned = to_sample(aligned_phones.end_s, kVoiceFramesPerSecond);
+  std::int64_t aligned = 0;
+  try {
+    aligned = to_sample(aligned_phones.end_s, kVoiceFrameClock);
+  } catch (const std::out_of_range& e) {
+    refuse(u.alignment, "time-off-sample-grid", e.what());
+  }
   if (std::llabs(aligned - frames) > kMaxLengthMismatchFrames)
     refuse(u.alignment, "corpus-length", "the alignment ends at frame " + std::to_string(aligned) + " (" +
                                              std::to_string(aligned_phones.end_s) + " s), " + u.markers.filename().string() +
@@ -328,7 +337,7 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
       refuse(u.alignment, "corpus-alignment", "phones interval " + std::to_string(i + 1) + ": " + what);
     }
     const Phone p = *phone;
-    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(to_sample(t, kVoiceFramesPerSecond), 0, frames); };
+    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(to_sample(t, kVoiceFrameClock), 0, frames); };
     const std::int64_t first = clamp(iv.start_s);
     const std::int64_t end = clamp(iv.end_s);
     if (end <= first) continue;
@@ -367,7 +376,7 @@ Eigen::Matrix3Xd corpus_rigid_reference(const CorpusTake& take, const std::strin
                                        " rigid head markers: the head pose cannot be referenced");
 }
 
-Eigen::MatrixXd source_vectors_m(const MarkerFrames& stabilised, const std::string& source) {
+Eigen::MatrixXd source_vectors_m(const MarkerFrames<Centimetres>& stabilised, const std::string& source) {
   const auto rows = source_marker_rows();
   const Eigen::Index frames = stabilised.frame_count();
   Eigen::MatrixXd out(3 * static_cast<Eigen::Index>(rows.size()), frames);

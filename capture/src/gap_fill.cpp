@@ -47,7 +47,7 @@ Eigen::VectorXd natural_cubic_spline(const Eigen::VectorXd& x, const Eigen::Vect
   return out;
 }
 
-GapFillResult fill_gaps(const MarkerFrames& frames, const GapFillOptions& options) {
+GapFillResult fill_gaps(const MarkerFrames<Centimetres>& frames, const GapFillOptions& options) {
   GapFillResult result{frames, {}};
   const Eigen::Index count = frames.frame_count();
   for (Eigen::Index m = 0; m < frames.marker_count(); ++m) {
@@ -79,10 +79,10 @@ GapFillResult fill_gaps(const MarkerFrames& frames, const GapFillOptions& option
     for (std::size_t i = 0; i < to_fill.size(); ++i) xs(static_cast<Eigen::Index>(i)) = static_cast<double>(to_fill[i]);
     for (Eigen::Index c = 0; c < 3; ++c) {
       Eigen::VectorXd y(x.size());
-      for (Eigen::Index i = 0; i < x.size(); ++i) y(i) = frames.positions_cm(3 * m + c, present[static_cast<std::size_t>(i)]);
+      for (Eigen::Index i = 0; i < x.size(); ++i) y(i) = frames.positions(3 * m + c, present[static_cast<std::size_t>(i)]);
       const Eigen::VectorXd filled = natural_cubic_spline(x, y, xs);
       for (Eigen::Index i = 0; i < xs.size(); ++i)
-        result.frames.positions_cm(3 * m + c, to_fill[static_cast<std::size_t>(i)]) = filled(i);
+        result.frames.positions(3 * m + c, to_fill[static_cast<std::size_t>(i)]) = filled(i);
     }
   }
   return result;

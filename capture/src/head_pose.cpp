@@ -6,7 +6,7 @@
 
 namespace fapcast {
 
-Eigen::Matrix3Xd rigid_reference(const MarkerFrames& frames, std::span<const std::size_t> rigid_rows,
+Eigen::Matrix3Xd rigid_reference(const MarkerFrames<Centimetres>& frames, std::span<const std::size_t> rigid_rows,
                                  Eigen::Index frame) {
   Eigen::Matrix3Xd ref(3, static_cast<Eigen::Index>(rigid_rows.size()));
   for (std::size_t r = 0; r < rigid_rows.size(); ++r) {
@@ -19,7 +19,7 @@ Eigen::Matrix3Xd rigid_reference(const MarkerFrames& frames, std::span<const std
   return ref;
 }
 
-PoseRemovalResult remove_head_pose(const MarkerFrames& captured,
+PoseRemovalResult remove_head_pose(const MarkerFrames<Centimetres>& captured,
                                    std::span<const std::size_t> rigid_rows,
                                    const Eigen::Matrix3Xd& reference_cm) {
   if (reference_cm.cols() != static_cast<Eigen::Index>(rigid_rows.size()))
@@ -58,7 +58,7 @@ PoseRemovalResult remove_head_pose(const MarkerFrames& captured,
     }
     if (!fitted) {
       result.frames_without_pose.push_back(k);
-      result.frames.positions_cm.col(k).setConstant(std::nan(""));
+      result.frames.positions.col(k).setConstant(std::nan(""));
       continue;
     }
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -69,7 +69,7 @@ PoseRemovalResult remove_head_pose(const MarkerFrames& captured,
     const RigidTransform undo = pose.inverse();
     for (Eigen::Index m = 0; m < captured.marker_count(); ++m)
       if (captured.present(m, k))
-        result.frames.positions_cm.block<3, 1>(3 * m, k) = undo.apply(captured.at(m, k));
+        result.frames.positions.block<3, 1>(3 * m, k) = undo.apply(captured.at(m, k));
   }
   result.rms_rigid_residual_cm = samples > 0 ? std::sqrt(squared / static_cast<double>(samples)) : 0;
   return result;

@@ -7,11 +7,11 @@
 
 namespace fapcast {
 
-MarkerSet resample_markers(const MarkerSet& markers, std::int32_t rate_hz) {
+MarkerFrames<Millimetres> resample_markers(const MarkerFrames<Millimetres>& markers, std::int32_t rate_hz) {
   const double input_hz = markers.frame_rate_hz;
   if (rate_hz < 1 || rate_hz > 100000) throw std::invalid_argument("resample_markers: rate " + std::to_string(rate_hz) + " Hz out of range");
   if (!std::isfinite(input_hz) || !(input_hz > 0)) throw std::invalid_argument("resample_markers: input rate not positive");
-  if (!markers.consistent()) throw std::invalid_argument("resample_markers: inconsistent marker set");
+  if (!markers.consistent()) throw std::invalid_argument("resample_markers: inconsistent markers");
   const Eigen::Index in_frames = markers.frame_count();
   const Eigen::Index m = markers.marker_count();
   // The source position of output frame k: whole frame i plus a fraction in [0, 1).
@@ -38,7 +38,7 @@ MarkerSet resample_markers(const MarkerSet& markers, std::int32_t rate_hz) {
       out_frames = static_cast<Eigen::Index>(std::floor(static_cast<double>(in_frames - 1) * rate_hz / input_hz + 1e-9)) + 1;
     }
   }
-  MarkerSet out = MarkerSet::zeros(out_frames, m);
+  MarkerFrames<Millimetres> out = MarkerFrames<Millimetres>::missing(m, out_frames);
   out.labels = markers.labels;
   out.frame_rate_hz = rate_hz;
   out.first_frame = 1;
@@ -52,13 +52,10 @@ MarkerSet resample_markers(const MarkerSet& markers, std::int32_t rate_hz) {
     }
     for (Eigen::Index j = 0; j < m; ++j) {
       if (t == 0) {
-        out.missing(k, j) = markers.missing(i, j);
-        if (!markers.missing(i, j)) out.set_position(k, j, markers.position(i, j));
-      } else if (markers.missing(i, j) || markers.missing(i + 1, j)) {
-        out.missing(k, j) = true;
-      } else {
-        out.set_position(k, j, (1 - t) * markers.position(i, j) + t * markers.position(i + 1, j));
-      }
+        if (markers.present(j, i)) out.set(j, k, markers.at(j, i));
+      } else if (markers.present(j, i) && markers.present(j, i + 1)) {
+        out.set(j, k, (1 - t) * markers.at(j, i) + t * markers.at(j, i + 1));
+      }  // else missing, as `out` starts
     }
   }
   return out;

@@ -1,4 +1,4 @@
-// `fapcast animate --wav IN.wav --align IN.TextGrid|IN.lab -o OUT.fap [--voice V] ...`: animates
+// `fapcast animate SPEECH.wav ALIGNMENT.TextGrid|.lab -o OUT.fap [--voice V] ...`: animates
 // recorded speech from its phone alignment (spec/synthesis.md). Argument parsing only.
 #include "command.hpp"
 #include "file_extension.hpp"
@@ -6,7 +6,7 @@
 
 #include "fapcast/corpus/alignment_phones.hpp"
 #include "fapcast/corpus/lab_file.hpp"
-#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/core/wav_file.hpp"
 #include "fapcast/corpus/textgrid.hpp"
 #include "fapcast/core/file_io.hpp"
 
@@ -31,7 +31,7 @@ Alignment read_alignment(const std::string& path) {
   return a;
 }
 
-const cli::Registration reg{"21-animate", [](CLI::App& app) {
+const cli::Registration reg{"animate", [](CLI::App& app) {
   struct Args {
     std::string wav;
     std::string align;
@@ -44,23 +44,23 @@ const cli::Registration reg{"21-animate", [](CLI::App& app) {
         const std::string ext = cli::lower_extension(args->align);
         if (ext != ".textgrid" && ext != ".lab")
           throw cli::UsageError("animate: alignment '" + args->align + "' must end in .TextGrid or .lab");
-        const MonoAudio audio = read_wav(args->wav);
+        const Audio audio = read_mono_wav(args->wav);
         const Alignment alignment = read_alignment(args->align);
         const LabelTier* tier = phone_tier(alignment);
         if (tier == nullptr || tier->intervals.empty())
           throw std::runtime_error(args->align + ": no-phone-tier: the alignment has no phone intervals");
         const auto samples = static_cast<std::int64_t>(audio.samples.size());
-        auto phones = phones_from_tier(*tier, audio.sample_rate_hz, args->align);
+        auto phones = phones_from_tier(*tier, audio.sample_rate, args->align);
         if (!phones.empty() && phones.back().end_sample < samples && !args->synthesis.quiet)
           std::cerr << "fapcast: warning: " << args->align << " ends before " << args->wav
                     << "; the rest is animated as silence\n";
         phones = fit_phones_to_audio(std::move(phones), samples,
-                                            kToleranceMs * audio.sample_rate_hz / 1000, args->align);
-        cli::synthesize_to_file(args->synthesis, phones, audio.sample_rate_hz, samples, args->align,
+                                            kToleranceMs * audio.sample_rate.hz / 1000, args->align);
+        cli::synthesize_to_file(args->synthesis, phones, audio.sample_rate, samples, args->align,
                                   "fapcast animate");
       });
-  cmd->add_option("--wav", args->wav, "The speech (mono WAV): the timeline")->required();
-  cmd->add_option("--align", args->align, "Its phone alignment: .TextGrid or .lab")->required();
+  cmd->add_option("SPEECH", args->wav, "The speech (mono WAV): the timeline")->required();
+  cmd->add_option("ALIGNMENT", args->align, "Its phone alignment: .TextGrid or .lab")->required();
 }};
 
 }  // namespace

@@ -1,4 +1,4 @@
-// `fapcast fap info FILE [--json]` and `fapcast fap convert IN OUT [--dialect strict|69]`:
+// `fapcast fap info FILE [--json]` and `fapcast fap convert IN -o OUT [--dialect strict|69 | --player P]`:
 // inspect and convert .fap text files (spec/fap-text.md). Argument parsing and printing only;
 // reading, writing and statistics are codec functions.
 #include "command.hpp"
@@ -157,7 +157,7 @@ void convert(const std::string& in, const std::string& out, const std::string& d
   if (d != FapTextDialect::kMask69) cli::print_notes(out, fap_text_player_notes(r.sequence, options));
 }
 
-const cli::Registration reg{"40-fap", [](CLI::App& app) {
+const cli::Registration reg{"fap", [](CLI::App& app) {
   auto* fap = app.add_subcommand("fap", "Inspect and convert .fap text files");
   fap->require_subcommand(1);
 
@@ -175,7 +175,7 @@ const cli::Registration reg{"40-fap", [](CLI::App& app) {
   auto dialect = std::make_shared<std::string>("strict");
   auto player = std::make_shared<std::string>();
   conv->add_option("IN", *in, "input .fap file")->required();
-  conv->add_option("OUT", *out, "output .fap file (written atomically)")->required();
+  conv->add_option("-o,--output", *out, "output .fap file (written atomically)")->required();
   auto* dialect_option = conv->add_option("--dialect", *dialect, "strict (default) or 69 (Greta's own exporter)")
                              ->check(CLI::IsMember({"strict", "69"}));
   cli::add_player_option(conv, *player)->excludes(dialect_option);

@@ -96,10 +96,10 @@ void decode(const DecodeArgs& a) {
   if (!report.ok()) throw std::runtime_error(a.in + ": decoded with losses; " + a.out + " holds what survived");
 }
 
-const cli::Registration reg{"45-fba", [](CLI::App& app) {
+const cli::Registration reg{"encode", [](CLI::App& app) {
   auto enc = std::make_shared<EncodeArgs>();
   auto* e = app.add_subcommand("encode", "Encode a .fap track as a binary MPEG-4 FBA stream (.fba)");
-  e->add_option("input", enc->in, "input .fap file")->required();
+  e->add_option("IN", enc->in, "input .fap file")->required();
   e->add_option("-o,--output", enc->out, "output .fba file")->required();
   e->add_option("--profile", enc->profile,
                 "standard (default: ISO/IEC 14496-2 FBA, read by every standard decoder) or fapcast (fapcast's own "
@@ -116,10 +116,12 @@ const cli::Registration reg{"45-fba", [](CLI::App& app) {
                   " s (a corrupt byte or a seek costs up to that long)")
       ->excludes(iperiod);
   e->callback([enc] { encode(*enc); });
+}};
 
+const cli::Registration decode_reg{"decode", [](CLI::App& app) {
   auto dec = std::make_shared<DecodeArgs>();
   auto* d = app.add_subcommand("decode", "Decode a binary MPEG-4 FBA stream (.fba, either profile) to a .fap track");
-  d->add_option("input", dec->in, "input .fba file")->required();
+  d->add_option("IN", dec->in, "input .fba file")->required();
   d->add_option("-o,--output", dec->out, "output .fap file")->required();
   d->add_option("--profile", dec->profile, "standard: accept the standard syntax only (refuse a fapcast-profile stream)")
       ->check(CLI::IsMember({"standard"}));

@@ -25,7 +25,7 @@ struct RecvArgs {
   std::string interface;
   std::int64_t ssrc = -1;
   int payload_type = kDefaultFbaPayloadType;
-  std::int64_t clock_rate = kDefaultSampleRate;
+  std::int64_t clock_rate = kDefaultSampleRate.hz;
   int reorder_ms = 40;
   double max_seconds = 3600;
 };
@@ -42,10 +42,10 @@ void run_recv(const RecvArgs& a) {
   ReceiverOptions options;
   options.payload_type = static_cast<std::uint8_t>(a.payload_type);
   if (a.ssrc >= 0) options.ssrc = static_cast<std::uint32_t>(a.ssrc);
-  options.clock_rate = a.clock_rate;
+  options.clock_rate = SampleRate{a.clock_rate};
   options.reorder_delay = std::chrono::milliseconds(a.reorder_ms);
   RtpStreamReceiver stream(options);
-  ReceivedTrack track(a.clock_rate, static_cast<std::int64_t>(a.max_seconds * 120) + 1);
+  ReceivedTrack track(SampleRate{a.clock_rate}, static_cast<std::int64_t>(a.max_seconds * 120) + 1);
 
   ReceiveLimits limits;
   limits.idle_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(a.timeout_seconds * 1000));
@@ -74,13 +74,13 @@ void run_recv(const RecvArgs& a) {
   if (track.sequence().frames.empty())
     throw std::runtime_error(a.url + ": no decodable frames arrived before the timeout");
   cli::print_notes(a.output, write_track_file(a.output, track.sequence(),
-                                              {.sample_rate = a.clock_rate, .fap = cli::fap_write_options(a.player)}));
+                                              {.sample_rate = SampleRate{a.clock_rate}, .fap = cli::fap_write_options(a.player)}));
 }
 
-const cli::Registration reg{"61-recv", [](CLI::App& app) {
+const cli::Registration reg{"recv", [](CLI::App& app) {
   auto args = std::make_shared<RecvArgs>();
   auto* cmd = app.add_subcommand("recv", "Receive a FAP track over RTP/UDP and write it to a file");
-  cmd->add_option("url", args->url, "Listen on udp://HOST:PORT (a multicast group joins it)")->required();
+  cmd->add_option("URL", args->url, "Listen on udp://HOST:PORT (a multicast group joins it)")->required();
   cmd->add_option("-o,--output", args->output, "Output track: .fap, .fba or .json")->required();
   cli::add_player_option(cmd, args->player);
   cmd->add_option("--timeout", args->timeout_seconds, "Stop after this many seconds without packets")

@@ -1,4 +1,4 @@
-// `fapcast stream IN.fap|IN.fba|IN.json [--wav IN.wav] --to udp://HOST:PORT [...]`: sends a FAP
+// `fapcast stream IN.fap|IN.fba|IN.json [--wav IN.wav] -o udp://HOST:PORT [...]`: sends a FAP
 // track as RTP (spec/rtp.md), optionally with its audio as L16, paced in real time. Argument
 // parsing only; reading, encoding and sending are transport functions.
 #include "command.hpp"
@@ -8,7 +8,7 @@
 #include "fapcast/transport/timeline.hpp"
 #include "fapcast/transport/track_file.hpp"
 #include "fapcast/transport/udp_url.hpp"
-#include "fapcast/core/wav_audio.hpp"
+#include "fapcast/core/wav_file.hpp"
 #include "fapcast/fba/fba_file.hpp"
 #include "fapcast/fba/fba_quantiser.hpp"
 
@@ -67,8 +67,8 @@ void run_stream(const StreamArgs& a) {
   if (a.payload_type == a.audio_payload_type)
     throw cli::UsageError("--payload-type and --audio-payload-type must differ");
   const FapSequence seq = read_track_file(a.input);
-  std::unique_ptr<WavAudio> audio;
-  if (!a.wav.empty()) audio = std::make_unique<WavAudio>(read_multichannel_wav(a.wav));
+  std::unique_ptr<Audio> audio;
+  if (!a.wav.empty()) audio = std::make_unique<Audio>(read_wav(a.wav));
 
   StreamOptions options;
   options.pace = !a.no_pace;
@@ -93,22 +93,22 @@ void run_stream(const StreamArgs& a) {
   const StreamReport r = streamer.run(units, audio.get());
   std::cout << "animation: " << r.animation.packets << " packets, " << r.animation.payload_octets
             << " payload octets, ssrc " << options.animation_ids.ssrc << ", pt "
-            << a.payload_type << ", clock " << options.clock_rate << " Hz\n";
+            << a.payload_type << ", clock " << options.clock_rate.hz << " Hz\n";
   if (audio)
     std::cout << "audio:     " << r.audio.packets << " packets, " << r.audio.payload_octets
               << " payload octets, ssrc " << options.audio_ids.ssrc << ", pt "
-              << a.audio_payload_type << " (L16/" << audio->sample_rate << "/" << audio->channels
+              << a.audio_payload_type << " (L16/" << audio->sample_rate.hz << "/" << audio->channels
               << ")\n";
   std::cout << "rtcp:      " << r.animation.sender_reports + r.audio.sender_reports
             << " sender reports\n";
 }
 
-const cli::Registration reg{"60-stream", [](CLI::App& app) {
+const cli::Registration reg{"stream", [](CLI::App& app) {
   auto args = std::make_shared<StreamArgs>();
   auto* cmd = app.add_subcommand("stream", "Send a FAP track (and its audio) as RTP over UDP");
-  cmd->add_option("input", args->input, "Track to send: .fap, .fba or .json")->required();
+  cmd->add_option("IN", args->input, "Track to send: .fap, .fba or .json")->required();
   cmd->add_option("--wav", args->wav, "Audio to send alongside as L16 (its rate becomes the RTP clock)");
-  cmd->add_option("--to", args->to, "Destination udp://HOST:PORT (unicast or multicast group)")->required();
+  cmd->add_option("-o,--output", args->to, "Destination udp://HOST:PORT (unicast or a multicast group)")->required();
   cmd->add_flag("--no-pace", args->no_pace, "Send as fast as possible instead of in real time");
   cmd->add_option("--ttl", args->ttl, "Hop limit (multicast TTL)")->check(CLI::Range(0, 255));
   cmd->add_option("--interface", args->interface, "Outgoing interface address for multicast");

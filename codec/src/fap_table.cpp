@@ -8,7 +8,7 @@ namespace {
 // One row per FAP: number, name, FAPU, unidirectional, direction of positive values, group,
 // feature point, second feature point, QP, default I range, default P range.
 // Left and right are the face's own sides. Unverified against the standard: the unidirectional
-// flags, head-rotation directions and the eyeball FAPs' feature points (see FAP-NOTES.md).
+// flags, head-rotation directions and the eyeball FAPs' feature points (spec/faps.tsv).
 constexpr std::array<FapInfo, kFapCount> kFaps{{
     {1, "viseme", Fapu::kNone, false, "-", 1, std::nullopt, std::nullopt, 0, 0, 0},  // viseme: select1, select2, blend, def
     {2, "expression", Fapu::kNone, false, "-", 1, std::nullopt, std::nullopt, 0, 0, 0},  // expression: select1, intensity1, select2, intensity2, init_face, def

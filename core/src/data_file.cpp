@@ -2,19 +2,19 @@
 
 #include <cmath>
 
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 namespace fapcast {
 
 std::ifstream open_data_file(const std::filesystem::path& file, std::uintmax_t max_bytes) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(file, ec);
-  if (ec) throw DataFileError(file.string(), 0, "file-unreadable", ec.message());
+  if (ec) throw InputError::in_file(file.string(), 0, "file-unreadable", ec.message());
   if (size > max_bytes)
-    throw DataFileError(file.string(), 0, "file-too-large",
+    throw InputError::in_file(file.string(), 0, "file-too-large",
                         std::to_string(size) + " bytes (limit " + std::to_string(max_bytes) + ")");
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw DataFileError(file.string(), 0, "file-unreadable", "cannot open");
+  if (!in) throw InputError::in_file(file.string(), 0, "file-unreadable", "cannot open");
   return in;
 }
 
@@ -28,22 +28,10 @@ bool next_content_line(std::istream& in, std::string& line, std::size_t& line_nu
   return false;
 }
 
-std::vector<std::string_view> split_whitespace(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
-    const std::size_t start = i;
-    while (i < line.size() && line[i] != ' ' && line[i] != '\t') ++i;
-    if (i > start) out.push_back(line.substr(start, i - start));
-  }
-  return out;
-}
-
 float parse_coordinate(const std::filesystem::path& file, std::size_t line, std::string_view text) {
   float v = 0;
   if (!parse_number(text, v) || !std::isfinite(v))
-    throw DataFileError(file.string(), line, "bad-coordinate", "'" + std::string(text) + "'");
+    throw InputError::in_file(file.string(), line, "bad-coordinate", "'" + std::string(text) + "'");
   return v;
 }
 

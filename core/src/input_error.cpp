@@ -1,5 +1,7 @@
 #include "fapcast/core/input_error.hpp"
 
+#include <utility>
+
 namespace fapcast {
 namespace {
 std::string format(const InputLocation& at, const std::string& rule, const std::string& detail) {
@@ -15,5 +17,10 @@ std::string format(const InputLocation& at, const std::string& rule, const std::
 InputError::InputError(InputLocation where, std::string rule, const std::string& detail)
     : std::runtime_error(format(where, rule, detail)), where_(std::move(where)),
       rule_(std::move(rule)) {}
+
+InputError InputError::in_file(std::string file, std::uint64_t line, std::string rule, const std::string& detail) {
+  return InputError({std::move(file), line == 0 ? std::nullopt : std::optional<std::uint64_t>(line), std::nullopt},
+                    std::move(rule), detail);
+}
 
 }  // namespace fapcast

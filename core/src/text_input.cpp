@@ -4,7 +4,7 @@
 #include <cmath>
 #include <system_error>
 
-namespace fapcast::detail {
+namespace fapcast {
 namespace {
 
 void append_utf8(std::string& out, char32_t c) {
@@ -190,4 +190,4 @@ std::string excerpt(std::string_view text) {
   return std::string(text.substr(0, 40)) + "...";
 }
 
-}  // namespace fapcast::detail
+}  // namespace fapcast

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "fapcast/core/data_file.hpp"
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 namespace fapcast {
 namespace {
@@ -32,7 +32,7 @@ std::vector<TsvRow> read_tsv(const std::filesystem::path& file, std::size_t colu
   while (next_content_line(in, line, number)) {
     TsvRow row{number, split_tabs(line)};
     if (row.fields.size() != columns)
-      throw DataFileError(file.string(), number, "column-count",
+      throw InputError::in_file(file.string(), number, "column-count",
                           "expected " + std::to_string(columns) + " tab-separated fields, got " +
                               std::to_string(row.fields.size()));
     rows.push_back(std::move(row));
@@ -45,7 +45,7 @@ float tsv_float(const std::filesystem::path& file, const TsvRow& row, std::size_
   float value = 0;
   const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (err != std::errc{} || end != text.data() + text.size() || !std::isfinite(value))
-    throw DataFileError(file.string(), row.line, "bad-number",
+    throw InputError::in_file(file.string(), row.line, "bad-number",
                         "column " + std::to_string(column + 1) + ": '" + text + "'");
   return value;
 }
@@ -56,10 +56,10 @@ long long tsv_integer(const std::filesystem::path& file, const TsvRow& row, std:
   long long value = 0;
   const auto [end, err] = std::from_chars(text.data(), text.data() + text.size(), value);
   if (err != std::errc{} || end != text.data() + text.size())
-    throw DataFileError(file.string(), row.line, "bad-integer",
+    throw InputError::in_file(file.string(), row.line, "bad-integer",
                         "column " + std::to_string(column + 1) + ": '" + text + "'");
   if (value < low || value > high)
-    throw DataFileError(file.string(), row.line, "out-of-range",
+    throw InputError::in_file(file.string(), row.line, "out-of-range",
                         "column " + std::to_string(column + 1) + ": " + text + " not in [" +
                             std::to_string(low) + ", " + std::to_string(high) + "]");
   return value;

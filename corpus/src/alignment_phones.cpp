@@ -43,7 +43,7 @@ const LabelTier* phone_tier(const Alignment& alignment) {
   return first;
 }
 
-std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, std::int64_t sample_rate_hz,
+std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, SampleRate sample_rate,
                                          const std::string& source) {
   std::vector<TimedPhone> out;
   bool previous_closure = false;
@@ -51,13 +51,19 @@ std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, std::int64_t sam
     const Interval& in = tier.intervals[i];
     const std::string where = source + ": tier '" + tier.name + "' interval " + std::to_string(i + 1);
     const TimitPhone p = parse_label(in.label, where);
-    const std::int64_t start = to_sample(in.start_s, sample_rate_hz);
-    const std::int64_t end = to_sample(in.end_s, sample_rate_hz);
+    const auto sample = [&](double seconds) {
+      try {
+        return to_sample(seconds, sample_rate);
+      } catch (const std::out_of_range& e) {
+        throw InputError({where, {}, {}}, "time-off-sample-grid", e.what());
+      }
+    };
+    const std::int64_t start = sample(in.start_s);
+    const std::int64_t end = sample(in.end_s);
     if (previous_closure && !p.closure && out.back().phone == p.phone && out.back().end_sample == start) {
-      out.back().end_sample = end;  // closure + release: one phone, released here
-      out.back().event_sample = out.back().release_sample = start;
+      out.back().end_sample = end;  // closure + release: one phone
     } else {
-      out.push_back({p.phone, start, end, start, start, kNoWord, ""});
+      out.push_back({p.phone, start, end});
     }
     previous_closure = p.closure;
   }

@@ -373,8 +373,8 @@ C3dFile read_c3d(std::string_view bytes, const std::string& source) {
               "POINT:UNITS \"" + out.units + "\" is not mm, cm, m or in");
   }
 
-  MarkerSet& m = out.markers;
-  m = MarkerSet::zeros(static_cast<Eigen::Index>(frames), static_cast<Eigen::Index>(points));
+  MarkerFrames<Millimetres>& m = out.markers;
+  m = MarkerFrames<Millimetres>::missing(static_cast<Eigen::Index>(points), static_cast<Eigen::Index>(frames));
   m.frame_rate_hz = rate_hz;
   m.first_frame = static_cast<std::int64_t>(first);
   std::size_t labelled = 0;
@@ -410,25 +410,22 @@ C3dFile read_c3d(std::string_view bytes, const std::string& source) {
         for (int k = 0; k < 3; ++k) xyz[k] = v[k];
         missing = v[3] < 0;
       }
-      if (missing) {
-        m.missing(fi, pi) = true;
-        continue;
-      }
+      if (missing) continue;  // stays NaN
       for (int k = 0; k < 3; ++k) {
         if (!std::isfinite(xyz[k])) {
           file.fail(data_at + f * frame_bytes + p * 4 * word, "c3d-bad-sample",
                     "frame " + std::to_string(f + first) + " point " + std::to_string(p + 1) +
                         " is not finite");
         }
-        m.positions_mm(fi, 3 * pi + k) = xyz[k] * to_mm;
+        m.positions(3 * pi + k, fi) = xyz[k] * to_mm;
       }
     }
   }
   return out;
 }
 
-std::string write_c3d(const MarkerSet& markers, const std::vector<C3dTextParameter>& extra) {
-  if (!markers.consistent()) refuse("positions, mask and labels disagree in shape");
+std::string write_c3d(const MarkerFrames<Millimetres>& markers, const std::vector<C3dTextParameter>& extra) {
+  if (!markers.consistent()) refuse("positions and labels disagree in shape");
   const auto frames = static_cast<std::uint64_t>(markers.frame_count());
   const auto points = static_cast<std::uint64_t>(markers.marker_count());
   if (frames > 65535 || points > 65535) refuse("more than 65535 frames or markers");
@@ -444,8 +441,8 @@ std::string write_c3d(const MarkerSet& markers, const std::vector<C3dTextParamet
   // Float storage: every present coordinate must fit a float32 (an integer-storage file read
   // with a huge POINT:SCALE may not).
   for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
-    for (Eigen::Index c = 0; c < markers.positions_mm.cols(); ++c) {
-      if (!markers.missing(f, c / 3) && !std::isfinite(static_cast<float>(markers.positions_mm(f, c)))) {
+    for (Eigen::Index c = 0; c < markers.positions.rows(); ++c) {
+      if (markers.present(c / 3, f) && !std::isfinite(static_cast<float>(markers.positions(c, f)))) {
         refuse("frame " + std::to_string(f) + " has a coordinate that does not fit a float");
       }
     }
@@ -523,9 +520,9 @@ std::string write_c3d(const MarkerSet& markers, const std::vector<C3dTextParamet
   // Points: X Y Z residual as float32; a missing sample is 0 0 0 with residual -1.
   for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
     for (Eigen::Index p = 0; p < markers.marker_count(); ++p) {
-      const bool missing = markers.missing(f, p);
+      const bool missing = !markers.present(p, f);
       for (int k = 0; k < 3; ++k) {
-        put_f32(out, missing ? 0.0F : static_cast<float>(markers.positions_mm(f, 3 * p + k)));
+        put_f32(out, missing ? 0.0F : static_cast<float>(markers.positions(3 * p + k, f)));
       }
       put_f32(out, missing ? -1.0F : 0.0F);
     }

@@ -31,7 +31,7 @@ std::optional<std::string> order_problem(const std::vector<Interval>& segments, 
 
 // Seconds always spelled with a '.' or exponent, so that the reader cannot take them for HTK.
 std::string seconds_spelling(double s) {
-  std::string text = detail::shortest_decimal(s);
+  std::string text = shortest_decimal(s);
   if (text.find_first_of(".e") == std::string::npos) text += ".0";
   return text;
 }
@@ -39,16 +39,16 @@ std::string seconds_spelling(double s) {
 }  // namespace
 
 LabFile read_lab(std::string_view bytes, const std::string& source, std::optional<LabTimeUnit> unit) {
-  const std::string text = detail::decode_text(bytes, source, "lab");
-  const std::vector<detail::TextLine> lines = detail::split_lines(text);
+  const std::string text = decode_text(bytes, source, "lab");
+  const std::vector<TextLine> lines = split_lines(text);
   auto fail = [&](std::uint64_t line, const char* rule, const std::string& detail) {
-    detail::fail_at_line(source, line, rule, detail);
+    fail_at_line(source, line, rule, detail);
   };
 
   // First pass: shape of each line, and whether every time is an integer (HTK) or not.
   bool all_integer = true;
-  for (const detail::TextLine& line : lines) {
-    const auto fields = detail::split_whitespace(line.text);
+  for (const TextLine& line : lines) {
+    const auto fields = split_whitespace(line.text);
     if (fields.empty()) continue;
     if (fields[0] == "#!MLF!#") fail(line.number, "lab-mlf", "an HTK master label file, not a .lab");
     if (fields.size() == 1 && fields[0] == "///") {
@@ -63,18 +63,18 @@ LabFile read_lab(std::string_view bytes, const std::string& source, std::optiona
 
   LabFile lab;
   lab.unit = unit.value_or(all_integer ? LabTimeUnit::htk_100ns : LabTimeUnit::seconds);
-  for (const detail::TextLine& line : lines) {
-    const auto fields = detail::split_whitespace(line.text);
+  for (const TextLine& line : lines) {
+    const auto fields = split_whitespace(line.text);
     if (fields.empty()) continue;
     Interval segment;
     double times[2] = {0, 0};
     for (int k = 0; k < 2; ++k) {
       const std::string_view f = fields[static_cast<std::size_t>(k)];
-      const bool ok = lab.unit == LabTimeUnit::htk_100ns ? is_integer_spelling(f) && detail::parse_finite(f, times[k])
-                                                         : detail::parse_finite(f, times[k]);
+      const bool ok = lab.unit == LabTimeUnit::htk_100ns ? is_integer_spelling(f) && parse_finite(f, times[k])
+                                                         : parse_finite(f, times[k]);
       if (!ok) {
         fail(line.number, "lab-bad-time",
-             "\"" + detail::excerpt(f) + "\" is not a time in " +
+             "\"" + excerpt(f) + "\" is not a time in " +
                  (lab.unit == LabTimeUnit::htk_100ns ? "100 ns units" : "seconds"));
       }
       if (lab.unit == LabTimeUnit::htk_100ns) times[k] /= kHtkUnitsPerSecond;
@@ -85,8 +85,8 @@ LabFile read_lab(std::string_view bytes, const std::string& source, std::optiona
     std::optional<double> score;
     if (fields.size() == 4) {
       double s = 0;
-      if (!detail::parse_finite(fields[3], s)) {
-        fail(line.number, "lab-bad-score", "\"" + detail::excerpt(fields[3]) + "\" is not a number");
+      if (!parse_finite(fields[3], s)) {
+        fail(line.number, "lab-bad-score", "\"" + excerpt(fields[3]) + "\" is not a number");
       }
       score = s;
     }
@@ -116,7 +116,7 @@ std::string write_lab(const LabFile& lab) {
       out += seconds_spelling(s.start_s) + " " + seconds_spelling(s.end_s);
     }
     out += " " + s.label;
-    if (!lab.scores.empty() && lab.scores[i]) out += " " + detail::shortest_decimal(*lab.scores[i]);
+    if (!lab.scores.empty() && lab.scores[i]) out += " " + shortest_decimal(*lab.scores[i]);
     out += "\n";
   }
   return out;

@@ -3,6 +3,8 @@
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/core/text_input.hpp"
 
+#include <cmath>
+
 namespace fapcast::detail {
 
 MarkerRows::MarkerRows(std::size_t markers, double mm_per_unit, const std::string& source,
@@ -19,8 +21,7 @@ void MarkerRows::add(std::span<const std::string_view> cells, std::uint64_t line
       empty += xyz[k].empty();
     }
     if (empty == 3) {
-      values_.insert(values_.end(), 3, 0.0);
-      missing_.push_back(true);
+      values_.insert(values_.end(), 3, std::nan(""));
       continue;
     }
     if (empty != 0) {
@@ -35,37 +36,33 @@ void MarkerRows::add(std::span<const std::string_view> cells, std::uint64_t line
       }
       values_.push_back(v * mm_per_unit_);
     }
-    missing_.push_back(false);
   }
   ++frames_;
 }
 
-MarkerSet MarkerRows::finish(std::vector<std::string> labels, double frame_rate_hz,
-                             std::int64_t first_frame) const {
-  MarkerSet set = MarkerSet::zeros(static_cast<Eigen::Index>(frames_), static_cast<Eigen::Index>(markers_));
-  set.labels = std::move(labels);
-  set.frame_rate_hz = frame_rate_hz;
-  set.first_frame = first_frame;
-  for (std::size_t f = 0; f < frames_; ++f) {
-    for (std::size_t m = 0; m < markers_; ++m) {
-      const auto fi = static_cast<Eigen::Index>(f);
-      const auto mi = static_cast<Eigen::Index>(m);
-      set.missing(fi, mi) = missing_[f * markers_ + m];
-      for (std::size_t k = 0; k < 3; ++k) {
-        set.positions_mm(fi, 3 * mi + static_cast<Eigen::Index>(k)) = values_[(f * markers_ + m) * 3 + k];
-      }
-    }
-  }
-  return set;
+MarkerFrames<Millimetres> MarkerRows::finish(std::vector<std::string> labels, double frame_rate_hz,
+                                             std::int64_t first_frame) const {
+  MarkerFrames<Millimetres> out;
+  out.labels = std::move(labels);
+  out.frame_rate_hz = frame_rate_hz;
+  out.first_frame = first_frame;
+  // values_ holds frame after frame of x y z per marker: the 3M x F layout, column by column.
+  out.positions = Eigen::Map<const Eigen::MatrixXd>(values_.data(), static_cast<Eigen::Index>(3 * markers_),
+                                                    static_cast<Eigen::Index>(frames_));
+  return out;
 }
 
-std::string marker_cells(const MarkerSet& markers, Eigen::Index frame, char separator) {
+std::string marker_row_lines(const MarkerFrames<Millimetres>& markers, char separator) {
   std::string out;
-  for (Eigen::Index m = 0; m < markers.marker_count(); ++m) {
-    for (int k = 0; k < 3; ++k) {
-      if (m + k > 0) out += separator;
-      if (!markers.missing(frame, m)) out += shortest_decimal(markers.positions_mm(frame, 3 * m + k));
-    }
+  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
+    out += std::to_string(markers.first_frame + f) + separator +
+           shortest_decimal(static_cast<double>(f) / markers.frame_rate_hz);
+    for (Eigen::Index m = 0; m < markers.marker_count(); ++m)
+      for (int k = 0; k < 3; ++k) {
+        out += separator;
+        if (markers.present(m, f)) out += shortest_decimal(markers.positions(3 * m + k, f));
+      }
+    out += "\n";
   }
   return out;
 }

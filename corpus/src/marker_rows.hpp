@@ -1,7 +1,7 @@
 #pragma once
 // Private: the row-per-frame layout that TRC and marker CSV share (three cells per marker, empty
-// cells for a missing sample), read into and written from a MarkerSet.
-#include "fapcast/corpus/marker_set.hpp"
+// cells for a missing sample), read into and written from MarkerFrames<Centimetres> (mm).
+#include "fapcast/corpus/marker_frames.hpp"
 
 #include <span>
 #include <string>
@@ -21,7 +21,7 @@ class MarkerRows {
   std::size_t frames() const { return frames_; }
 
   // The set of the frames added so far.
-  MarkerSet finish(std::vector<std::string> labels, double frame_rate_hz, std::int64_t first_frame) const;
+  MarkerFrames<Millimetres> finish(std::vector<std::string> labels, double frame_rate_hz, std::int64_t first_frame) const;
 
  private:
   std::size_t markers_;
@@ -29,11 +29,11 @@ class MarkerRows {
   const std::string& source_;
   std::string format_;
   std::size_t frames_ = 0;
-  std::vector<double> values_;  // grows one frame at a time: never sized from a header count
-  std::vector<bool> missing_;
+  std::vector<double> values_;  // grows one frame at a time: never sized from a header count; NaN = missing
 };
 
-// The 3M cells of frame `frame` joined by `separator`: shortest decimals, empty where missing.
-std::string marker_cells(const MarkerSet& markers, Eigen::Index frame, char separator);
+// One line per frame: its number (first_frame + k), its time in seconds and its 3M cells,
+// joined by `separator`: shortest decimals, empty cells where a sample is missing.
+std::string marker_row_lines(const MarkerFrames<Millimetres>& markers, char separator);
 
 }  // namespace fapcast::detail

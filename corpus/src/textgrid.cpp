@@ -9,7 +9,6 @@
 namespace fapcast {
 namespace {
 
-using detail::excerpt;
 
 // A problem with one item of a tier, shared by the reader (which adds the line) and the writer.
 struct Problem {
@@ -19,8 +18,8 @@ struct Problem {
 
 std::optional<Problem> check_span(double start_s, double end_s, const std::string& what) {
   if (!(start_s < end_s)) {
-    return Problem{"textgrid-time-range", what + " has xmin " + detail::shortest_decimal(start_s) +
-                                              " not below xmax " + detail::shortest_decimal(end_s)};
+    return Problem{"textgrid-time-range", what + " has xmin " + shortest_decimal(start_s) +
+                                              " not below xmax " + shortest_decimal(end_s)};
   }
   return std::nullopt;
 }
@@ -29,8 +28,8 @@ std::optional<Problem> check_tier_span(const Alignment& grid, const LabelTier& t
   if (auto p = check_span(tier.start_s, tier.end_s, "tier \"" + tier.name + "\"")) return p;
   if (tier.start_s < grid.start_s || tier.end_s > grid.end_s) {
     return Problem{"textgrid-time-range", "tier \"" + tier.name + "\" lies outside the TextGrid's [" +
-                                              detail::shortest_decimal(grid.start_s) + ", " +
-                                              detail::shortest_decimal(grid.end_s) + "]"};
+                                              shortest_decimal(grid.start_s) + ", " +
+                                              shortest_decimal(grid.end_s) + "]"};
   }
   return std::nullopt;
 }
@@ -42,17 +41,17 @@ std::optional<Problem> check_interval(const LabelTier& tier, std::size_t i) {
   const std::string what = "interval " + std::to_string(i + 1) + " of tier \"" + tier.name + "\"";
   if (!(v.start_s < v.end_s)) {
     return Problem{"textgrid-interval-order", what + " is empty or reversed (" +
-                                                  detail::shortest_decimal(v.start_s) + " to " +
-                                                  detail::shortest_decimal(v.end_s) + ")"};
+                                                  shortest_decimal(v.start_s) + " to " +
+                                                  shortest_decimal(v.end_s) + ")"};
   }
   if (v.start_s < tier.start_s || v.end_s > tier.end_s) {
     return Problem{"textgrid-interval-order", what + " lies outside its tier"};
   }
   if (i > 0 && v.start_s < tier.intervals[i - 1].end_s) {
     return Problem{"textgrid-interval-order",
-                   what + " starts at " + detail::shortest_decimal(v.start_s) +
+                   what + " starts at " + shortest_decimal(v.start_s) +
                        ", before the previous one ends (" +
-                       detail::shortest_decimal(tier.intervals[i - 1].end_s) + ")"};
+                       shortest_decimal(tier.intervals[i - 1].end_s) + ")"};
   }
   return std::nullopt;
 }
@@ -278,7 +277,7 @@ class Parser {
 
   double to_double(const Token& t) {
     double v = 0;
-    if (!detail::parse_finite(t.text, v)) {
+    if (!parse_finite(t.text, v)) {
       fail(t.line, "textgrid-bad-number", "\"" + excerpt(t.text) + "\" is not a finite number");
     }
     return v;
@@ -289,7 +288,7 @@ class Parser {
   std::int64_t count(std::string_view key, const std::string& what) {
     const Token t = expect(TokenKind::number, key, what);
     std::int64_t n = 0;
-    if (!detail::parse_count(t.text, n)) {
+    if (!parse_count(t.text, n)) {
       fail(t.line, "textgrid-bad-count", what + " \"" + excerpt(t.text) + "\" is not a count");
     }
     return n;  // never used to allocate: items are appended as they are read
@@ -333,7 +332,7 @@ class Writer {
   void heading(int indent, const std::string& text) {
     if (long_) out_.append(static_cast<std::size_t>(indent) * 4, ' ').append(text).append("\n");
   }
-  void number(int indent, std::string_view key, double v) { line(indent, key, detail::shortest_decimal(v)); }
+  void number(int indent, std::string_view key, double v) { line(indent, key, shortest_decimal(v)); }
   void flag(const char* value) {
     out_ += long_ ? "tiers? " : "";
     out_ += value;
@@ -353,7 +352,7 @@ class Writer {
 }  // namespace
 
 Alignment read_textgrid(std::string_view bytes, const std::string& source) {
-  const std::string text = detail::decode_text(bytes, source, "textgrid");
+  const std::string text = decode_text(bytes, source, "textgrid");
   return Parser(text, source).parse();
 }
 

@@ -13,11 +13,11 @@ constexpr std::size_t kHeaderLines = 5;  // PathFileType, keys, values, names, X
 
 }  // namespace
 
-MarkerSet read_trc(std::string_view bytes, const std::string& source) {
-  const std::string text = detail::decode_text(bytes, source, "trc");
-  const std::vector<detail::TextLine> lines = detail::split_lines(text);
+MarkerFrames<Millimetres> read_trc(std::string_view bytes, const std::string& source) {
+  const std::string text = decode_text(bytes, source, "trc");
+  const std::vector<TextLine> lines = split_lines(text);
   auto fail = [&](std::uint64_t line, const char* rule, const std::string& detail) {
-    detail::fail_at_line(source, line, rule, detail);
+    fail_at_line(source, line, rule, detail);
   };
   if (lines.size() < kHeaderLines) {
     fail(lines.size() + 1, "trc-truncated", "a TRC file has 5 header lines");
@@ -25,38 +25,38 @@ MarkerSet read_trc(std::string_view bytes, const std::string& source) {
   if (!lines[0].text.starts_with("PathFileType")) {
     fail(1, "trc-header", "the first line does not start with PathFileType");
   }
-  const auto keys = detail::split_fields(lines[1].text, '\t');
-  const auto values = detail::split_fields(lines[2].text, '\t');
+  const auto keys = split_fields(lines[1].text, '\t');
+  const auto values = split_fields(lines[2].text, '\t');
   auto value_of = [&](std::string_view key) -> std::string_view {
     for (std::size_t i = 0; i < keys.size(); ++i) {
-      if (detail::trim(keys[i]) == key) {
+      if (trim(keys[i]) == key) {
         if (i >= values.size()) fail(3, "trc-header", std::string(key) + " has no value");
-        return detail::trim(values[i]);
+        return trim(values[i]);
       }
     }
-    detail::fail_at_line(source, 2, "trc-header", "the header has no " + std::string(key));
+    fail_at_line(source, 2, "trc-header", "the header has no " + std::string(key));
   };
   double rate_hz = 0;
-  if (!detail::parse_finite(value_of("DataRate"), rate_hz) || rate_hz <= 0) {
-    fail(3, "trc-bad-rate", "DataRate \"" + detail::excerpt(value_of("DataRate")) + "\" is not a positive number");
+  if (!parse_finite(value_of("DataRate"), rate_hz) || rate_hz <= 0) {
+    fail(3, "trc-bad-rate", "DataRate \"" + excerpt(value_of("DataRate")) + "\" is not a positive number");
   }
   std::int64_t frame_count = 0;
   std::int64_t marker_count = 0;
-  if (!detail::parse_count(value_of("NumFrames"), frame_count) ||
-      !detail::parse_count(value_of("NumMarkers"), marker_count)) {
+  if (!parse_count(value_of("NumFrames"), frame_count) ||
+      !parse_count(value_of("NumMarkers"), marker_count)) {
     fail(3, "trc-header", "NumFrames and NumMarkers must be counts");
   }
   const std::string units(value_of("Units"));
   const std::optional<double> mm = millimetres_per_unit(units);
-  if (!mm) fail(3, "trc-units", "Units \"" + detail::excerpt(units) + "\" is not mm, cm, m or in");
+  if (!mm) fail(3, "trc-units", "Units \"" + excerpt(units) + "\" is not mm, cm, m or in");
 
   // Names: every non-empty cell after Frame# and Time (each marker spans three columns).
-  const auto name_cells = detail::split_fields(lines[3].text, '\t');
+  const auto name_cells = split_fields(lines[3].text, '\t');
   std::vector<std::string> labels;
   for (std::size_t i = 2; i < name_cells.size(); ++i) {
-    const std::string_view name = detail::trim(name_cells[i]);
+    const std::string_view name = trim(name_cells[i]);
     if (name.empty()) continue;
-    if ((i - 2) % 3 != 0) fail(4, "trc-marker-names", "marker name \"" + detail::excerpt(name) + "\" is not in column 3 + 3k");
+    if ((i - 2) % 3 != 0) fail(4, "trc-marker-names", "marker name \"" + excerpt(name) + "\" is not in column 3 + 3k");
     labels.emplace_back(name);
   }
   if (static_cast<std::int64_t>(labels.size()) != marker_count) {
@@ -68,11 +68,11 @@ MarkerSet read_trc(std::string_view bytes, const std::string& source) {
   std::int64_t first_frame = 1;
   std::uint64_t implied_cells = 0;
   for (std::size_t i = kHeaderLines; i < lines.size(); ++i) {
-    if (detail::trim(lines[i].text).empty()) continue;  // Vicon leaves a blank line
-    const auto cells = detail::split_fields(lines[i].text, '\t');
+    if (trim(lines[i].text).empty()) continue;  // Vicon leaves a blank line
+    const auto cells = split_fields(lines[i].text, '\t');
     std::int64_t frame = 0;
-    if (!detail::parse_count(detail::trim(cells[0]), frame)) {
-      fail(lines[i].number, "trc-frame-number", "\"" + detail::excerpt(cells[0]) + "\" is not a frame number");
+    if (!parse_count(trim(cells[0]), frame)) {
+      fail(lines[i].number, "trc-frame-number", "\"" + excerpt(cells[0]) + "\" is not a frame number");
     }
     if (rows.frames() == 0) first_frame = frame;
     if (frame != first_frame + static_cast<std::int64_t>(rows.frames())) {
@@ -80,7 +80,7 @@ MarkerSet read_trc(std::string_view bytes, const std::string& source) {
     }
     const std::size_t coordinates = cells.size() < 2 ? 0 : cells.size() - 2;
     for (std::size_t c = 3 * labels.size(); c < coordinates; ++c) {
-      if (!detail::trim(cells[2 + c]).empty()) {
+      if (!trim(cells[2 + c]).empty()) {
         fail(lines[i].number, "trc-fields", "more coordinates than 3 x NumMarkers");
       }
     }
@@ -99,14 +99,14 @@ MarkerSet read_trc(std::string_view bytes, const std::string& source) {
   return rows.finish(std::move(labels), rate_hz, first_frame);
 }
 
-std::string write_trc(const MarkerSet& markers, std::string_view file_name) {
+std::string write_trc(const MarkerFrames<Millimetres>& markers, std::string_view file_name) {
   if (!markers.consistent()) throw std::invalid_argument("write_trc: inconsistent marker set");
   for (const std::string& label : markers.labels) {
     if (label.empty() || label.find_first_of("\t\r\n") != std::string::npos) {
       throw std::invalid_argument("write_trc: label \"" + label + "\" is empty or holds a tab or line break");
     }
   }
-  const std::string rate = detail::shortest_decimal(markers.frame_rate_hz);
+  const std::string rate = shortest_decimal(markers.frame_rate_hz);
   const std::string frames = std::to_string(markers.frame_count());
   std::string out = "PathFileType\t4\t(X/Y/Z)\t" + std::string(file_name) + "\n";
   out += "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n";
@@ -119,14 +119,7 @@ std::string write_trc(const MarkerSet& markers, std::string_view file_name) {
     const std::string n = std::to_string(m);
     out += "\tX" + n + "\tY" + n + "\tZ" + n;
   }
-  out += "\n\n";
-  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
-    out += std::to_string(markers.first_frame + f) + "\t" +
-           detail::shortest_decimal(static_cast<double>(f) / markers.frame_rate_hz);
-    if (markers.marker_count() > 0) out += "\t" + detail::marker_cells(markers, f, '\t');
-    out += "\n";
-  }
-  return out;
+  return out + "\n\n" + detail::marker_row_lines(markers, '\t');
 }
 
 }  // namespace fapcast

@@ -78,9 +78,9 @@ DivisemeSelection select_divisemes(const PhoneGraph& graph, std::span<const Targ
   return selection;
 }
 
-Eigen::MatrixXf render_divisemes(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+Eigen::MatrixXf concatenate_divisemes(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
                                  const DivisemeSelection& selection,
-                                 std::span<const TargetPhone> targets, const RenderOptions& options) {
+                                 std::span<const TargetPhone> targets, const ConcatenationOptions& options) {
   check_targets(targets);
   const std::size_t T = targets.size();
   if (selection.divisemes.size() != T - 1)
@@ -97,7 +97,7 @@ Eigen::MatrixXf render_divisemes(const PhoneGraph& graph, const Eigen::MatrixXf&
   }
 
   // The half-phone graph: state j becomes 2j (first half) and 2j + 1 (second half), in the same
-  // recording, so render_units' warp of a half reads the recording on either side of the cut.
+  // recording, so concatenate_units' warp of a half reads the recording on either side of the cut.
   std::vector<PhoneState> half_states;
   half_states.reserve(2 * graph.size());
   for (const auto& s : graph.states()) {
@@ -138,9 +138,9 @@ Eigen::MatrixXf render_divisemes(const PhoneGraph& graph, const Eigen::MatrixXf&
   result.cost = static_cast<double>(result.units.size());
   // A diviseme's cuts already lie in the middle of phones (half-states here): its units take over
   // at their own first half-state, never half a half-phone earlier.
-  RenderOptions at_cuts = options;
+  ConcatenationOptions at_cuts = options;
   at_cuts.join_mid_phone = false;
-  return render_units(half_graph, pca_frames, result, half_targets, at_cuts);
+  return concatenate_units(half_graph, pca_frames, result, half_targets, at_cuts);
 }
 
 }  // namespace fapcast

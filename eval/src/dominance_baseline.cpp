@@ -1,5 +1,7 @@
 #include "fapcast/eval/dominance_baseline.hpp"
 
+#include "fapcast/math/dominance.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -52,22 +54,22 @@ Eigen::MatrixXf dominance_interpolation(const VisemeTargets& targets,
   const std::int64_t origin = phones.front().first_frame;
   const std::int64_t frames = phones.back().end_frame - origin;
   const double fps = options.frame_rate_hz;
-  Eigen::MatrixXf out(static_cast<Eigen::Index>(frames), targets.coefficients.cols());
-  Eigen::RowVectorXd numerator(targets.coefficients.cols());
+  const Eigen::Index k = targets.coefficients.cols();
+  Eigen::MatrixXf out(static_cast<Eigen::Index>(frames), k);
+  DominanceBlend blend(static_cast<std::size_t>(k));
   for (std::int64_t n = 0; n < frames; ++n) {
     const double t_s = static_cast<double>(origin + n) / fps;
-    numerator.setZero();
-    double denominator = 0;
+    blend.clear();
     for (const auto& p : phones) {
       const double centre_s = 0.5 * static_cast<double>(p.first_frame + p.end_frame) / fps;
       const double d = baseline_dominance(p.viseme, options).at(t_s - centre_s);
-      numerator += d * targets.coefficients.row(static_cast<Eigen::Index>(p.viseme)).cast<double>();
-      denominator += d;
+      const auto target = targets.coefficients.row(static_cast<Eigen::Index>(p.viseme));
+      for (Eigen::Index c = 0; c < k; ++c) blend.add(static_cast<std::size_t>(c), d, target(c));
     }
     // exp() underflows only for a frame ~50 s from every phone, which cannot happen inside the
-    // span; guard anyway rather than divide by zero.
-    out.row(static_cast<Eigen::Index>(n)) =
-        (denominator > 0 ? numerator / denominator : numerator).cast<float>();
+    // span; the blend is 0 there rather than a division by zero.
+    for (Eigen::Index c = 0; c < k; ++c)
+      out(static_cast<Eigen::Index>(n), c) = static_cast<float>(blend.value(static_cast<std::size_t>(c)));
   }
   return out;
 }

@@ -33,7 +33,7 @@ LipPoints points_from(const std::array<Eigen::Vector3d, 6>& p) {
 
 }  // namespace
 
-LipCurves lip_curves(const MarkerFrames& take) {
+LipCurves lip_curves(const MarkerFrames<Centimetres>& take) {
   std::array<Eigen::Index, 6> rows{};
   for (std::size_t i = 0; i < kLipMarkerLabels.size(); ++i) {
     const auto it = std::find(take.labels.begin(), take.labels.end(), kLipMarkerLabels[i]);

@@ -41,7 +41,7 @@ std::vector<HeldOutUtterance> record_held_out(const FaceModel& actor, std::uint6
     HeldOutUtterance u;
     u.id = id;
     u.text = item.text;
-    u.targets = place_on_voice_grid(take.speech.phones, take.speech.audio.sample_rate_hz,
+    u.targets = place_on_voice_grid(take.speech.phones, take.speech.audio.sample_rate,
                                     static_cast<std::int64_t>(take.speech.audio.samples.size()), id)
                     .phones;
     u.speech = std::move(take.speech);
@@ -52,12 +52,12 @@ std::vector<HeldOutUtterance> record_held_out(const FaceModel& actor, std::uint6
 }
 
 NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
-                            RenderOptions options, DivisemeChoiceRule rule) {
+                            ConcatenationOptions options, DivisemeChoiceRule rule) {
   return {rule == DivisemeChoiceRule::kFirst ? "diviseme-first" : "diviseme",
           [&graph, &pca_frames, options, rule](const HeldOutUtterance& u) {
             const auto targets = covered(graph, u.targets);
             const auto selection = select_divisemes(graph, targets, rule);
-            return SystemOutput{render_divisemes(graph, pca_frames, selection, targets, options),
+            return SystemOutput{concatenate_divisemes(graph, pca_frames, selection, targets, options),
                                 selection.divisemes.size() + selection.unrecorded};
           }};
 }

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "fapcast/core/data_file.hpp"
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 namespace fapcast {
 namespace {
@@ -22,18 +22,18 @@ SparseDelta read_sparse_delta(const std::filesystem::path& file, std::int32_t ve
   while (next_content_line(in, text, line)) {
     const auto t = split_whitespace(text);
     if (t.size() != 4)
-      throw DataFileError(file.string(), line, "delta-arity",
+      throw InputError::in_file(file.string(), line, "delta-arity",
                           "expected 'vertex_index dx dy dz', got " + std::to_string(t.size()) +
                               " fields");
     std::int64_t index = 0;
     if (!parse_number(t[0], index))
-      throw DataFileError(file.string(), line, "bad-vertex-index", "'" + std::string(t[0]) + "'");
+      throw InputError::in_file(file.string(), line, "bad-vertex-index", "'" + std::string(t[0]) + "'");
     if (index < 0 || index >= vertex_count)
-      throw DataFileError(file.string(), line, "vertex-index-out-of-range",
+      throw InputError::in_file(file.string(), line, "vertex-index-out-of-range",
                           std::to_string(index) + " not in [0, " + std::to_string(vertex_count) +
                               ")");
     if (!delta.vertices.empty() && index <= delta.vertices.back())
-      throw DataFileError(file.string(), line, "vertex-index-not-increasing",
+      throw InputError::in_file(file.string(), line, "vertex-index-not-increasing",
                           std::to_string(index) + " after " +
                               std::to_string(delta.vertices.back()));
     delta.vertices.push_back(static_cast<std::int32_t>(index));

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "fapcast/core/data_file.hpp"
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/core/data_root.hpp"
 
 namespace fapcast {
@@ -34,17 +34,17 @@ FaceModel load_ict_face_model(const std::filesystem::path& folder) {
   try {
     in >> json;
   } catch (const nlohmann::json::exception& e) {
-    throw DataFileError(index_file.string(), 0, "bad-json", e.what());
+    throw InputError::in_file(index_file.string(), 0, "bad-json", e.what());
   }
   const auto names = json.find("expressions");
   if (names == json.end() || !names->is_array() || names->empty())
-    throw DataFileError(index_file.string(), 0, "no-expressions",
+    throw InputError::in_file(index_file.string(), 0, "no-expressions",
                         "needs an 'expressions' array of shape names");
   for (const auto& name : *names) {
-    if (!name.is_string()) throw DataFileError(index_file.string(), 0, "bad-expression-name", name.dump());
+    if (!name.is_string()) throw InputError::in_file(index_file.string(), 0, "bad-expression-name", name.dump());
     const auto s = name.get<std::string>();
     if (s.empty() || s.find_first_of("/\\.") != std::string::npos)
-      throw DataFileError(index_file.string(), 0, "bad-expression-name", "'" + s + "'");
+      throw InputError::in_file(index_file.string(), 0, "bad-expression-name", "'" + s + "'");
     model.expression_names.push_back(s);
     model.expressions.push_back(
         read_sparse_delta(folder / "expressions" / (s + ".target"), model.vertex_count()));

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/core/tsv_table.hpp"
 
 namespace fapcast {

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "fapcast/core/data_file.hpp"
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 
 namespace fapcast {
 namespace {
@@ -30,20 +30,20 @@ ObjMesh read_obj_mesh(const std::filesystem::path& file) {
     const auto t = split_whitespace(text);
     if (t[0] == "v") {
       if (t.size() < 4)
-        throw DataFileError(file.string(), line, "vertex-arity", "a v line needs x y z");
+        throw InputError::in_file(file.string(), line, "vertex-arity", "a v line needs x y z");
       if (xyz.size() / 3 >= static_cast<std::size_t>(kMaxVertices))
-        throw DataFileError(file.string(), line, "too-many-vertices",
+        throw InputError::in_file(file.string(), line, "too-many-vertices",
                             "more than " + std::to_string(kMaxVertices));
       for (int k = 1; k <= 3; ++k) xyz.push_back(parse_coordinate(file, line, t[k]));
     } else if (t[0] == "f") {
       if (t.size() < 4 || t.size() - 1 > kMaxPolygonSides)
-        throw DataFileError(file.string(), line, "face-arity",
+        throw InputError::in_file(file.string(), line, "face-arity",
                             std::to_string(t.size() - 1) + " corners (3 to 64 allowed)");
       for (std::size_t k = 1; k < t.size(); ++k) {
         const auto corner = t[k].substr(0, t[k].find('/'));
         std::int64_t index = 0;
         if (!parse_number(corner, index) || index == 0)
-          throw DataFileError(file.string(), line, "bad-face-index", "'" + std::string(t[k]) + "'");
+          throw InputError::in_file(file.string(), line, "bad-face-index", "'" + std::string(t[k]) + "'");
         raw_faces.emplace_back(line, index);
       }
       mesh.faces.face_starts.push_back(static_cast<std::int32_t>(raw_faces.size()));
@@ -51,14 +51,14 @@ ObjMesh read_obj_mesh(const std::filesystem::path& file) {
     // vt, vn, g, o, s, usemtl, mtllib: not needed for geometry.
   }
   const auto n = static_cast<std::int64_t>(xyz.size() / 3);
-  if (n == 0) throw DataFileError(file.string(), 0, "no-vertices", "no v lines");
+  if (n == 0) throw InputError::in_file(file.string(), 0, "no-vertices", "no v lines");
   mesh.vertices = Eigen::Map<const Positions>(xyz.data(), 3, n);
   mesh.faces.face_vertices.reserve(raw_faces.size());
   for (const auto& [face_line, index] : raw_faces) {
     // OBJ: 1-based; negative counts back from the last vertex read (we resolve against all).
     const std::int64_t zero_based = index > 0 ? index - 1 : n + index;
     if (zero_based < 0 || zero_based >= n)
-      throw DataFileError(file.string(), face_line, "face-index-out-of-range",
+      throw InputError::in_file(file.string(), face_line, "face-index-out-of-range",
                           std::to_string(index) + " with " + std::to_string(n) + " vertices");
     mesh.faces.face_vertices.push_back(static_cast<std::int32_t>(zero_based));
   }
@@ -103,7 +103,7 @@ void require_same_topology(const ObjMesh& generic, const std::filesystem::path& 
     detail += " (generic mesh ";
     detail += generic_file.string();
     detail += ")";
-    throw DataFileError(specific_file.string(), 0, "topology-mismatch", detail);
+    throw InputError::in_file(specific_file.string(), 0, "topology-mismatch", detail);
   };
   if (specific.vertices.cols() != generic.vertices.cols())
     mismatch(std::to_string(specific.vertices.cols()) + " vertices, expected " +

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <system_error>
 
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/face/face_adaptation.hpp"
 #include "fapcast/face/facial_expression.hpp"
 #include "fapcast/face/obj_mesh.hpp"
@@ -13,11 +13,11 @@ namespace fapcast {
 std::vector<std::filesystem::path> list_obj_targets(const std::filesystem::path& dir) {
   std::error_code ec;
   if (!std::filesystem::is_directory(dir, ec))
-    throw DataFileError(dir.string(), 0, "no-target-folder", "not a directory");
+    throw InputError::in_file(dir.string(), 0, "no-target-folder", "not a directory");
   std::vector<std::filesystem::path> out;
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     if (entry.is_regular_file() && entry.path().extension() == ".obj") out.push_back(entry.path());
-  if (out.empty()) throw DataFileError(dir.string(), 0, "no-targets", "no .obj file in the folder");
+  if (out.empty()) throw InputError::in_file(dir.string(), 0, "no-targets", "no .obj file in the folder");
   std::sort(out.begin(), out.end());
   return out;
 }

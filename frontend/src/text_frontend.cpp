@@ -126,10 +126,11 @@ std::vector<std::size_t> validate_text(std::string_view text) {
   return offsets;
 }
 
-Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
+Closure find_closure(std::span<const std::int16_t> samples, SampleRate sample_rate,
                      std::int64_t region_begin, std::int64_t event_sample, std::int64_t region_end) {
-  const std::int64_t window = std::max(1, sample_rate_hz / 100);  // 10 ms
-  const std::int64_t hop = std::max(1, sample_rate_hz / 400);     // 2.5 ms
+  const std::int64_t rate = sample_rate.hz;
+  const std::int64_t window = std::max<std::int64_t>(1, rate / 100);  // 10 ms
+  const std::int64_t hop = std::max<std::int64_t>(1, rate / 400);     // 2.5 ms
   const auto size = static_cast<std::int64_t>(samples.size());
   region_begin = std::clamp<std::int64_t>(region_begin, 0, size);
   region_end = std::clamp<std::int64_t>(region_end, region_begin, size);
@@ -146,11 +147,11 @@ Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
   for (std::int64_t c = region_begin; c < event_sample; c += hop) reference = std::max(reference, rms_at(c));
   if (reference < kSilenceRms) {
     // After silence the lips may close at any time; assume a typical 50 ms closure.
-    return {std::max(region_begin, event_sample - sample_rate_hz / 20), event_sample};
+    return {std::max(region_begin, event_sample - rate / 20), event_sample};
   }
   const double threshold = 0.2 * reference;
-  const std::int64_t first = std::max(region_begin, event_sample - sample_rate_hz / 100);
-  const std::int64_t last = std::min(region_end, event_sample + sample_rate_hz / 25);
+  const std::int64_t first = std::max(region_begin, event_sample - rate / 100);
+  const std::int64_t last = std::min(region_end, event_sample + rate / 25);
   std::int64_t anchor = -1;
   for (std::int64_t c = first; c < last; c += hop) {
     if (rms_at(c) < threshold) { anchor = c; break; }
@@ -176,7 +177,7 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
   Collector collector;
   {
     std::lock_guard lock(espeak_mutex());
-    speech.audio.sample_rate_hz = ensure_espeak();
+    speech.audio.sample_rate = SampleRate{ensure_espeak()};
     if (std::all_of(text.begin(), text.end(), [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; })) {
       return speech;
     }
@@ -196,6 +197,11 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
   const auto total = static_cast<std::int64_t>(speech.audio.samples.size());
 
   // Phones from phoneme events; word membership from the word event that precedes them.
+  struct SpokenPhone {
+    TimedPhone timed;
+    PhoneEvent event;
+  };
+  std::vector<SpokenPhone> spoken;
   int word_event = -1;
   std::vector<int> word_of_event;   // per word event: index into speech.words or -1 until used
   std::vector<const RawEvent*> word_events;
@@ -208,7 +214,7 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
     }
     const Phone phone = phone_from_espeak(e.name, "espeak-ng phoneme event");
     const std::int64_t at = std::clamp<std::int64_t>(e.sample, 0, total);
-    if (!speech.phones.empty() && at < speech.phones.back().event_sample) {
+    if (!spoken.empty() && at < spoken.back().event.event_sample) {
       throw std::runtime_error("espeak-ng: phoneme events out of order");
     }
     int word = kNoWord;
@@ -224,38 +230,44 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
       }
       word = word_of_event[word_event];
     }
-    speech.phones.push_back({phone, at, at, at, at, word, e.name});
+    spoken.push_back({{phone, at, at}, {at, at, word, e.name}});
   }
   // Contiguous segments: a leading silence if the first event is late; drop empty segments.
-  if (!speech.phones.empty() && speech.phones.front().start_sample > 0) {
-    speech.phones.insert(speech.phones.begin(), {Phone::SIL, 0, 0, 0, 0, kNoWord, "_"});
+  if (!spoken.empty() && spoken.front().timed.start_sample > 0) {
+    spoken.insert(spoken.begin(), {{Phone::SIL, 0, 0}, {0, 0, kNoWord, "_"}});
   }
-  std::vector<TimedPhone> kept;
-  for (std::size_t i = 0; i < speech.phones.size(); ++i) {
-    TimedPhone p = speech.phones[i];
-    p.end_sample = i + 1 < speech.phones.size() ? speech.phones[i + 1].event_sample : total;
-    if (p.end_sample > p.start_sample) kept.push_back(std::move(p));
+  std::vector<SpokenPhone> kept;
+  for (std::size_t i = 0; i < spoken.size(); ++i) {
+    SpokenPhone p = spoken[i];
+    p.timed.end_sample = i + 1 < spoken.size() ? spoken[i + 1].event.event_sample : total;
+    if (p.timed.end_sample > p.timed.start_sample) kept.push_back(std::move(p));
   }
   // Closures: move the start of each closing phone back to where the audio goes quiet.
   for (std::size_t i = 1; i < kept.size(); ++i) {
-    TimedPhone& p = kept[i];
-    if (!has_closure(p.phone)) continue;
-    TimedPhone& previous = kept[i - 1];
-    const Closure c = find_closure(speech.audio.samples, speech.audio.sample_rate_hz,
-                                   previous.start_sample + 1, p.event_sample, p.end_sample);
-    const std::int64_t onset = std::clamp(c.onset_sample, previous.start_sample + 1, p.end_sample - 1);
-    p.start_sample = onset;
-    p.release_sample = std::max(c.release_sample, onset);
+    SpokenPhone& p = kept[i];
+    if (!has_closure(p.timed.phone)) continue;
+    TimedPhone& previous = kept[i - 1].timed;
+    const Closure c = find_closure(speech.audio.samples, speech.audio.sample_rate,
+                                   previous.start_sample + 1, p.event.event_sample, p.timed.end_sample);
+    const std::int64_t onset = std::clamp(c.onset_sample, previous.start_sample + 1, p.timed.end_sample - 1);
+    p.timed.start_sample = onset;
+    p.event.release_sample = std::max(c.release_sample, onset);
     previous.end_sample = onset;
   }
-  speech.phones = std::move(kept);
+  speech.phones.reserve(kept.size());
+  speech.events.reserve(kept.size());
+  for (SpokenPhone& p : kept) {
+    speech.phones.push_back(p.timed);
+    speech.events.push_back(std::move(p.event));
+  }
   std::vector<bool> seen(speech.words.size(), false);
-  for (const TimedPhone& p : speech.phones) {
-    if (p.word == kNoWord) continue;
-    TimedWord& w = speech.words[static_cast<std::size_t>(p.word)];
-    if (!seen[static_cast<std::size_t>(p.word)]) w.start_sample = p.start_sample;
-    seen[static_cast<std::size_t>(p.word)] = true;
-    w.end_sample = p.end_sample;
+  for (std::size_t i = 0; i < speech.phones.size(); ++i) {
+    const int word = speech.events[i].word;
+    if (word == kNoWord) continue;
+    TimedWord& w = speech.words[static_cast<std::size_t>(word)];
+    if (!seen[static_cast<std::size_t>(word)]) w.start_sample = speech.phones[i].start_sample;
+    seen[static_cast<std::size_t>(word)] = true;
+    w.end_sample = speech.phones[i].end_sample;
   }
   return speech;
 }

@@ -29,4 +29,6 @@ StressedPhone parse_arpabet(std::string_view symbol, std::string_view source) {
                               std::string(symbol) + "'");
 }
 
+std::ostream& operator<<(std::ostream& out, Phone p) { return out << arpabet(p); }
+
 }  // namespace fapcast

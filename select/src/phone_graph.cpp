@@ -29,7 +29,7 @@ void bucket(std::size_t n, std::size_t buckets, Key key, std::vector<std::uint32
 
 }  // namespace
 
-PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features)
+PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JoinFeatures features)
     : states_(std::move(states)), features_(std::move(features)) {
   for (std::size_t j = 0; j < states_.size(); ++j) {
     if (index(states_[j].viseme) >= kVisemeClassCount)
@@ -43,11 +43,11 @@ PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features
   const auto rows = static_cast<std::size_t>(features_.entry.rows());
   if (rows != 0 && (rows != states_.size() || features_.exit.rows() != features_.entry.rows() ||
                     features_.exit.cols() != features_.entry.cols() ||
-                    features_.entry.cols() % kJunctionLanes != 0))
-    throw std::invalid_argument("phone graph: junction features have " + std::to_string(rows) + " rows of " +
+                    features_.entry.cols() % kJoinLanes != 0))
+    throw std::invalid_argument("phone graph: join features have " + std::to_string(rows) + " rows of " +
                                 std::to_string(features_.entry.cols()) + " columns for " +
                                 std::to_string(states_.size()) + " states (one row per state, columns a multiple of " +
-                                std::to_string(kJunctionLanes) + ")");
+                                std::to_string(kJoinLanes) + ")");
   static_assert(kVisemeClassCount < 256, "a class fits one byte");
   child_viseme_.assign(states_.size(), static_cast<std::uint8_t>(kVisemeClassCount));
   for (StateId i = 0; i < states_.size(); ++i)
@@ -60,7 +60,7 @@ PhoneGraph::PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features
            return has_parent(j) ? diviseme_key(states_[j - 1].viseme, states_[j].viseme) : none;
          },
          diviseme_offsets_, by_diviseme_);
-  if (has_junction_features()) bound_ = JunctionBound(*this);
+  if (has_join_features()) bound_ = JoinBound(*this);
 }
 
 std::span<const StateId> PhoneGraph::with_viseme(VisemeClass v) const {
@@ -75,12 +75,12 @@ std::span<const StateId> PhoneGraph::entries(VisemeClass from, VisemeClass to) c
   return std::span(by_diviseme_).subspan(diviseme_offsets_[k], diviseme_offsets_[k + 1] - diviseme_offsets_[k]);
 }
 
-JunctionFeatures junction_features(std::span<const PhoneState> states,
+JoinFeatures join_features(std::span<const PhoneState> states,
                                    const Eigen::MatrixXf& pca_frames) {
   const Eigen::Index k = pca_frames.cols();
-  const Eigen::Index width = (2 * k + kJunctionLanes - 1) / kJunctionLanes * kJunctionLanes;
+  const Eigen::Index width = (2 * k + kJoinLanes - 1) / kJoinLanes * kJoinLanes;
   const auto rows = static_cast<Eigen::Index>(states.size());
-  JunctionFeatures f{JunctionRows::Zero(rows, width), JunctionRows::Zero(rows, width)};
+  JoinFeatures f{JoinRows::Zero(rows, width), JoinRows::Zero(rows, width)};
   // Frames of one recording are contiguous; a short state reads past its own span into its
   // neighbours, but never past its recording.
   for (std::size_t u_begin = 0; u_begin < states.size();) {
@@ -106,11 +106,11 @@ JunctionFeatures junction_features(std::span<const PhoneState> states,
   return f;
 }
 
-float junction_cost(const PhoneGraph& graph, StateId i, StateId j) {
-  if (!graph.has_junction_features()) return 0.0f;
-  const auto& f = graph.junction();
-  // Two second differences straddle the junction; C is their mean squared norm.
-  return junction_cost(f.entry.row(j).data(), f.exit.row(i).data(), f.entry.cols());
+float join_cost(const PhoneGraph& graph, StateId i, StateId j) {
+  if (!graph.has_join_features()) return 0.0f;
+  const auto& f = graph.join_features();
+  // Two second differences straddle the join; C is their mean squared norm.
+  return join_cost(f.entry.row(j).data(), f.exit.row(i).data(), f.entry.cols());
 }
 
 }  // namespace fapcast

@@ -173,8 +173,8 @@ class CapLimit {
 // offer_pruned_joins).
 struct Predecessor {
   double key;
-  double base;           // cost + 1: a join's cost before its junction term
-  JunctionPoint point;   // on the axis of the diviseme being joined (when bounded)
+  double base;           // cost + 1: a join's cost before its join term
+  JoinPoint point;   // on the axis of the diviseme being joined (when bounded)
   SketchRef sketch;      // its exit sketch (when bounded and sketched)
   std::uint32_t index;   // into prev
   StateId state;
@@ -191,7 +191,7 @@ struct JoinScratch {
   std::vector<Predecessor> pred;       // in ascending key
   std::vector<std::pair<double, std::uint32_t>> by_key;  // (key, index into prev), to sort
   std::vector<StateId> pred_state;     // the predecessors' states, in prev order
-  std::vector<JunctionPoint> pred_point;  // and their exit points on the diviseme's axis
+  std::vector<JoinPoint> pred_point;  // and their exit points on the diviseme's axis
   std::vector<StateId> read_state;        // the states of the predecessors read past the lead
   std::vector<SketchRef> read_sketch;     // and their exit sketches
   std::vector<std::int16_t> sketch_buffer;  // where those are made until the class is tabled
@@ -214,7 +214,7 @@ struct Choice {
 };
 
 // Runs `loop.template operator()<Dims>()` with Dims = `width` when it is one of the usual row
-// widths (2k up to 64, rounded to kJunctionLanes), so the junction cost unrolls; else Dims = 0.
+// widths (2k up to 64, rounded to kJoinLanes), so the join cost unrolls; else Dims = 0.
 template <class Loop>
 void join_with_width(Eigen::Index width, Loop&& loop) {
   switch (width) {
@@ -240,13 +240,13 @@ double clearly_above(double cost) { return cost + 1e-12 * (1.0 + std::abs(cost))
 void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
                       std::span<const StateId> targets, double beta, DurationTerm& duration, std::size_t t,
                       StepBuilder& step) {
-  const auto& f = graph.junction();
+  const auto& f = graph.join_features();
   const auto dims = f.entry.cols();
   for (std::size_t b = 0; b < targets.size(); ++b) {
     const StateId j = targets[b];
     Choice best{std::numeric_limits<double>::infinity()};
     for (std::uint32_t a = 0; a < prev.size(); ++a)
-      best.consider(prev[a].cost + 1.0 + beta * junction_cost(f.entry.row(j).data(), f.exit.row(prev[a].state).data(), dims),
+      best.consider(prev[a].cost + 1.0 + beta * join_cost(f.entry.row(j).data(), f.exit.row(prev[a].state).data(), dims),
                     a, prev[a].state);
     step.join(b, j, best.cost + duration(j, t), best.back);
   }
@@ -256,7 +256,7 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
 // join chosen, and every join not offered costs more than the cap keeps, so what survives the cap
 // is the reference's, to the bit.
 //
-// With the bound of junction_bound.hpp (when `to` names the diviseme, so that every target's
+// With the bound of join_bound.hpp (when `to` names the diviseme, so that every target's
 // entry point and every predecessor's exit point lie on one axis), a join n -> j costs at least
 //   lb(n, j) = base_n + (beta / 2) ((u_j - v_n)^2 + (s_j - t_n)^2 - slack_j - slack_n).
 // Expanding the squares around the targets' mean point (u', s') and the predecessors' mean point
@@ -268,7 +268,7 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
 // differ little, so the last line is small: reading predecessors in ascending key, a target
 // stops at the first whose key_n + floor_j exceeds its best join (or what the cap keeps), usually
 // after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0). A predecessor read is
-// passed over when the sketch bound (junction_sketch.hpp) of its join exceeds the best so far.
+// passed over when the sketch bound (join_sketch.hpp) of its join exceeds the best so far.
 //
 // The duration term d_j of an entry does not depend on the predecessor: the best predecessor is
 // chosen on the join's cost alone and d_j is added to what is offered (as the reference does), so
@@ -283,15 +283,15 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
                         std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
                         DurationTerm& duration, std::size_t t, CapLimit& cap, StepBuilder& step,
                         JoinScratch& scratch) {
-  const auto& f = graph.junction();
+  const auto& f = graph.join_features();
   const auto dims = f.entry.cols();
-  const auto& bound = graph.junction_bound();
+  const auto& bound = graph.join_bound();
   const bool bounded = diviseme && !bound.empty();
   const DivisemeSketches* entry_sketches = bounded ? bound.entry_sketches(graph, diviseme->from, diviseme->to) : nullptr;
   const bool sketched = entry_sketches != nullptr;
   // A bounded sweep reads the diviseme's entry rows and points where they lie contiguously.
   const DivisemePoints* points = bounded ? &bound.points(graph, diviseme->from, diviseme->to) : nullptr;
-  const std::span<const JunctionPoint> entry_point = bounded ? std::span(points->entry) : std::span<const JunctionPoint>{};
+  const std::span<const JoinPoint> entry_point = bounded ? std::span(points->entry) : std::span<const JoinPoint>{};
   const float* entry_rows = bounded ? points->entry_rows.data() : nullptr;
   const double half_beta = 0.5 * beta;
   const double grid_step = sketched ? bound.sketch_grid().step : 0.0;
@@ -309,7 +309,7 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
     bound.exits(graph, diviseme->from, diviseme->to, scratch.pred_state, point);
     const double u_mean = points->along_mean, s_mean = points->across_mean;
     double v_mean = 0.0, t_mean = 0.0;
-    for (const JunctionPoint& x : point) v_mean += x.along, t_mean += x.across;
+    for (const JoinPoint& x : point) v_mean += x.along, t_mean += x.across;
     v_mean /= static_cast<double>(preds), t_mean /= static_cast<double>(preds);
     double v_reach = 0.0, t_reach = 0.0;
     for (std::uint32_t a = 0; a < preds; ++a) {
@@ -318,13 +318,13 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
       by_key[a] = {prev[a].cost + 1.0 + half_beta * (v * v + w * w - point[a].slack) - beta * (u_mean * v + s_mean * w), a};
     }
     for (std::size_t b = 0; b < targets.size(); ++b) {
-      const JunctionPoint& e = entry_point[b];
+      const JoinPoint& e = entry_point[b];
       const double u = e.along, s = e.across, du = u - u_mean, ds = s - s_mean;
       floor[b] = half_beta * (u * u + s * s - e.slack) -
                  beta * (du * v_mean + ds * t_mean + std::abs(du) * v_reach + std::abs(ds) * t_reach);
     }
   } else {
-    point.assign(preds, JunctionPoint{});
+    point.assign(preds, JoinPoint{});
     for (std::uint32_t a = 0; a < preds; ++a) by_key[a] = {prev[a].cost + 1.0, a};
   }
   const auto predecessor = [&](std::pair<double, std::uint32_t> by) {
@@ -345,7 +345,7 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
   lead_cost.resize(targets.size());
   join_with_width(dims, [&]<Eigen::Index Dims>() {
     for (std::size_t b = 0; b < targets.size(); ++b)
-      lead_cost[b] = lead.base + beta * junction_cost<Dims>(entry_row(b), lead.exit, dims);
+      lead_cost[b] = lead.base + beta * join_cost<Dims>(entry_row(b), lead.exit, dims);
   });
   auto& dur = scratch.duration;
   dur.assign(targets.size(), 0.0);
@@ -378,7 +378,7 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
   join_with_width(dims, [&]<Eigen::Index Dims>() {
     for (std::size_t b = 0; b < targets.size(); ++b) {
       const float* entry = entry_row(b);
-      const JunctionPoint e = bounded ? entry_point[b] : JunctionPoint{};
+      const JoinPoint e = bounded ? entry_point[b] : JoinPoint{};
       const std::int16_t* sketch = sketched ? entry_sketches->entry.data() + static_cast<std::ptrdiff_t>(b) * dims : nullptr;
       const double sketch_error = sketched ? entry_sketches->error[b] : 0.0;
       Choice best{join_limit(b)};
@@ -389,10 +389,10 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
           const double c_floor = sketch_cost_floor(sketch_distance2<Dims>(sketch, x->sketch.values, dims),
                                                    sketch_error + x->sketch.error, grid_step);
           if (x->base + beta * c_floor > best.cost) continue;
-        } else if (bounded && x->base + half_beta * JunctionBound::twice_cost_floor(e, x->point) > best.cost) {
+        } else if (bounded && x->base + half_beta * JoinBound::twice_cost_floor(e, x->point) > best.cost) {
           continue;
         }
-        if (best.consider(x->base + beta * junction_cost<Dims>(entry, x->exit, dims), x->index, x->state))
+        if (best.consider(x->base + beta * join_cost<Dims>(entry, x->exit, dims), x->index, x->state))
           stop = clearly_above(best.cost) - floor[b];
       }
       if (best.back != kNoBack) step.join(b, targets[b], best.cost + dur[b], best.back);  // else dearer than the cap keeps
@@ -407,7 +407,7 @@ void offer_joins(const PhoneGraph& graph, std::span<const Active> prev, std::spa
                  CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
   if (targets.empty() || prev.empty()) return;
   step.begin_joins(targets);
-  if (options.beta == 0.0 || !graph.has_junction_features()) {
+  if (options.beta == 0.0 || !graph.has_join_features()) {
     const auto best = std::min_element(prev.begin(), prev.end(), better);
     const auto back = static_cast<std::uint32_t>(best - prev.begin());
     for (std::size_t b = 0; b < targets.size(); ++b)

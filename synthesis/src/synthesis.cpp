@@ -58,18 +58,18 @@ VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v) {
 }
 
 SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
-                            std::span<const TimedPhone> phones, std::int64_t sample_rate_hz,
+                            std::span<const TimedPhone> phones, SampleRate sample_rate,
                             std::int64_t end_sample, const SynthesisOptions& options,
                             const std::string& source) {
   SynthesizedTrack out;
-  out.timeline = place_on_voice_grid(phones, sample_rate_hz, end_sample, source);
+  out.timeline = place_on_voice_grid(phones, sample_rate, end_sample, source);
   const auto& targets = out.timeline.phones;
   if (targets.empty()) {
     out.pca_frames.resize(0, frame_coefficients.cols());
     out.tongue.resize(0, static_cast<Eigen::Index>(kTongueFapCount));
     return out;
   }
-  // The search and the renderer see the covered classes; the timeline keeps what was asked for.
+  // The search and the concatenation see the covered classes; the timeline keeps what was asked for.
   std::vector<TargetPhone> covered(targets.begin(), targets.end());
   std::vector<VisemeClass> classes(covered.size());
   std::vector<std::int64_t> lengths(covered.size());
@@ -80,7 +80,7 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& fram
     lengths[t] = covered[t].end_frame - covered[t].first_frame;
   }
   out.search = unit_search(graph, classes, lengths, options.search);
-  out.pca_frames = render_units(graph, frame_coefficients, out.search, covered, options.render);
+  out.pca_frames = concatenate_units(graph, frame_coefficients, out.search, covered, options.concatenation);
   out.tongue = tongue_track(targets, out.timeline.phone_of);
   return out;
 }

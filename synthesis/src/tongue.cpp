@@ -1,5 +1,7 @@
 #include "fapcast/synthesis/tongue.hpp"
 
+#include "fapcast/math/dominance.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -164,28 +166,23 @@ Eigen::MatrixXf tongue_track(std::span<const TargetPhone> targets, std::span<con
 
   float* column[kTongueFapCount];
   for (std::size_t f = 0; f < kTongueFapCount; ++f) column[f] = out.col(static_cast<Eigen::Index>(f)).data();
+  DominanceBlend blend(kTongueFapCount);
   std::size_t here = 0;  // the target phone that owns frame n
   for (std::int64_t n = targets.front().first_frame; n < frames; ++n) {
     while (n >= targets[here].end_frame) ++here;
     const double t = static_cast<double>(n) / kFps;
-    std::array<double, kTongueFapCount> num{};
-    double den_tip = 0, den_body = 0;  // FAPs 43-45 share the tip's, 46-47 the body's
-    auto add = [&](const Source& p) {
+    blend.clear();
+    auto add = [&](const Source& p) {  // FAPs 43-45 take the tip's dominance, 46-47 the body's
       const double fall = p.decay_at_frame(n);
       const double tip = p.alpha_tip * fall, body = p.alpha_body * fall;
-      for (std::size_t f = 0; f < 3; ++f) num[f] += tip * p.value[f];
-      for (std::size_t f = 3; f < kTongueFapCount; ++f) num[f] += body * p.value[f];
-      den_tip += tip;
-      den_body += body;
+      for (std::size_t f = 0; f < 3; ++f) blend.add(f, tip, p.value[f]);
+      for (std::size_t f = 3; f < kTongueFapCount; ++f) blend.add(f, body, p.value[f]);
     };
     add(sources[here]);  // always: a long phone's own frames far from its centre still have a value
     for (std::size_t s = here; s-- > 0 && t - sources[s].centre_s <= kTongueReachS;) add(sources[s]);
     for (std::size_t s = here + 1; s < targets.size() && sources[s].centre_s - t <= kTongueReachS; ++s)
       add(sources[s]);
-    for (std::size_t f = 0; f < kTongueFapCount; ++f) {
-      const double den = f < 3 ? den_tip : den_body;
-      column[f][n] = den > 0 ? static_cast<float>(num[f] / den) : 0.0f;
-    }
+    for (std::size_t f = 0; f < kTongueFapCount; ++f) column[f][n] = static_cast<float>(blend.value(f));
   }
   return out;
 }

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/core/tsv_table.hpp"
 
 namespace fapcast {
@@ -362,12 +362,12 @@ constexpr std::array<ChannelShapeRow, 18> kChannelShapes{{
     {Channel::labiodental, "mouthUpperUp_R", 0.15f, std::nullopt, false},
 }};
 
-constexpr std::size_t kPhoneCount = kArticulation.size() / kChannelCount;
+constexpr std::size_t kArticulationPhones = kArticulation.size() / kChannelCount;
 
 // Phone-indexed view of kArticulation, built once.
-const std::array<PhoneArticulation, kPhoneCount>& by_phone() {
+const std::array<PhoneArticulation, kArticulationPhones>& by_phone() {
   static const auto table = [] {
-    std::array<PhoneArticulation, kPhoneCount> t{};
+    std::array<PhoneArticulation, kArticulationPhones> t{};
     for (std::size_t i = 0; i < kArticulation.size(); ++i) {
       const auto& row = kArticulation[i];
       t[i / kChannelCount].target[static_cast<std::size_t>(row.channel)] = row.target;
@@ -404,10 +404,14 @@ const PhoneArticulation& phone_articulation(std::string_view phone) {
   if (!key.empty() && std::isdigit(static_cast<unsigned char>(key.back())) != 0)
     key.remove_suffix(1);
   if (key.empty() || key == "sp" || key == "pau" || key == "SIL") key = "sil";
-  for (std::size_t p = 0; p < kPhoneCount; ++p)
+  for (std::size_t p = 0; p < kArticulationPhones; ++p)
     if (kArticulation[p * kChannelCount].phone == key) return by_phone()[p];
   throw std::invalid_argument("unknown phone '" + std::string(phone) +
                               "' (the articulation table knows the 39 ARPAbet phones and sil)");
+}
+
+const PhoneArticulation& phone_articulation(Phone phone) {
+  return phone_articulation(phone == Phone::SIL ? std::string_view("sil") : arpabet(phone));
 }
 
 std::span<const ChannelShapeRow> channel_shape_table() { return kChannelShapes; }

@@ -43,24 +43,24 @@ RigidTransform HeadMotion::at(double t_s) const {
   return t;
 }
 
-void apply_head_motion(MarkerFrames& frames, const HeadMotion& motion) {
+void apply_head_motion(MarkerFrames<Centimetres>& frames, const HeadMotion& motion) {
   for (Eigen::Index k = 0; k < frames.frame_count(); ++k) {
     const RigidTransform pose = motion.at(static_cast<double>(k) / frames.frame_rate_hz);
     for (Eigen::Index m = 0; m < frames.marker_count(); ++m)
-      if (frames.present(m, k)) frames.positions_cm.block<3, 1>(3 * m, k) = pose.apply(frames.at(m, k));
+      if (frames.present(m, k)) frames.positions.block<3, 1>(3 * m, k) = pose.apply(frames.at(m, k));
   }
 }
 
-void add_marker_noise(MarkerFrames& frames, PortableRandom& random, double sigma_mm) {
+void add_marker_noise(MarkerFrames<Centimetres>& frames, PortableRandom& random, double sigma_mm) {
   const double sigma_cm = sigma_mm / 10.0;
   for (Eigen::Index k = 0; k < frames.frame_count(); ++k)
     for (Eigen::Index m = 0; m < frames.marker_count(); ++m) {
       if (!frames.present(m, k)) continue;
-      for (Eigen::Index c = 0; c < 3; ++c) frames.positions_cm(3 * m + c, k) += sigma_cm * random.normal();
+      for (Eigen::Index c = 0; c < 3; ++c) frames.positions(3 * m + c, k) += sigma_cm * random.normal();
     }
 }
 
-std::vector<DroppedRun> drop_marker_runs(MarkerFrames& frames, PortableRandom& random,
+std::vector<DroppedRun> drop_marker_runs(MarkerFrames<Centimetres>& frames, PortableRandom& random,
                                          const DropoutLimits& limits) {
   std::vector<DroppedRun> runs;
   if (frames.frame_count() == 0 || limits.max_run_frames < 1) return runs;
@@ -80,7 +80,7 @@ std::vector<DroppedRun> drop_marker_runs(MarkerFrames& frames, PortableRandom& r
   return runs;
 }
 
-CapturedTake capture_take(const MarkerFrames& clean, PortableRandom& random,
+CapturedTake capture_take(const MarkerFrames<Centimetres>& clean, PortableRandom& random,
                           const CaptureSettings& settings) {
   CapturedTake take{clean, {}};
   apply_head_motion(take.frames, HeadMotion(random, settings.head_motion));

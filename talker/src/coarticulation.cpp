@@ -1,5 +1,7 @@
 #include "fapcast/talker/coarticulation.hpp"
 
+#include "fapcast/math/dominance.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -22,27 +24,23 @@ std::vector<PlacedPhone> place(const PhoneTimeline& timeline) {
   placed.reserve(timeline.phones.size());
   for (const auto& p : timeline.phones)
     placed.push_back({&phone_articulation(p.phone),
-                      0.5 * static_cast<double>(p.start_sample + p.end_sample) / timeline.sample_rate_hz});
+                      0.5 * static_cast<double>(p.start_sample + p.end_sample) / static_cast<double>(timeline.sample_rate.hz)});
   return placed;
 }
 
 std::array<float, kChannelCount> values_at(const std::vector<PlacedPhone>& phones, double t_s,
-                                           float effort) {
-  std::array<double, kChannelCount> numerator{};
-  std::array<double, kChannelCount> denominator{};
+                                           float effort, DominanceBlend& blend) {
+  blend.clear();
   for (const auto& p : phones) {
     const double tau = t_s - p.centre_s;
     for (std::size_t c = 0; c < kChannelCount; ++c) {
-      const double d = p.articulation->dominance[c].at(tau);
       float target = p.articulation->target[c];
       if (kEffortScaled[c]) target = std::clamp(target * effort, 0.0f, 1.0f);
-      numerator[c] += d * target;
-      denominator[c] += d;
+      blend.add(c, p.articulation->dominance[c].at(tau), target);
     }
   }
   std::array<float, kChannelCount> out{};
-  for (std::size_t c = 0; c < kChannelCount; ++c)
-    out[c] = denominator[c] > 0 ? static_cast<float>(numerator[c] / denominator[c]) : 0.0f;
+  for (std::size_t c = 0; c < kChannelCount; ++c) out[c] = static_cast<float>(blend.value(c));
   return out;
 }
 
@@ -55,24 +53,19 @@ std::array<float, kChannelCount> ChannelTracks::frame(Eigen::Index k) const {
 }
 
 void validate_timeline(const PhoneTimeline& timeline) {
-  if (timeline.sample_rate_hz <= 0)
+  if (!timeline.sample_rate.valid())
     throw std::invalid_argument("phone timeline: sample rate " +
-                                std::to_string(timeline.sample_rate_hz) + " Hz is not positive");
+                                std::to_string(timeline.sample_rate.hz) + " Hz is not positive");
   std::int64_t previous_end = 0;
   for (std::size_t i = 0; i < timeline.phones.size(); ++i) {
     const auto& p = timeline.phones[i];
-    const auto where = "phone timeline: phone " + std::to_string(i) + " '" + p.phone + "': ";
+    const auto where = "phone timeline: phone " + std::to_string(i) + " '" + std::string(arpabet(p.phone)) + "': ";
     if (p.start_sample < previous_end)
       throw std::invalid_argument(where + "starts at sample " + std::to_string(p.start_sample) +
                                   " before the previous phone ends (" +
                                   std::to_string(previous_end) + ")");
     if (p.end_sample <= p.start_sample)
       throw std::invalid_argument(where + "empty or reversed span");
-    try {
-      (void)phone_articulation(p.phone);
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument(where + e.what());
-    }
     previous_end = p.end_sample;
   }
 }
@@ -80,7 +73,8 @@ void validate_timeline(const PhoneTimeline& timeline) {
 std::array<float, kChannelCount> channel_values_at(const PhoneTimeline& timeline, double t_s,
                                                    float effort) {
   validate_timeline(timeline);
-  return values_at(place(timeline), t_s, effort);
+  DominanceBlend blend(kChannelCount);
+  return values_at(place(timeline), t_s, effort, blend);
 }
 
 ChannelTracks coarticulate(const PhoneTimeline& timeline, const CoarticulationOptions& options) {
@@ -93,11 +87,12 @@ ChannelTracks coarticulate(const PhoneTimeline& timeline, const CoarticulationOp
   tracks.frame_rate_hz = options.frame_rate_hz;
   const std::int64_t end = timeline.phones.empty() ? 0 : timeline.phones.back().end_sample;
   const std::int64_t frames =
-      (end * options.frame_rate_hz + timeline.sample_rate_hz - 1) / timeline.sample_rate_hz;
+      (end * options.frame_rate_hz + timeline.sample_rate.hz - 1) / timeline.sample_rate.hz;
   tracks.values.resize(static_cast<int>(kChannelCount), frames);
   const auto phones = place(timeline);
+  DominanceBlend blend(kChannelCount);
   for (std::int64_t k = 0; k < frames; ++k) {
-    const auto v = values_at(phones, static_cast<double>(k) / options.frame_rate_hz, options.effort);
+    const auto v = values_at(phones, static_cast<double>(k) / options.frame_rate_hz, options.effort, blend);
     for (std::size_t c = 0; c < kChannelCount; ++c)
       tracks.values(static_cast<Eigen::Index>(c), k) = std::clamp(v[c], 0.0f, 1.0f);
   }

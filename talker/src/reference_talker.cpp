@@ -3,7 +3,6 @@
 #include "fapcast/corpus/c3d.hpp"
 #include "fapcast/talker/capture_imperfections.hpp"
 #include "fapcast/talker/coarticulation.hpp"
-#include "fapcast/corpus/marker_conversion.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/core/synthetic_label.hpp"
 #include "fapcast/talker/talker_markers.hpp"
@@ -44,9 +43,9 @@ std::string phone_label(Phone p) { return p == Phone::SIL ? "sil" : std::string(
 
 PhoneTimeline timeline_of(const Speech& speech) {
   PhoneTimeline timeline;
-  timeline.sample_rate_hz = speech.audio.sample_rate_hz;
+  timeline.sample_rate = speech.audio.sample_rate;
   for (const auto& p : speech.phones)
-    if (p.end_sample > p.start_sample) timeline.phones.push_back({phone_label(p.phone), p.start_sample, p.end_sample});
+    if (p.end_sample > p.start_sample) timeline.phones.push_back(p);
   return timeline;
 }
 
@@ -60,7 +59,7 @@ FaceModel reference_actor(const FaceModel& generic, std::uint64_t seed) {
 }
 
 Alignment take_alignment(const Speech& speech) {
-  const int rate = speech.audio.sample_rate_hz;
+  const auto rate = static_cast<int>(speech.audio.sample_rate.hz);
   const double end = seconds(static_cast<std::int64_t>(speech.audio.samples.size()), rate);
   Alignment a{0.0, end, {}};
   LabelTier phones{"phones", TierKind::intervals, 0.0, end, {}, {}};
@@ -136,7 +135,7 @@ ReferenceCorpusSummary record_reference_corpus(
     const std::string stem = id;
     write_wav(directory / (stem + ".wav"), take.audio);
     summary.bytes += std::filesystem::file_size(directory / (stem + ".wav"));
-    write(stem + ".c3d", write_c3d(to_marker_set(take.captured),
+    write(stem + ".c3d", write_c3d(to_millimetres(take.captured),
                                    {c3d_synthetic_parameter(),
                                     {"FAPCAST", "TEXT", item.text.substr(0, 255), "the script item spoken"}}));
     write(stem + ".TextGrid", write_textgrid(take.alignment));
@@ -147,12 +146,12 @@ ReferenceCorpusSummary record_reference_corpus(
                                                                                       : "nonsense"},
                           {"files", {{"markers", stem + ".c3d"}, {"audio", stem + ".wav"}, {"alignment", stem + ".TextGrid"}}},
                           {"frame_rate_hz", 60},
-                          {"sample_rate_hz", take.audio.sample_rate_hz},
+                          {"sample_rate_hz", take.audio.sample_rate.hz},
                           {"effort", take.effort},
                           {"synthetic", true}});
     ++summary.utterances;
     summary.marker_frames += take.captured.frame_count();
-    summary.audio_seconds += seconds(static_cast<std::int64_t>(take.audio.samples.size()), take.audio.sample_rate_hz);
+    summary.audio_seconds += seconds(static_cast<std::int64_t>(take.audio.samples.size()), static_cast<int>(take.audio.sample_rate.hz));
     if (progress) progress(i + 1, total);
   }
   manifest["utterances"] = std::move(utterances);

@@ -23,11 +23,11 @@ using namespace fapcast;
 // 10 s of 60 markers at 60 fps (one utterance-sized take is ~2 s; this is a long one).
 std::string c3d_take() {
   std::mt19937_64 rng(7);
-  MarkerSet m = MarkerSet::zeros(600, 60);
+  MarkerFrames<Millimetres> m = MarkerFrames<Millimetres>::zeros(60, 600);
   std::uniform_real_distribution<float> mm(-200.0F, 200.0F);
   for (Eigen::Index i = 0; i < 60; ++i) m.labels[static_cast<std::size_t>(i)] = "M" + std::to_string(i);
   for (Eigen::Index f = 0; f < 600; ++f) {
-    for (Eigen::Index i = 0; i < 60; ++i) m.set_position(f, i, Eigen::Vector3d(mm(rng), mm(rng), mm(rng)));
+    for (Eigen::Index i = 0; i < 60; ++i) m.set(i, f, Eigen::Vector3d(mm(rng), mm(rng), mm(rng)));
   }
   return write_c3d(m, {c3d_synthetic_parameter()});
 }

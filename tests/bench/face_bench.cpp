@@ -17,10 +17,10 @@ PhoneTimeline sentence() {  // "a pup strewn on the beach" at 22050 Hz, ~1.5 s
       {"sil", 150}, {"AH0", 70}, {"P", 70}, {"AH1", 100}, {"P", 80}, {"S", 90}, {"T", 50},
       {"R", 60},    {"UW1", 180}, {"N", 80}, {"AA1", 120}, {"N", 60}, {"DH", 40}, {"AH0", 60},
       {"B", 70},    {"IY1", 150}, {"CH", 110}, {"sil", 150}};
-  PhoneTimeline t{22050, {}};
+  PhoneTimeline t{SampleRate{22050}, {}};
   std::int64_t at = 0;
   for (const auto& [p, ms] : phones) {
-    t.phones.push_back({p, at, at + std::int64_t{ms} * 22050 / 1000});
+    t.phones.push_back({parse_arpabet(p, "bench").phone, at, at + std::int64_t{ms} * 22050 / 1000});
     at = t.phones.back().end_sample;
   }
   return t;
@@ -94,16 +94,16 @@ void BM_TalkerMarkers(benchmark::State& state) {
   const PhoneTimeline t = sentence();
   std::int64_t frames = 0;
   for (auto _ : state) {
-    const MarkerFrames take = talker_markers(face, t);
+    const MarkerFrames<Centimetres> take = talker_markers(face, t);
     frames += take.frame_count();
-    benchmark::DoNotOptimize(take.positions_cm.data());
+    benchmark::DoNotOptimize(take.positions.data());
   }
   state.SetItemsProcessed(frames);
 }
 BENCHMARK(BM_TalkerMarkers)->Unit(benchmark::kMillisecond);
 
 void BM_HeadPoseRemoval(benchmark::State& state) {
-  MarkerFrames take = talker_markers(ict_face_model(), sentence());
+  MarkerFrames<Centimetres> take = talker_markers(ict_face_model(), sentence());
   const auto rigid = rigid_marker_rows();
   const Eigen::Matrix3Xd reference = rigid_reference(take, rigid, 0);
   PortableRandom random(1);

@@ -3,7 +3,7 @@
 //    triangle maps onto their corners with no mesh structure: time and peak heap;
 //  - adapting one dense 3 x N target, and all 53 ICT expression targets (sparse);
 //  - .glb bytes per second of animation for k = 17 morph targets at 60 fps;
-//  - `voice retarget` (retarget_voice) of a voice shaped like the reference voice (k = 17, 21 RBF
+//  - `voice adapt` (adapt_voice) of a voice shaped like the reference voice (k = 17, 21 RBF
 //    centres, full ICT face) to the actor, against opening (mapping + verifying) the same voice.
 // Peak heap is counted by replacing global operator new/delete in this program only.
 #include <benchmark/benchmark.h>
@@ -19,7 +19,7 @@
 #include "fapcast/face/face_adaptation.hpp"
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/face/obj_mesh.hpp"
-#include "fapcast/voice/voice_retarget.hpp"
+#include "fapcast/voice/voice_adaptation.hpp"
 #include "fapcast/core/file_io.hpp"
 #include "support/scatter_adaptation.hpp"
 #include "support/tiny_voice.hpp"
@@ -139,7 +139,7 @@ void BM_GlbWrite_k17_60fps(benchmark::State& state) {
 BENCHMARK(BM_GlbWrite_k17_60fps)->Arg(10)->Unit(benchmark::kMillisecond);
 
 // A voice file shaped like the reference voice (k = 17, m = 21, D = 3 x 26,719) with SYNTHETIC
-// contents: what retarget_voice reads and writes is independent of the values.
+// contents: what adapt_voice reads and writes is independent of the values.
 const std::filesystem::path& reference_shaped_voice() {
   static const std::filesystem::path file = [] {
     test::TinyVoice t;
@@ -155,7 +155,7 @@ const std::filesystem::path& reference_shaped_voice() {
   return file;
 }
 
-void BM_VoiceRetarget_k17(benchmark::State& state) {
+void BM_VoiceAdaptation_k17(benchmark::State& state) {
   const Voice voice = Voice::open(reference_shaped_voice());
   const auto& g = ict_face_model();
   const Positions generic_m = 0.01f * g.neutral_cm, specific_m = 0.01f * actor().neutral_cm;
@@ -164,14 +164,14 @@ void BM_VoiceRetarget_k17(benchmark::State& state) {
   for (auto _ : state) {
     const auto before = g_heap.load();
     g_peak = before;
-    const auto out = retarget_voice(voice, generic_m, specific_m, g.faces, "actor");
+    const auto out = adapt_voice(voice, generic_m, specific_m, g.faces, "actor");
     bytes = out.bytes.size();
     peak = std::max(peak, g_peak.load() - before);
   }
   state.counters["peak_heap_MB"] = static_cast<double>(peak) / 1e6;
   state.counters["voice_MB"] = static_cast<double>(bytes) / 1e6;
 }
-BENCHMARK(BM_VoiceRetarget_k17)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VoiceAdaptation_k17)->Unit(benchmark::kMillisecond);
 
 void BM_VoiceOpen_k17(benchmark::State& state) {
   const auto& file = reference_shaped_voice();

@@ -18,12 +18,14 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <random>
 
 namespace {
 using namespace fapcast;
 
 constexpr std::int64_t kRate = 22050;
+constexpr SampleRate kSampleRate{kRate};
 constexpr double kSentenceS = 10.0;
 constexpr Eigen::Index kK = 17;
 constexpr std::int64_t kMeshVertices = 26'719;  // ICT-FaceKit's full head, for the mesh baseline
@@ -48,7 +50,7 @@ const World& world() {
     while (at < end) {
       const std::int64_t len = std::min<std::int64_t>(end - at, ms(rng) * kRate / 1000);
       const auto p = (at == 0 || at + len >= end) ? Phone::SIL : static_cast<Phone>(phone(rng));
-      w.phones.push_back({p, at, at + len, at, at, kNoWord, ""});
+      w.phones.push_back({p, at, at + len});
       at += len;
     }
     // A mesh basis whose feature-point vertices sit on the generic face (cm).
@@ -82,7 +84,7 @@ void report(benchmark::State& state, const SynthesizedTrack& s) {
 SynthesisOptions options_of(const benchmark::State& state) {
   SynthesisOptions o;
   o.search.beta = static_cast<double>(state.range(0)) / 100.0;
-  if (state.range(1) > 0) o.search.max_active = static_cast<std::size_t>(state.range(1));
+  o.search.max_active = state.range(1) > 0 ? std::optional<std::size_t>(state.range(1)) : std::nullopt;
   o.search.prune_joins = state.range(2) != 0;
   return o;
 }
@@ -94,7 +96,7 @@ void BM_Synthesize(benchmark::State& state) {
   const auto options = options_of(state);
   SynthesizedTrack s;
   for (auto _ : state) {
-    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options);
     benchmark::DoNotOptimize(s.pca_frames.data());
   }
   report(state, s);
@@ -112,7 +114,7 @@ BENCHMARK(BM_Synthesize)
 void BM_SearchOnly(benchmark::State& state) {
   const World& w = world();
   const auto options = options_of(state);
-  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options);
   std::vector<VisemeClass> targets;
   for (const StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
   SynthesizedTrack s;
@@ -129,22 +131,22 @@ BENCHMARK(BM_SearchOnly)
     ->Args({10, 64, 0})->Args({10, 64, 1})->Args({10, 16, 1})
     ->Unit(benchmark::kMillisecond);
 
-// A one-sentence `fapcast say` as far as the search goes: open the graph (indices, junction
+// A one-sentence `fapcast say` as far as the search goes: open the graph (indices, join
 // features, the bound's centres and axes), then one search of the same 114 targets, which makes
 // the bound's tables of the divisemes it joins into. Arg: prune joins (1) or the reference (0).
 void BM_OpenAndSearchOnce(benchmark::State& state) {
   const World& w = world();
-  // Fixed malloc thresholds: the graph's 13 MB of junction features are then reused from one
+  // Fixed malloc thresholds: the graph's 13 MB of join features are then reused from one
   // iteration to the next, not returned to the kernel and faulted in again, which glibc's
   // dynamic thresholds do or not depending on the allocation order of the code measured.
   mallopt(M_MMAP_THRESHOLD, 64 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, {});
+  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, {});
   std::vector<VisemeClass> targets;
   for (const StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
   SynthesizedTrack s;
   for (auto _ : state) {
-    const PhoneGraph graph(w.voice.states, junction_features(w.voice.states, w.voice.frames));
+    const PhoneGraph graph(w.voice.states, join_features(w.voice.states, w.voice.frames));
     s.search = unit_search(graph, targets, {0.1, 64, state.range(0) != 0});
     benchmark::DoNotOptimize(s.search.cost);
   }
@@ -159,7 +161,7 @@ void BM_PhonesToFaps(benchmark::State& state) {
   const auto options = options_of(state);
   SynthesizedTrack s;
   for (auto _ : state) {
-    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options);
     FapSequence seq{"bench", {60, 1}, pca_to_faps(s.pca_frames, w.basis)};
     auto out = resample_track(seq, {25, 1}, ResampleMode::kLinear);
     benchmark::DoNotOptimize(out.frames.data());
@@ -172,27 +174,25 @@ BENCHMARK(BM_PhonesToFaps)
     ->Unit(benchmark::kMillisecond);
 
 // The work after the search, at the `say` default, from one fixed search result: what
-// synthesize() does besides unit_search (voice grid, render: warp, cross-fade, smoothing; tongue)
+// synthesize() does besides unit_search (voice grid, concatenation: warp, cross-fade, smoothing; tongue)
 // and what follows it (PCA -> FAPs at 60 fps, resampled to 25 fps). Together they are
 // BM_PhonesToFaps minus the search.
 const SynthesizedTrack& default_track() {
   static const SynthesizedTrack s = [] {
     const World& w = world();
-    SynthesisOptions o;
-    o.search.beta = 0.1;
-    o.search.max_active = 64;
-    return synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, o);
+    const SynthesisOptions o;  // the shipped defaults: beta 0.1, cap 64
+    return synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, o);
   }();
   return s;
 }
 
-void BM_RenderAfterSearch(benchmark::State& state) {
+void BM_AfterSearch(benchmark::State& state) {
   const World& w = world();
   const SynthesizedTrack& s = default_track();
   for (auto _ : state) {
     // The bench graph covers every class, so the covered targets are the timeline's own.
-    const auto timeline = place_on_voice_grid(w.phones, kRate);
-    auto pca = render_units(*w.voice.graph, w.voice.frames, s.search, timeline.phones);
+    const auto timeline = place_on_voice_grid(w.phones, kSampleRate);
+    auto pca = concatenate_units(*w.voice.graph, w.voice.frames, s.search, timeline.phones);
     auto tongue = tongue_track(timeline.phones, timeline.phone_of);
     benchmark::DoNotOptimize(pca.data());
     benchmark::DoNotOptimize(tongue.data());
@@ -200,7 +200,7 @@ void BM_RenderAfterSearch(benchmark::State& state) {
   state.counters["anim_s_per_cpu_s"] =
       benchmark::Counter(kSentenceS * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_RenderAfterSearch)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AfterSearch)->Unit(benchmark::kMillisecond);
 
 void BM_FapsAt25(benchmark::State& state) {
   const World& w = world();
@@ -221,7 +221,7 @@ void BM_TimeToFirstFrame(benchmark::State& state) {
   const World& w = world();
   const auto options = options_of(state);
   for (auto _ : state) {
-    auto s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    auto s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options);
     auto first = pca_to_faps(s.pca_frames.topRows(1), w.basis);
     benchmark::DoNotOptimize(first.data());
   }

@@ -3,7 +3,7 @@
 // PCA frames: a stand-in for a voice with the same shape, not a voice. A 10-second target of
 // 120 phones is searched with beta = 0 (units only), beta > 0 (smoothness) and with a cap on the
 // active states; counters report seconds of animation per CPU second and active states.
-#include "fapcast/synthesis/unit_render.hpp"
+#include "fapcast/synthesis/unit_concatenation.hpp"
 #include "fapcast/select/unit_search.hpp"
 
 #include <benchmark/benchmark.h>
@@ -43,7 +43,7 @@ const World& world() {
     std::normal_distribution<float> normal;
     w.frames = Eigen::MatrixXf(f, kK);
     for (Eigen::Index i = 0; i < w.frames.size(); ++i) w.frames.data()[i] = normal(rng);
-    w.graph = std::make_unique<PhoneGraph>(w.states, junction_features(w.states, w.frames));
+    w.graph = std::make_unique<PhoneGraph>(w.states, join_features(w.states, w.frames));
     std::int64_t t = 0;
     for (int n = 0; n < kTargetPhones; ++n) {
       w.targets.push_back(V(cls(rng)));
@@ -85,20 +85,20 @@ BENCHMARK(BM_Search)
     ->Args({10, 16, 0})->Args({10, 16, 1})
     ->Unit(benchmark::kMillisecond);
 
-void BM_SearchAndRender(benchmark::State& state) {
+void BM_SearchAndConcatenate(benchmark::State& state) {
   const World& w = world();
   SearchResult r;
   for (auto _ : state) {
     r = unit_search(*w.graph, w.targets, {0.1, 64});
-    auto y = render_units(*w.graph, w.frames, r, w.timing);
+    auto y = concatenate_units(*w.graph, w.frames, r, w.timing);
     benchmark::DoNotOptimize(y.data());
   }
   report(state, r);
 }
-BENCHMARK(BM_SearchAndRender)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SearchAndConcatenate)->Unit(benchmark::kMillisecond);
 
-// What opening a voice pays for the search. Arg 0: the graph's indices alone; 1: the junction
-// features alone (from the PCA frames); 2: both and the junction bound's centres and axes (its
+// What opening a voice pays for the search. Arg 0: the graph's indices alone; 1: the join
+// features alone (from the PCA frames); 2: both and the join bound's centres and axes (its
 // points are made per diviseme on first use), i.e. what Voice::open does. The bound costs
 // (2) - (1) - (0).
 void BM_GraphOpen(benchmark::State& state) {
@@ -108,10 +108,10 @@ void BM_GraphOpen(benchmark::State& state) {
       PhoneGraph g(w.states);
       benchmark::DoNotOptimize(g.size());
     } else if (state.range(0) == 1) {
-      JunctionFeatures f = junction_features(w.states, w.frames);
+      JoinFeatures f = join_features(w.states, w.frames);
       benchmark::DoNotOptimize(f.entry.data());
     } else {
-      PhoneGraph g(w.states, junction_features(w.states, w.frames));
+      PhoneGraph g(w.states, join_features(w.states, w.frames));
       benchmark::DoNotOptimize(g.size());
     }
   }
@@ -123,14 +123,14 @@ BENCHMARK(BM_GraphOpen)->ArgName("what")->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark
 // or evaluate every join (0: the reference, which never makes the points).
 void BM_OpenAndSearchOnce(benchmark::State& state) {
   const World& w = world();
-  // Fixed malloc thresholds: the graph's 13 MB of junction features are then reused from one
+  // Fixed malloc thresholds: the graph's 13 MB of join features are then reused from one
   // iteration to the next, not returned to the kernel and faulted in again, which glibc's
   // dynamic thresholds do or not depending on the allocation order of the code measured.
   mallopt(M_MMAP_THRESHOLD, 64 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
   SearchResult r;
   for (auto _ : state) {
-    PhoneGraph g(w.states, junction_features(w.states, w.frames));
+    PhoneGraph g(w.states, join_features(w.states, w.frames));
     r = unit_search(g, w.targets, {0.1, 64, state.range(0) != 0});
     benchmark::DoNotOptimize(r.cost);
   }

@@ -75,7 +75,7 @@ void read_corpus(benchmark::State& state, const fs::path& dir) {
     for (std::size_t u = 0; u < listing.utterances.size(); ++u) {
       const CorpusTake take = read_corpus_take(listing, u);
       frames += take.markers.frame_count();
-      benchmark::DoNotOptimize(take.markers.positions_cm.data());
+      benchmark::DoNotOptimize(take.markers.positions.data());
     }
   }
   state.SetItemsProcessed(state.iterations() * frames);  // 60 fps frames

@@ -45,7 +45,7 @@ Loopback stream_into_recv(const std::string& input, const std::string& args, con
   });
   for (int i = 0; i < 100 && slurp(dir + "/recv.err").find("listening") == std::string::npos; ++i)
     std::this_thread::sleep_for(50ms);
-  r.send = run_command(fapcast("stream " + input + " --to " + url + " --no-pace " + args));
+  r.send = run_command(fapcast("stream " + input + " -o " + url + " --no-pace " + args));
   receiver.join();
   r.recv_err = slurp(dir + "/recv.err");
   return r;
@@ -99,12 +99,12 @@ INSTANTIATE_TEST_SUITE_P(Formats, StreamRecv, testing::Values(".fap", ".fba", ".
                          [](const auto& info) { return std::string(info.param + 1); });
 
 TEST(StreamRecvCli, BadUsageAndBadInput) {
-  EXPECT_EQ(run_command(fapcast("stream x.txt --to udp://127.0.0.1:9")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("stream x.txt -o udp://127.0.0.1:9")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("recv udp://127.0.0.1:0 -o out.wav")).exit_code, 2);
-  const auto missing = run_command(fapcast("stream /nonexistent/a.fap --to udp://127.0.0.1:9"));
+  const auto missing = run_command(fapcast("stream /nonexistent/a.fap -o udp://127.0.0.1:9"));
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("/nonexistent/a.fap"), std::string::npos) << missing.err;
-  const auto bad_url = run_command(fapcast("stream " + std::string(FAPCAST_TEST_DATA) + "/xface/joy.fap --to 127.0.0.1:9"));
+  const auto bad_url = run_command(fapcast("stream " + std::string(FAPCAST_TEST_DATA) + "/xface/joy.fap -o 127.0.0.1:9"));
   EXPECT_EQ(bad_url.exit_code, 1);
   EXPECT_NE(bad_url.err.find("udp-url"), std::string::npos) << bad_url.err;
   const auto silent = run_command(fapcast("recv udp://127.0.0.1:0 -o /tmp/never.fap --timeout 0.2"));

@@ -19,7 +19,7 @@ TEST_P(C3dRoundTrip, FloatPositionsReadBackExactly) {
   SCOPED_TRACE(test::reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   const auto [frames, markers] = GetParam();
-  MarkerSet m = test::random_markers(rng, frames, markers);
+  MarkerFrames<Millimetres> m = test::random_markers(rng, frames, markers);
   m.frame_rate_hz = 59.94f;  // a float rate survives exactly
   const std::string bytes = write_c3d(m, {c3d_synthetic_parameter(), {"SESSION", "ACTOR", "ref talker", ""}});
   EXPECT_EQ(bytes.size() % 512, 0u);
@@ -43,19 +43,18 @@ TEST(C3d, ReadsIntegerStorageWithAnalogAndEvents) {
   const C3dFile c = read_c3d(file_bytes(corpus_data() / "good/int_analog.c3d"), "int_analog.c3d");
   EXPECT_FALSE(c.float_storage);
   EXPECT_EQ(c.point_scale, 0.5);
-  const MarkerSet& m = c.markers;
+  const MarkerFrames<Millimetres>& m = c.markers;
   EXPECT_EQ(m.labels, (std::vector<std::string>{"8.1", "8.2", "HEAD_L"}));
   EXPECT_EQ(m.frame_rate_hz, 60.0);
   ASSERT_EQ(m.frame_count(), 5);
   for (Eigen::Index f = 0; f < 5; ++f) {
     for (Eigen::Index p = 0; p < 3; ++p) {
       if (f == 2 && p == 1) {
-        EXPECT_TRUE(m.missing(f, p));
-        EXPECT_EQ(m.position(f, p), Eigen::Vector3d::Zero());
+        EXPECT_FALSE(m.present(p, f));
         continue;
       }
-      EXPECT_FALSE(m.missing(f, p));
-      EXPECT_EQ(m.position(f, p), Eigen::Vector3d(10.0 * p + f, -3.0 * p, 100.0 + f) * 0.5) << f << "," << p;
+      EXPECT_TRUE(m.present(p, f));
+      EXPECT_EQ(m.at(p, f), Eigen::Vector3d(10.0 * p + f, -3.0 * p, 100.0 + f) * 0.5) << f << "," << p;
     }
   }
 }
@@ -64,7 +63,7 @@ TEST(C3d, ConvertsMetresToMillimetres) {
   const C3dFile c = read_c3d(file_bytes(corpus_data() / "good/float_metres.c3d"), "float_metres.c3d");
   EXPECT_EQ(c.units, "m");
   EXPECT_EQ(c.markers.frame_rate_hz, 100.0);
-  EXPECT_EQ(c.markers.position(3, 2), Eigen::Vector3d(23000, -6000, 103000));
+  EXPECT_EQ(c.markers.at(2, 3), Eigen::Vector3d(23000, -6000, 103000));
 }
 
 TEST(C3d, ReadsLabelsContinuedInLabels2) {
@@ -101,13 +100,13 @@ TEST(C3d, FlippedBytesNeverCrash) {
 }
 
 TEST(C3d, WriterRefusesWhatC3dCannotHold) {
-  EXPECT_THROW(write_c3d(MarkerSet::zeros(65536, 0)), std::invalid_argument);
-  MarkerSet unnamed = MarkerSet::zeros(1, 1);
+  EXPECT_THROW(write_c3d(MarkerFrames<Millimetres>::zeros(0, 65536)), std::invalid_argument);
+  MarkerFrames<Millimetres> unnamed = MarkerFrames<Millimetres>::zeros(1, 1);
   EXPECT_THROW(write_c3d(unnamed), std::invalid_argument);
   unnamed.labels[0] = "A";
   EXPECT_THROW(write_c3d(unnamed, {{"point", "X", "lower-case group", ""}}), std::invalid_argument);
   EXPECT_NO_THROW(write_c3d(unnamed));
-  unnamed.positions_mm(0, 1) = 1e39;  // beyond float range
+  unnamed.positions(1, 0) = 1e39;  // beyond float range
   EXPECT_THROW(write_c3d(unnamed), std::invalid_argument);
 }
 

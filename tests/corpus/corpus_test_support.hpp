@@ -2,7 +2,7 @@
 // Helpers for the corpus-format tests: fixture bytes, and seeded random alignments and marker
 // sets (seed from FAPCAST_SEED, printed so a failure can be reproduced).
 #include "fapcast/corpus/alignment.hpp"
-#include "fapcast/corpus/marker_set.hpp"
+#include "fapcast/corpus/marker_frames.hpp"
 
 #include <cstdint>
 #include <cstdlib>
@@ -29,7 +29,7 @@ inline std::uint64_t test_seed() {
 }
 
 inline std::string reproduce_hint(std::uint64_t seed) {
-  return "reproduce: FAPCAST_SEED=" + std::to_string(seed) + " fapcast_synth_tests --gtest_filter=<this test>";
+  return "reproduce: FAPCAST_SEED=" + std::to_string(seed) + " fapcast_corpus_tests --gtest_filter=<this test>";
 }
 
 // A random label: ASCII, quotes, IPA, emoji and (for TextGrid) line breaks.
@@ -73,17 +73,17 @@ inline Alignment random_alignment(std::mt19937_64& rng) {
 }
 
 // Random float-valued positions (mm) with about 5% missing samples.
-inline MarkerSet random_markers(std::mt19937_64& rng, Eigen::Index frames, Eigen::Index markers) {
-  MarkerSet m = MarkerSet::zeros(frames, markers);
+inline MarkerFrames<Millimetres> random_markers(std::mt19937_64& rng, Eigen::Index frames, Eigen::Index markers) {
+  MarkerFrames<Millimetres> m = MarkerFrames<Millimetres>::zeros(markers, frames);
   std::uniform_real_distribution<float> mm(-300.0F, 300.0F);
   for (Eigen::Index i = 0; i < markers; ++i) m.labels[static_cast<std::size_t>(i)] = "M" + std::to_string(i) + (i % 3 ? ".x" : "");
   for (Eigen::Index f = 0; f < frames; ++f) {
     for (Eigen::Index i = 0; i < markers; ++i) {
       if (rng() % 20 == 0) {
-        m.missing(f, i) = true;
+        m.drop(i, f);
         continue;
       }
-      m.set_position(f, i, Eigen::Vector3d(mm(rng), mm(rng), mm(rng)));
+      m.set(i, f, Eigen::Vector3d(mm(rng), mm(rng), mm(rng)));
     }
   }
   m.frame_rate_hz = 60;

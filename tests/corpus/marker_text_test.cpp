@@ -14,28 +14,28 @@ using test::corpus_data;
 using test::file_bytes;
 
 TEST(Trc, ReadsHandWrittenFileInMetres) {
-  const MarkerSet m = read_trc(file_bytes(corpus_data() / "good/hand.trc"), "hand.trc");
+  const MarkerFrames<Millimetres> m = read_trc(file_bytes(corpus_data() / "good/hand.trc"), "hand.trc");
   EXPECT_EQ(m.labels, (std::vector<std::string>{"8.3", "HEAD_R"}));
   EXPECT_EQ(m.frame_rate_hz, 60.0);
   ASSERT_EQ(m.frame_count(), 3);
-  EXPECT_DOUBLE_EQ(m.position(0, 0).x(), 12.5);
-  EXPECT_DOUBLE_EQ(m.position(0, 0).y(), -31.0);
-  EXPECT_TRUE(m.missing(1, 1));  // trailing cells left empty
-  EXPECT_FALSE(m.missing(2, 1));
-  EXPECT_DOUBLE_EQ(m.position(2, 1).z(), 50.0);
+  EXPECT_DOUBLE_EQ(m.at(0, 0).x(), 12.5);
+  EXPECT_DOUBLE_EQ(m.at(0, 0).y(), -31.0);
+  EXPECT_FALSE(m.present(1, 1));  // trailing cells left empty
+  EXPECT_TRUE(m.present(1, 2));
+  EXPECT_DOUBLE_EQ(m.at(1, 2).z(), 50.0);
 }
 
 TEST(MarkerCsv, ReadsHandWrittenFile) {
-  const MarkerSet m = read_marker_csv(file_bytes(corpus_data() / "good/hand.csv"), "hand.csv");
+  const MarkerFrames<Millimetres> m = read_marker_csv(file_bytes(corpus_data() / "good/hand.csv"), "hand.csv");
   EXPECT_EQ(m.labels, (std::vector<std::string>{"2.1", "HEAD_L"}));
   EXPECT_EQ(m.frame_rate_hz, 100.0);
   EXPECT_EQ(m.first_frame, 10);
-  EXPECT_EQ(m.position(2, 0), Eigen::Vector3d(1.75, -21, 33.5));
-  EXPECT_TRUE(m.missing(1, 1));
+  EXPECT_EQ(m.at(0, 2), Eigen::Vector3d(1.75, -21, 33.5));
+  EXPECT_FALSE(m.present(1, 1));
 }
 
 TEST(MarkerCsv, DerivesTheRateFromTimesWithoutASetting) {
-  const MarkerSet m = read_marker_csv("frame,time_s,A.x,A.y,A.z\n1,0,1,2,3\n2,0.25,1,2,3\n3,0.5,1,2,3\n", "t.csv");
+  const MarkerFrames<Millimetres> m = read_marker_csv("frame,time_s,A.x,A.y,A.z\n1,0,1,2,3\n2,0.25,1,2,3\n3,0.5,1,2,3\n", "t.csv");
   EXPECT_EQ(m.frame_rate_hz, 4.0);
 }
 
@@ -48,20 +48,21 @@ TEST_P(MarkerTextRoundTrip, AgreesWithC3dOnRandomSets) {
   SCOPED_TRACE(test::reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   for (int round = 0; round < 10; ++round) {
-    MarkerSet m = test::random_markers(rng, static_cast<Eigen::Index>(rng() % 30),
+    MarkerFrames<Millimetres> m = test::random_markers(rng, static_cast<Eigen::Index>(rng() % 30),
                                        static_cast<Eigen::Index>(rng() % 12));
     m.first_frame = static_cast<std::int64_t>(1 + rng() % 3);
-    const MarkerSet back = GetParam() == TextFormat::trc ? read_trc(write_trc(m), "r.trc")
+    const MarkerFrames<Millimetres> back = GetParam() == TextFormat::trc ? read_trc(write_trc(m), "r.trc")
                                                          : read_marker_csv(write_marker_csv(m), "r.csv");
     if (GetParam() == TextFormat::csv && m.frame_count() > 0) {
       ASSERT_EQ(back, m);  // an empty CSV cannot say its first frame number
     }
-    ASSERT_EQ(back.positions_mm, m.positions_mm);
-    ASSERT_TRUE((back.missing == m.missing).all());
-    EXPECT_EQ(back.labels, m.labels);
-    // The same set through C3D gives the same positions (first frame aside: C3D writes 1).
-    const MarkerSet via_c3d = read_c3d(write_c3d(m), "r.c3d").markers;
-    EXPECT_EQ(via_c3d.positions_mm, back.positions_mm);
+    MarkerFrames<Millimetres> numbered = back;
+    numbered.first_frame = m.first_frame;
+    ASSERT_EQ(numbered, m);  // positions, NaN where missing, labels, rate
+    // The same markers through C3D give the same positions (first frame aside: C3D writes 1).
+    MarkerFrames<Millimetres> via_c3d = read_c3d(write_c3d(m), "r.c3d").markers;
+    via_c3d.first_frame = m.first_frame;
+    EXPECT_EQ(via_c3d, m);
   }
 }
 
@@ -70,7 +71,7 @@ INSTANTIATE_TEST_SUITE_P(Formats, MarkerTextRoundTrip, ::testing::Values(TextFor
 
 TEST(Trc, WriterRoundTripKeepsFirstFrameAndRate) {
   std::mt19937_64 rng(3);
-  MarkerSet m = test::random_markers(rng, 5, 2);
+  MarkerFrames<Millimetres> m = test::random_markers(rng, 5, 2);
   m.first_frame = 7;
   m.frame_rate_hz = 120;
   EXPECT_EQ(read_trc(write_trc(m), "r.trc"), m);

@@ -1,5 +1,5 @@
 // The diviseme baseline (System B): every unit is one recorded diviseme, chosen by duration, cut
-// at the phone centres and rendered by render_units.
+// at the phone centres and concatenated by concatenate_units.
 #include "fapcast/eval/diviseme_baseline.hpp"
 
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@ namespace {
 VisemeClass V(int i) { return static_cast<VisemeClass>(i); }
 
 // Recordings given as (viseme, frame count) lists. Frame value = 100 * recording + frame index
-// within the recording, so a rendered frame says which recording it came from.
+// within the recording, so a concatenated frame says which recording it came from.
 struct Corpus {
   std::vector<PhoneState> states;
   Eigen::MatrixXf frames;
@@ -99,7 +99,7 @@ TEST(DivisemeBaseline, OneRecordingWithItsOwnTimingIsReproduced) {
   const Corpus c = corpus({{{0, 4}, {1, 6}, {2, 2}, {3, 8}, {0, 4}}, {{4, 4}, {5, 4}}});
   const PhoneGraph g(c.states);
   const auto t = targets({{0, 4}, {1, 6}, {2, 2}, {3, 8}, {0, 4}});
-  const Eigen::MatrixXf y = render_divisemes(g, c.frames, select_divisemes(g, t), t, {0, 0.0, 1.0});
+  const Eigen::MatrixXf y = concatenate_divisemes(g, c.frames, select_divisemes(g, t), t, {0, 0.0, 1.0});
   ASSERT_EQ(y.rows(), 24);
   EXPECT_LT((y - c.frames.topRows(24)).cwiseAbs().maxCoeff(), 1e-4f);
 }
@@ -111,26 +111,26 @@ TEST(DivisemeBaseline, DivisemesMeetInTheMiddleOfTheSharedPhone) {
   const PhoneGraph g(c.states);
   const auto t = targets({{0, 4}, {1, 8}, {2, 4}});
   const auto s = select_divisemes(g, t);
-  const Eigen::MatrixXf y = render_divisemes(g, c.frames, s, t, {0, 0.0, 1.0});
+  const Eigen::MatrixXf y = concatenate_divisemes(g, c.frames, s, t, {0, 0.0, 1.0});
   ASSERT_EQ(y.rows(), 16);
   for (int n = 0; n < 8; ++n) EXPECT_LT(y(n, 0), 100.0f) << "frame " << n << " from recording 0";
   for (int n = 8; n < 16; ++n) EXPECT_GE(y(n, 0), 100.0f) << "frame " << n << " from recording 1";
   EXPECT_NEAR(y(7, 0), 7.0f, 1e-4f) << "the first half runs to the middle of phone 1 in recording 0";
   EXPECT_NEAR(y(8, 0), 108.0f, 1e-4f) << "the second half starts at the middle of phone 1 in recording 1";
 
-  // With the real render options the join is cross-faded and smoothed, not a step of 100.
-  const Eigen::MatrixXf smooth = render_divisemes(g, c.frames, s, t);
+  // With the real concatenation options the join is cross-faded and smoothed, not a step of 100.
+  const Eigen::MatrixXf smooth = concatenate_divisemes(g, c.frames, s, t);
   EXPECT_LT(std::abs(smooth(8, 0) - smooth(7, 0)), 60.0f);
 
-  // One-frame phones stay whole and still render every frame.
+  // One-frame phones stay whole and still fill every frame.
   const auto short_t = targets({{0, 4}, {1, 1}, {2, 4}});
-  EXPECT_EQ(render_divisemes(g, c.frames, select_divisemes(g, short_t), short_t).rows(), 9);
+  EXPECT_EQ(concatenate_divisemes(g, c.frames, select_divisemes(g, short_t), short_t).rows(), 9);
   DivisemeSelection wrong = s;
   wrong.divisemes.pop_back();
-  EXPECT_THROW(render_divisemes(g, c.frames, wrong, t), std::invalid_argument);
+  EXPECT_THROW(concatenate_divisemes(g, c.frames, wrong, t), std::invalid_argument);
   wrong = s;
   wrong.divisemes[0].second_state = 4;  // not first_state + 1
-  EXPECT_THROW(render_divisemes(g, c.frames, wrong, t), std::invalid_argument);
+  EXPECT_THROW(concatenate_divisemes(g, c.frames, wrong, t), std::invalid_argument);
 }
 
 }  // namespace

@@ -11,17 +11,17 @@ namespace {
 
 // A take of the six lip-measure markers (plus one unrelated marker first, so rows are looked up
 // by label rather than assumed), `frames` long, with the mouth opening by 0.1 cm per frame.
-MarkerFrames opening_mouth(Eigen::Index frames) {
-  MarkerFrames take;
+MarkerFrames<Centimetres> opening_mouth(Eigen::Index frames) {
+  MarkerFrames<Centimetres> take;
   take.labels = {"2.1", "8.1", "8.2", "8.3", "8.4", "H.temple_l", "H.temple_r"};
-  take.positions_cm.setZero(3 * 7, frames);
+  take.positions.setZero(3 * 7, frames);
   for (Eigen::Index k = 0; k < frames; ++k) {
-    take.positions_cm.block<3, 1>(3, k) = Eigen::Vector3d(0, 0.5, 10);         // 8.1
-    take.positions_cm.block<3, 1>(6, k) = Eigen::Vector3d(0, -0.5 - 0.1 * k, 10);  // 8.2
-    take.positions_cm.block<3, 1>(9, k) = Eigen::Vector3d(2.5, 0, 9);          // 8.3
-    take.positions_cm.block<3, 1>(12, k) = Eigen::Vector3d(-2.5, 0, 9);        // 8.4
-    take.positions_cm.block<3, 1>(15, k) = Eigen::Vector3d(7, 3.5, 0);         // H.temple_l
-    take.positions_cm.block<3, 1>(18, k) = Eigen::Vector3d(-7, 3.5, 0);        // H.temple_r
+    take.positions.block<3, 1>(3, k) = Eigen::Vector3d(0, 0.5, 10);         // 8.1
+    take.positions.block<3, 1>(6, k) = Eigen::Vector3d(0, -0.5 - 0.1 * k, 10);  // 8.2
+    take.positions.block<3, 1>(9, k) = Eigen::Vector3d(2.5, 0, 9);          // 8.3
+    take.positions.block<3, 1>(12, k) = Eigen::Vector3d(-2.5, 0, 9);        // 8.4
+    take.positions.block<3, 1>(15, k) = Eigen::Vector3d(7, 3.5, 0);         // H.temple_l
+    take.positions.block<3, 1>(18, k) = Eigen::Vector3d(-7, 3.5, 0);        // H.temple_r
   }
   return take;
 }
@@ -36,7 +36,7 @@ TEST(LipMeasures, HeightWidthAndProtrusionAreTheDistancesOfSection41) {
 }
 
 TEST(LipMeasures, CurvesOfATakeFollowTheMarkersAndSkipMissingFrames) {
-  MarkerFrames take = opening_mouth(4);
+  MarkerFrames<Centimetres> take = opening_mouth(4);
   take.drop(5, 2);  // H.temple_l missing at frame 2
   const LipCurves curves = lip_curves(take);
   ASSERT_EQ(curves.size(), 4u);
@@ -50,7 +50,7 @@ TEST(LipMeasures, CurvesOfATakeFollowTheMarkersAndSkipMissingFrames) {
 }
 
 TEST(LipMeasures, ATakeWithoutTheTempleMarkersIsRefusedByName) {
-  MarkerFrames take = opening_mouth(2);
+  MarkerFrames<Centimetres> take = opening_mouth(2);
   take.labels[6] = "H.forehead";
   try {
     (void)lip_curves(take);
@@ -61,9 +61,9 @@ TEST(LipMeasures, ATakeWithoutTheTempleMarkersIsRefusedByName) {
 }
 
 TEST(LipMeasures, MeshFramesGiveTheSameCurvesAsMarkersAtTheSameVertices) {
-  const MarkerFrames take = opening_mouth(5);
+  const MarkerFrames<Centimetres> take = opening_mouth(5);
   // A "mesh" of 7 vertices whose vertex v is marker v; frames are rows.
-  Eigen::MatrixXf frames = take.positions_cm.transpose().cast<float>();
+  Eigen::MatrixXf frames = take.positions.transpose().cast<float>();
   const std::array<std::int32_t, 6> vertices = {1, 2, 3, 4, 5, 6};
   const LipCurves from_mesh = lip_curves(frames, vertices);
   const LipCurves from_markers = lip_curves(take);

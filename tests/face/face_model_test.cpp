@@ -6,7 +6,7 @@
 #include <fstream>
 #include <set>
 
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/core/data_root.hpp"
 #include "fapcast/face/marker_map.hpp"
 
@@ -140,7 +140,7 @@ TEST_P(FaceDataBadInput, IsRefusedWithFileLineAndRule) {
     else if (ext == ".tsv") (void)read_marker_spec(path);
     else FAIL() << "no reader for " << path;
     FAIL() << "accepted " << path;
-  } catch (const DataFileError& e) {
+  } catch (const InputError& e) {
     EXPECT_EQ(std::to_string(e.line()) + ": " + e.rule(), GetParam().expected) << e.what();
     EXPECT_NE(std::string(e.what()).find(path.string()), std::string::npos) << e.what();
   }

@@ -3,7 +3,7 @@
 
 #include <fstream>
 
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/face/obj_mesh.hpp"
 #include "support/run_command.hpp"
@@ -44,7 +44,7 @@ TEST(ObjMeshWrite, TopologyMismatchNamesTheFileAndTheFirstDifference) {
     try {
       require_same_topology(a, "generic.obj", s, "specific.obj");
       FAIL() << "accepted " << detail;
-    } catch (const DataFileError& e) {
+    } catch (const InputError& e) {
       EXPECT_EQ(e.rule(), "topology-mismatch");
       EXPECT_EQ(e.where().source, "specific.obj");
       EXPECT_NE(std::string(e.what()).find(detail), std::string::npos) << e.what();

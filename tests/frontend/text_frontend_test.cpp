@@ -1,6 +1,7 @@
 // The espeak-ng front-end: timelines are contiguous and in samples, closures precede releases
 // and sit where the energy drops, and every input class has a defined outcome.
 #include "fapcast/frontend/text_frontend.hpp"
+#include "fapcast/core/wav_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,17 +24,18 @@ double rms(const std::vector<std::int16_t>& s, std::int64_t begin, std::int64_t 
 
 void expect_contiguous(const Speech& speech) {
   ASSERT_FALSE(speech.phones.empty());
+  ASSERT_EQ(speech.events.size(), speech.phones.size());
   EXPECT_EQ(speech.phones.front().start_sample, 0);
   EXPECT_EQ(speech.phones.back().end_sample, static_cast<std::int64_t>(speech.audio.samples.size()));
   for (std::size_t i = 0; i < speech.phones.size(); ++i) {
     const TimedPhone& p = speech.phones[i];
     EXPECT_LT(p.start_sample, p.end_sample) << i;
-    EXPECT_LE(p.start_sample, p.release_sample) << i;
+    EXPECT_LE(p.start_sample, speech.events[i].release_sample) << i;
     if (i > 0) {
       EXPECT_EQ(p.start_sample, speech.phones[i - 1].end_sample) << i;
     }
-    if (p.word != kNoWord) {
-      EXPECT_LT(static_cast<std::size_t>(p.word), speech.words.size());
+    if (speech.events[i].word != kNoWord) {
+      EXPECT_LT(static_cast<std::size_t>(speech.events[i].word), speech.words.size());
     }
   }
 }
@@ -46,7 +48,7 @@ std::string arpabet_of(const Speech& s) {
 
 TEST(TextFrontend, APupGivesPhonesWordsAndEspeakRate) {
   const Speech s = speak("a pup");
-  EXPECT_EQ(s.audio.sample_rate_hz, 22050);
+  EXPECT_EQ(s.audio.sample_rate.hz, 22050);
   expect_contiguous(s);
   EXPECT_EQ(arpabet_of(s), "AH P AH P SIL ");
   ASSERT_EQ(s.words.size(), 2u);
@@ -65,7 +67,7 @@ class Closures : public testing::TestWithParam<const char*> {};
 TEST_P(Closures, ClosurePrecedesReleaseWhereEnergyDrops) {
   const Speech s = speak(GetParam());
   expect_contiguous(s);
-  const std::int64_t ms10 = s.audio.sample_rate_hz / 100;
+  const std::int64_t ms10 = s.audio.sample_rate.hz / 100;
   const std::int64_t ms5 = ms10 / 2;
   int closures = 0;
   for (std::size_t i = 1; i < s.phones.size(); ++i) {
@@ -73,8 +75,8 @@ TEST_P(Closures, ClosurePrecedesReleaseWhereEnergyDrops) {
     const TimedPhone& previous = s.phones[i - 1];
     if (!has_closure(p.phone) || previous.phone == Phone::SIL) continue;
     ++closures;
-    EXPECT_LT(p.start_sample, p.release_sample) << i;
-    EXPECT_LE(p.start_sample, p.event_sample + ms5) << i;
+    EXPECT_LT(p.start_sample, s.events[i].release_sample) << i;
+    EXPECT_LE(p.start_sample, s.events[i].event_sample + ms5) << i;
     double peak = 0;
     for (std::int64_t c = previous.start_sample; c + ms10 <= p.start_sample; c += ms10 / 4) {
       peak = std::max(peak, rms(s.audio.samples, c, c + ms10));
@@ -94,7 +96,7 @@ TEST(TextFrontend, VoicelessClosureStartsWellBeforeEspeaksRelease) {
   const TimedPhone& p = s.phones[1];
   ASSERT_EQ(p.phone, Phone::P);
   // espeak-ng's event is at the burst; the silent closure before it is tens of milliseconds.
-  EXPECT_GT(p.event_sample - p.start_sample, s.audio.sample_rate_hz / 50);
+  EXPECT_GT(s.events[1].event_sample - p.start_sample, s.audio.sample_rate.hz / 50);
 }
 
 TEST(FindClosure, SyntheticStepHasItsOnsetAtTheStep) {
@@ -104,12 +106,12 @@ TEST(FindClosure, SyntheticStepHasItsOnsetAtTheStep) {
   for (int i = 0; i < 2000; ++i) s.push_back(static_cast<std::int16_t>(8000 * std::sin(i * 0.3)));
   s.resize(3200, 0);
   for (int i = 0; i < 1000; ++i) s.push_back(static_cast<std::int16_t>(8000 * std::sin(i * 0.3)));
-  const Closure c = find_closure(s, rate, 0, 3200, 4200);
+  const Closure c = find_closure(s, SampleRate{rate}, 0, 3200, 4200);
   EXPECT_NEAR(static_cast<double>(c.onset_sample), 2000, 100);
   EXPECT_NEAR(static_cast<double>(c.release_sample), 3200, 100);
   // No silence: the closure is the event.
   const std::vector<std::int16_t> tone(s.begin(), s.begin() + 2000);
-  EXPECT_EQ(find_closure(tone, rate, 0, 1000, 2000), (Closure{1000, 1000}));
+  EXPECT_EQ(find_closure(tone, SampleRate{rate}, 0, 1000, 2000), (Closure{1000, 1000}));
 }
 
 TEST(TextFrontend, EmptyAndWhitespaceGiveEmptySpeech) {
@@ -118,7 +120,7 @@ TEST(TextFrontend, EmptyAndWhitespaceGiveEmptySpeech) {
     EXPECT_TRUE(s.audio.samples.empty());
     EXPECT_TRUE(s.phones.empty());
     EXPECT_TRUE(s.words.empty());
-    EXPECT_EQ(s.audio.sample_rate_hz, 22050);
+    EXPECT_EQ(s.audio.sample_rate.hz, 22050);
   }
 }
 
@@ -163,7 +165,7 @@ TEST(TextFrontend, EspeakMnemonicsOfVariedTextAllMap) {
                          "Poor Joy saw the bottle; usually a measure of beige ink. Me all.");
   expect_contiguous(s);
   std::set<std::string> mnemonics;
-  for (const auto& p : s.phones) mnemonics.insert(p.espeak);
+  for (const auto& e : s.events) mnemonics.insert(e.espeak);
   EXPECT_TRUE(mnemonics.count("t#") + mnemonics.count("?") > 0);
   EXPECT_GT(mnemonics.size(), 30u);
 }
@@ -182,12 +184,12 @@ TEST(TextFrontend, ConcurrentCallsAreSerialised) {
   }
 }
 
-TEST(MonoAudio, WavRoundTrip) {
+TEST(Speech, WavRoundTrip) {
   const Speech s = speak("a bob");
   const auto path = std::filesystem::temp_directory_path() / "fapcast_frontend_test.wav";
   write_wav(path, s.audio);
-  const MonoAudio back = read_wav(path);
-  EXPECT_EQ(back.sample_rate_hz, s.audio.sample_rate_hz);
+  const Audio back = read_wav(path);
+  EXPECT_EQ(back.sample_rate.hz, s.audio.sample_rate.hz);
   EXPECT_EQ(back.samples, s.audio.samples);
   EXPECT_THROW(read_wav(path, 10), std::runtime_error);
   std::filesystem::remove(path);

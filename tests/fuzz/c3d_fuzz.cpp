@@ -22,9 +22,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const std::invalid_argument&) {
     return 0;  // e.g. a label with a NUL, or a rate that does not fit a float
   }
-  const MarkerSet back = read_c3d(again, "again").markers;
+  const MarkerFrames<Millimetres> back = read_c3d(again, "again").markers;
   if (back.labels != file.markers.labels || back.frame_count() != file.markers.frame_count() ||
-      !(back.missing == file.markers.missing).all()) {
+      back.positions.array().isNaN().matrix() != file.markers.positions.array().isNaN().matrix()) {
     std::abort();
   }
   return 0;

@@ -1,5 +1,5 @@
 // Fuzzes the synth data readers (OBJ mesh, sparse delta target, spec TSV tables): any input must
-// either parse or throw DataFileError - never crash, hang or allocate from a count in the file.
+// either parse or throw InputError - never crash, hang or allocate from a count in the file.
 #include <unistd.h>
 
 #include <cstdint>
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "fapcast/talker/articulation.hpp"
-#include "fapcast/core/data_file_error.hpp"
+#include "fapcast/core/input_error.hpp"
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/face/marker_map.hpp"
 
@@ -21,10 +21,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   }
   using namespace fapcast;
-  try { (void)read_obj_mesh(file); } catch (const DataFileError&) {}
-  try { (void)read_sparse_delta(file, 1000); } catch (const DataFileError&) {}
-  try { (void)read_marker_spec(file); } catch (const DataFileError&) {}
-  try { (void)read_articulation_spec(file); } catch (const DataFileError&) {}
-  try { (void)read_channel_shape_spec(file); } catch (const DataFileError&) {}
+  try { (void)read_obj_mesh(file); } catch (const InputError&) {}
+  try { (void)read_sparse_delta(file, 1000); } catch (const InputError&) {}
+  try { (void)read_marker_spec(file); } catch (const InputError&) {}
+  try { (void)read_articulation_spec(file); } catch (const InputError&) {}
+  try { (void)read_channel_shape_spec(file); } catch (const InputError&) {}
   return 0;
 }

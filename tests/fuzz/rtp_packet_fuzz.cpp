@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   ReceiverOptions options;
   options.reorder_capacity = 8;
   RtpStreamReceiver receiver(options);
-  ReceivedTrack track(48000, 1000);
+  ReceivedTrack track(SampleRate{48000}, 1000);
   std::vector<ReceivedUnit> units;
   RtpStreamReceiver::Clock::time_point now{};
   std::size_t at = 0;

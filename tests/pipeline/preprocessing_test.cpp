@@ -16,7 +16,7 @@ namespace {
 
 std::string reproduce(std::uint64_t seed) {
   return "reproduce: FAPCAST_SEED=" + std::to_string(seed) +
-         " build/dev/tests/fapcast_synth_tests --gtest_filter='" +
+         " build/dev/tests/fapcast_pipeline_tests --gtest_filter='" +
          ::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name() + ".*'";
 }
 
@@ -26,8 +26,8 @@ Eigen::Matrix3d random_rotation(PortableRandom& random) {
 }
 
 // "a pup strewn", the clean SYNTHETIC marker take of the generic face.
-const MarkerFrames& clean_take() {
-  static const MarkerFrames take = talker_markers(
+const MarkerFrames<Centimetres>& clean_take() {
+  static const MarkerFrames<Centimetres> take = talker_markers(
       ict_face_model(), test::timeline({{"sil", 200}, {"AH0", 70}, {"P", 70}, {"AH1", 100}, {"P", 80},
                                         {"S", 90}, {"T", 50}, {"R", 60}, {"UW1", 180}, {"N", 80},
                                         {"sil", 200}}));
@@ -84,21 +84,21 @@ TEST(HeadPoseRemoval, RecoversFaceMotionToWithinTheNoise) {
   const auto seed = test::test_seed();
   SCOPED_TRACE(reproduce(seed));
   PortableRandom random(seed);
-  const MarkerFrames& clean = clean_take();
+  const MarkerFrames<Centimetres>& clean = clean_take();
   const auto rigid = rigid_marker_rows();
   const Eigen::Matrix3Xd reference = rigid_reference(clean, rigid, 0);
   constexpr double kSigmaMm = 0.2;
   const double noise_rms_cm = std::sqrt(3.0) * kSigmaMm / 10.0;
   for (int take = 0; take < 5; ++take) {
-    MarkerFrames captured = clean;
+    MarkerFrames<Centimetres> captured = clean;
     const HeadMotion motion(random, {3.0, 3.0});
     apply_head_motion(captured, motion);
-    const double moved_rms = std::sqrt((captured.positions_cm - clean.positions_cm).colwise().squaredNorm().mean() /
+    const double moved_rms = std::sqrt((captured.positions - clean.positions).colwise().squaredNorm().mean() /
                                        static_cast<double>(clean.marker_count()));
     add_marker_noise(captured, random, kSigmaMm);
     const PoseRemovalResult result = remove_head_pose(captured, rigid, reference);
     EXPECT_TRUE(result.frames_without_pose.empty());
-    const Eigen::MatrixXd error = result.frames.positions_cm - clean.positions_cm;
+    const Eigen::MatrixXd error = result.frames.positions - clean.positions;
     double squared = 0;
     double worst = 0;
     for (Eigen::Index m = 0; m < clean.marker_count(); ++m)
@@ -116,7 +116,7 @@ TEST(HeadPoseRemoval, RecoversFaceMotionToWithinTheNoise) {
 }
 
 TEST(HeadPoseRemoval, FramesWithFewerThanThreeRigidMarkersAreReported) {
-  MarkerFrames captured = clean_take();
+  MarkerFrames<Centimetres> captured = clean_take();
   const auto rigid = rigid_marker_rows();
   const Eigen::Matrix3Xd reference = rigid_reference(captured, rigid, 0);
   for (std::size_t r = 0; r < 3; ++r) captured.drop(static_cast<Eigen::Index>(rigid[r]), 10);
@@ -129,11 +129,11 @@ TEST(HeadPoseRemoval, FramesWithFewerThanThreeRigidMarkersAreReported) {
 }
 
 // A take with one marker moving on smooth curves (speech-like: 1-4 Hz, cm amplitudes).
-MarkerFrames smooth_take(Eigen::Index frames) {
-  MarkerFrames take{{"a", "b"}, 60, Eigen::MatrixXd(6, frames)};
+MarkerFrames<Centimetres> smooth_take(Eigen::Index frames) {
+  MarkerFrames<Centimetres> take{{"a", "b"}, 60, 1, Eigen::MatrixXd(6, frames)};
   for (Eigen::Index k = 0; k < frames; ++k) {
     const double t = static_cast<double>(k) / 60.0;
-    take.positions_cm.col(k) << 0.5 * std::sin(2 * M_PI * 1.3 * t), 0.3 * std::cos(2 * M_PI * 2.1 * t) + 0.2 * std::sin(2 * M_PI * 0.7 * t),
+    take.positions.col(k) << 0.5 * std::sin(2 * M_PI * 1.3 * t), 0.3 * std::cos(2 * M_PI * 2.1 * t) + 0.2 * std::sin(2 * M_PI * 0.7 * t),
         0.1 * t, 1.0 + 0.4 * t, -2.0 + 0.1 * t, 0.25 * std::sin(2 * M_PI * 3.0 * t);
   }
   return take;
@@ -152,15 +152,15 @@ TEST(GapFill, SplineInterpolatesItsKnotsAndReproducesLines) {
 // Error of filled gaps on smooth trajectories, by gap length: at most 0.05 mm for 3 frames,
 // 0.5 mm for 6, 3 mm for 12 (the longest filled), always below the straight-line chord.
 TEST(GapFill, FillsShortGapsOfSmoothTrajectoriesAccurately) {
-  const MarkerFrames truth = smooth_take(240);
+  const MarkerFrames<Centimetres> truth = smooth_take(240);
   for (const auto& [length, bound_mm] : {std::pair<Eigen::Index, double>{3, 0.05}, {6, 0.5}, {12, 3.0}}) {
-    MarkerFrames holed = truth;
+    MarkerFrames<Centimetres> holed = truth;
     for (Eigen::Index start : {20, 90, 170})
       for (Eigen::Index k = start; k < start + length; ++k) holed.drop(0, k);
     const GapFillResult filled = fill_gaps(holed, {12});
     ASSERT_EQ(filled.gaps.size(), 3u);
     EXPECT_EQ(filled.unfilled_count(), 0u);
-    const double error_mm = 10.0 * (filled.frames.positions_cm - truth.positions_cm).cwiseAbs().maxCoeff();
+    const double error_mm = 10.0 * (filled.frames.positions - truth.positions).cwiseAbs().maxCoeff();
     EXPECT_LT(error_mm, bound_mm) << "gap of " << length << " frames";
   }
 }
@@ -169,13 +169,13 @@ TEST(GapFill, FillsShortGapsOfSmoothTrajectoriesAccurately) {
 // are filled by default (4 frames). Measured over every position in "a pup strewn": RMS error of
 // the lower lip 8.2 is 0.23 mm for 1-frame gaps and 1.1 mm for 4-frame gaps.
 TEST(GapFill, FillsTheTalkersLipMarkerGapsUpToTheDefaultLength) {
-  const MarkerFrames& truth = clean_take();
+  const MarkerFrames<Centimetres>& truth = clean_take();
   const auto lip = static_cast<Eigen::Index>(marker_row("8.2"));
   for (const auto& [length, bound_mm] : {std::pair<Eigen::Index, double>{1, 0.3}, {4, 1.3}}) {
     double squared = 0;
     int samples = 0;
     for (Eigen::Index start = 2; start + length + 2 < truth.frame_count(); ++start) {
-      MarkerFrames holed = truth;
+      MarkerFrames<Centimetres> holed = truth;
       for (Eigen::Index k = start; k < start + length; ++k) holed.drop(lip, k);
       const GapFillResult filled = fill_gaps(holed);
       ASSERT_EQ(filled.unfilled_count(), 0u);
@@ -187,7 +187,7 @@ TEST(GapFill, FillsTheTalkersLipMarkerGapsUpToTheDefaultLength) {
 }
 
 TEST(GapFill, ReportsLongEdgeAndHopelessGapsWithoutFillingThem) {
-  MarkerFrames holed = smooth_take(120);
+  MarkerFrames<Centimetres> holed = smooth_take(120);
   for (Eigen::Index k = 40; k < 53; ++k) holed.drop(0, k);  // 13 frames: one too many
   for (Eigen::Index k = 0; k < 4; ++k) holed.drop(0, k);    // at the start
   for (Eigen::Index k = 1; k < 120; ++k) holed.drop(1, k);  // one sample left
@@ -210,7 +210,7 @@ TEST(Preprocessing, CaptureChainRoundTrip) {
   const auto seed = test::test_seed();
   SCOPED_TRACE(reproduce(seed));
   PortableRandom random(seed);
-  const MarkerFrames& clean = clean_take();
+  const MarkerFrames<Centimetres>& clean = clean_take();
   CaptureSettings settings;
   settings.dropouts = {30.0, 8};
   const CapturedTake take = capture_take(clean, random, settings);
@@ -233,8 +233,8 @@ TEST(Preprocessing, CaptureChainRoundTrip) {
   // Reproducible: the same seed gives the same take, bit for bit.
   PortableRandom again(seed);
   const CapturedTake repeat = capture_take(clean, again, settings);
-  EXPECT_TRUE((take.frames.positions_cm.array() == repeat.frames.positions_cm.array() ||
-               (take.frames.positions_cm.array().isNaN() && repeat.frames.positions_cm.array().isNaN()))
+  EXPECT_TRUE((take.frames.positions.array() == repeat.frames.positions.array() ||
+               (take.frames.positions.array().isNaN() && repeat.frames.positions.array().isNaN()))
                   .all());
 }
 

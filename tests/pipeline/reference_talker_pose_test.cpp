@@ -23,7 +23,7 @@ const FaceModel& actor() {
 
 // RMS (cm) of the difference between two takes over the frames both have and the samples
 // present in both.
-double rms_difference(const MarkerFrames& a, const MarkerFrames& b) {
+double rms_difference(const MarkerFrames<Centimetres>& a, const MarkerFrames<Centimetres>& b) {
   double sum = 0;
   std::size_t n = 0;
   for (Eigen::Index k = 0; k < std::min(a.frame_count(), b.frame_count()); ++k)

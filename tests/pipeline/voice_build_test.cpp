@@ -236,8 +236,8 @@ TEST_F(VoiceBuild, TrcAndCsvWithLabBuildTheSameVoiceAsC3dWithTextGrid) {
 }
 
 bool same_take(const CorpusTake& a, const CorpusTake& b) {
-  const Eigen::MatrixXd& x = a.markers.positions_cm;
-  const Eigen::MatrixXd& y = b.markers.positions_cm;
+  const Eigen::MatrixXd& x = a.markers.positions;
+  const Eigen::MatrixXd& y = b.markers.positions;
   return a.phones == b.phones && a.markers.labels == b.markers.labels && x.rows() == y.rows() && x.cols() == y.cols() &&
          ((x.array() == y.array()) || (x.array().isNaN() && y.array().isNaN())).all() &&
          std::equal(a.spans.begin(), a.spans.end(), b.spans.begin(), b.spans.end(),
@@ -343,7 +343,7 @@ TEST(VoiceCorpusBadCorpora, AreRefusedWithTheGoldenMessages) {
   }
   if (regenerate) {
     std::ofstream(root / "EXPECTED.txt") << "# Golden refusals of the named bad corpora (regenerate: FAPCAST_REGENERATE=1 "
-                                            "fapcast_synth_tests --gtest_filter=*BadCorpora*)\n"
+                                            "fapcast_pipeline_tests --gtest_filter=*BadCorpora*)\n"
                                          << regenerated;
   }
   EXPECT_EQ(golden.size(), names.size());

@@ -85,7 +85,7 @@ double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, do
         const bool next_in_recording = g.has_child(i) && j == i + 1;
         const bool admissible_join = g.has_parent(j) && g.state(j - 1).viseme == g.state(i).viseme;
         if (next_in_recording) step = 0.0;
-        else if (admissible_join) step = 1.0 + beta * junction_cost(g, i, j);
+        else if (admissible_join) step = 1.0 + beta * join_cost(g, i, j);
         else continue;
       }
       if (!lengths.empty()) step += duration_term(g, j, lengths[t], weight);
@@ -113,7 +113,7 @@ TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
       for (auto& v : u) v = visemes(rng);
     }
     const Toy toy = make_toy(utts, rng);
-    const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+    const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
     std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
     for (auto& v : targets) v = V(visemes(rng));
     bool covered = true;
@@ -165,7 +165,7 @@ TEST(UnitSearch, DurationTermFindsTheMinimumCostOnRandomSmallGraphs) {
       for (auto& v : u) v = visemes(rng);
     }
     const Toy toy = make_toy(utts, rng, 3, 1, 6);
-    const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+    const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
     std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
     std::vector<std::int64_t> lengths(targets.size());
     for (auto& v : targets) v = V(visemes(rng));
@@ -183,7 +183,7 @@ TEST(UnitSearch, DurationTermFindsTheMinimumCostOnRandomSmallGraphs) {
     for (std::size_t t = 0; t < targets.size(); ++t) {
       ASSERT_EQ(g.state(r.states[t]).viseme, targets[t]) << where;
       path += duration_term(g, r.states[t], lengths[t], weight);
-      if (t > 0 && r.states[t] != r.states[t - 1] + 1) path += beta * junction_cost(g, r.states[t - 1], r.states[t]);
+      if (t > 0 && r.states[t] != r.states[t - 1] + 1) path += beta * join_cost(g, r.states[t - 1], r.states[t]);
     }
     EXPECT_NEAR(path, r.cost, 1e-9 * (1 + path)) << where;
     ++compared;
@@ -199,7 +199,7 @@ TEST(UnitSearch, DurationTermPrefersTheUnitThatNeedsLessWarping) {
   std::vector<PhoneState> states{{0, V(0), {0, 3}}, {0, V(1), {3, 2}}, {0, V(0), {5, 3}},
                                  {1, V(0), {8, 3}}, {1, V(1), {11, 12}}, {1, V(0), {23, 3}}};
   Eigen::MatrixXf frames = Eigen::MatrixXf::Zero(26, 2);
-  const PhoneGraph g(states, junction_features(states, frames));
+  const PhoneGraph g(states, join_features(states, frames));
   const std::vector<VisemeClass> targets = Vs({0, 1, 0});
   const std::vector<std::int64_t> lengths{3, 11, 3};
   const SearchResult plain = unit_search(g, targets, lengths, with_duration(0.1, 0.0));
@@ -214,7 +214,7 @@ TEST(UnitSearch, DurationTermPrefersTheUnitThatNeedsLessWarping) {
 TEST(UnitSearch, DurationTermRejectsBadLengthsAndWeights) {
   std::mt19937_64 rng(7);
   const Toy toy = make_toy({{0, 1}}, rng);
-  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
   const std::vector<VisemeClass> targets = Vs({0, 1});
   const std::vector<std::int64_t> one{4}, zero{4, 0}, good{4, 5};
   EXPECT_THROW(unit_search(g, targets, one, with_duration(0.0, 1.0)), std::invalid_argument);
@@ -307,10 +307,10 @@ TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultOnLargeSteps) {
   EXPECT_EQ(searches, 6);
 }
 
-// The bounds the pruning rests on (junction_bound.hpp, junction_sketch.hpp) never exceed the cost
+// The bounds the pruning rests on (join_bound.hpp, join_sketch.hpp) never exceed the cost
 // they bound: every admissible join of random graphs, at scales from 1e-6 to 1e6 and far from the
 // origin.
-TEST(JunctionBound, NeverExceedsTheJunctionCost) {
+TEST(JoinBound, NeverExceedsTheJoinCost) {
   std::mt19937_64 rng(test_seed());
   int pairs = 0, tight = 0;
   for (float scale : {1e-6f, 1.0f, 1e6f})
@@ -318,8 +318,8 @@ TEST(JunctionBound, NeverExceedsTheJunctionCost) {
       for (int graph = 0; graph < 4; ++graph) {
         auto voice = test::synthetic_voice_graph(12, 8, 1 + graph % 3, 1 + 4 * graph, rng(), 0.3f, Vs({0, 1, 2, 3}));
         voice.frames = (voice.frames.array() * scale + offset * scale).matrix();
-        const PhoneGraph g(voice.states, junction_features(voice.states, voice.frames));
-        const auto& bound = g.junction_bound();
+        const PhoneGraph g(voice.states, join_features(voice.states, voice.frames));
+        const auto& bound = g.join_bound();
         for (StateId j = 0; j < g.size(); ++j) {
           if (!g.has_parent(j)) continue;
           const VisemeClass from = g.state(j - 1).viseme, to = g.state(j).viseme;
@@ -329,12 +329,12 @@ TEST(JunctionBound, NeverExceedsTheJunctionCost) {
           ASSERT_LT(m, entries.size());
           for (StateId i : g.with_viseme(from)) {
             // Computed per call at first, then from the diviseme's table (the same values).
-            JunctionPoint exit;
+            JoinPoint exit;
             bound.exits(g, from, to, std::span(&i, 1), std::span(&exit, 1));
-            const float floor = JunctionBound::twice_cost_floor(points.entry[m], exit);
-            const float cost = junction_cost(g, i, j);
+            const float floor = JoinBound::twice_cost_floor(points.entry[m], exit);
+            const float cost = join_cost(g, i, j);
             ASSERT_LE(floor, 2.0f * cost) << "scale " << scale << " offset " << offset << " i " << i << " j " << j;
-            // The sketch bound (junction_sketch.hpp), from the same tables the search reads.
+            // The sketch bound (join_sketch.hpp), from the same tables the search reads.
             ASSERT_TRUE(bound.sketched());
             const DivisemeSketches* entry_sketches = bound.entry_sketches(g, from, to);
             if (!entry_sketches) entry_sketches = bound.entry_sketches(g, from, to);  // made on the second call
@@ -342,7 +342,7 @@ TEST(JunctionBound, NeverExceedsTheJunctionCost) {
             SketchRef sketch;
             std::vector<std::int16_t> buffer;
             bound.exit_sketches(g, from, std::span(&i, 1), std::span(&sketch, 1), buffer);
-            const auto dims = g.junction().entry.cols();
+            const auto dims = g.join_features().entry.cols();
             const std::int32_t distance2 =
                 sketch_distance2(entry_sketches->entry.data() + m * static_cast<std::size_t>(dims), sketch.values, dims);
             const double sketch_floor = sketch_cost_floor(
@@ -361,9 +361,9 @@ TEST(UnitSearch, PrefersOneLongUnitOverPieces) {
   std::mt19937_64 rng(1);
   // Recording 1 holds the whole target; recordings 0 and 2 hold only pieces of it.
   const Toy toy = make_toy({{0, 1, 5}, {3, 0, 1, 2, 4}, {2, 4, 3}}, rng);
-  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
   const std::vector<VisemeClass> targets = Vs({0, 1, 2, 4});
-  const SearchResult r = unit_search(g, targets);
+  const SearchResult r = unit_search(g, targets, {0.0, {}});  // fewest units alone
   ASSERT_EQ(r.units.size(), 1u);
   EXPECT_EQ(r.units[0], (Unit{4, 0, 4}));
   EXPECT_EQ(r.cost, 1.0);
@@ -374,7 +374,7 @@ TEST(UnitSearch, JoinsOnlyWhereTheParentVisemeMatches) {
   // Target 0 1 2: recording 0 gives "0 1"; "2" exists after a 1 (recording 1) and after a 3
   // (recording 2). Only recording 1's /2/ may follow a unit ending in viseme 1.
   const Toy toy = make_toy({{0, 1}, {1, 2}, {3, 2}}, rng);
-  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
   const std::vector<VisemeClass> targets = Vs({0, 1, 2});
   const SearchResult r = unit_search(g, targets, {1.0, {}});
   ASSERT_EQ(r.states.size(), 3u);
@@ -388,7 +388,7 @@ TEST(UnitSearch, UncoverableVisemeIsNamed) {
   const PhoneGraph g(toy.states);
   const std::vector<VisemeClass> targets = Vs({0, 7});  // class 7: sibilant, never recorded
   try {
-    unit_search(g, targets);
+    unit_search(g, targets, {0.0, {}});
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("(target phone 1)"), std::string::npos) << e.what();
@@ -404,7 +404,7 @@ TEST(UnitSearch, CapBoundsActiveStatesAndStillFindsAPath) {
     for (auto& v : u) v = visemes(rng);
   }
   const Toy toy = make_toy(utts, rng);
-  const PhoneGraph g(toy.states, junction_features(toy.states, toy.frames));
+  const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
   std::vector<VisemeClass> targets(40);
   for (auto& v : targets) v = V(visemes(rng));
   const SearchResult full = unit_search(g, targets, {0.1, {}});
@@ -420,7 +420,7 @@ TEST(UnitSearch, HardJoinWhenADivisemeWasNeverRecorded) {
   const Toy toy = make_toy({{0, 1}, {2, 3}}, rng);
   const PhoneGraph g(toy.states);
   const std::vector<VisemeClass> targets = Vs({1, 3});  // "1 3" never occurs; no /3/ follows a /1/
-  const SearchResult r = unit_search(g, targets);
+  const SearchResult r = unit_search(g, targets, {0.0, {}});  // a graph without join features
   EXPECT_EQ(r.stats.hard_joins, 1u);
   EXPECT_EQ(r.states, (std::vector<StateId>{1, 3}));
 }
@@ -438,14 +438,14 @@ TEST(PhoneGraph, IndexesStatesByVisemeAndDiviseme) {
   EXPECT_THROW(PhoneGraph({{0, V(21), {0, 1}}}), std::invalid_argument);
 }
 
-TEST(PhoneGraph, JunctionCostIsTheMeanSquaredSecondDifference) {
+TEST(PhoneGraph, JoinCostIsTheMeanSquaredSecondDifference) {
   // Two recordings of one phone each, 2 frames each, k = 1: trajectories [0, 1] and [5, 3].
   std::vector<PhoneState> states{{0, V(0), {0, 2}}, {1, V(1), {2, 2}}};
   Eigen::MatrixXf frames(4, 1);
   frames << 0, 1, 5, 3;
-  const PhoneGraph g(states, junction_features(states, frames));
-  // Concatenated 0 1 5 3: second differences at the junction are 5-2+0 = 3 and 3-10+1 = -6.
-  EXPECT_FLOAT_EQ(junction_cost(g, 0, 1), 0.5f * (9 + 36));
+  const PhoneGraph g(states, join_features(states, frames));
+  // Concatenated 0 1 5 3: second differences at the join are 5-2+0 = 3 and 3-10+1 = -6.
+  EXPECT_FLOAT_EQ(join_cost(g, 0, 1), 0.5f * (9 + 36));
 }
 
 }  // namespace

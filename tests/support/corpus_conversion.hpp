@@ -26,10 +26,10 @@ enum class AlignmentFormat { textgrid, lab };
 inline std::string extension_of(MarkerFormat f) { return f == MarkerFormat::c3d ? ".c3d" : f == MarkerFormat::trc ? ".trc" : ".csv"; }
 
 // `set` with `factor` - 1 linearly interpolated frames between each pair (missing if either is).
-inline MarkerSet upsampled(const MarkerSet& set, int factor) {
+inline MarkerFrames<Millimetres> upsampled(const MarkerFrames<Millimetres>& set, int factor) {
   if (factor == 1 || set.frame_count() == 0) return set;
   const Eigen::Index frames = (set.frame_count() - 1) * factor + 1;
-  MarkerSet out = MarkerSet::zeros(frames, set.marker_count());
+  MarkerFrames<Millimetres> out = MarkerFrames<Millimetres>::missing(set.marker_count(), frames);
   out.labels = set.labels;
   out.frame_rate_hz = set.frame_rate_hz * factor;
   for (Eigen::Index k = 0; k < frames; ++k) {
@@ -37,12 +37,9 @@ inline MarkerSet upsampled(const MarkerSet& set, int factor) {
     const double t = static_cast<double>(k % factor) / factor;
     for (Eigen::Index m = 0; m < set.marker_count(); ++m) {
       if (t == 0) {
-        out.missing(k, m) = set.missing(i, m);
-        out.set_position(k, m, set.position(i, m));
-      } else if (set.missing(i, m) || set.missing(i + 1, m)) {
-        out.missing(k, m) = true;
-      } else {
-        out.set_position(k, m, (1 - t) * set.position(i, m) + t * set.position(i + 1, m));
+        out.positions.block<3, 1>(3 * m, k) = set.at(m, i);  // NaN where missing
+      } else if (set.present(m, i) && set.present(m, i + 1)) {
+        out.set(m, k, (1 - t) * set.at(m, i) + t * set.at(m, i + 1));
       }
     }
   }
@@ -62,7 +59,7 @@ inline void convert_corpus(const std::filesystem::path& from, const std::filesys
     const std::string c3d_name = u["files"]["markers"];
     const std::string grid_name = u["files"]["alignment"];
     const C3dFile c3d = read_c3d(read_file(from / c3d_name), c3d_name);
-    const MarkerSet set = upsampled(c3d.markers, upsample);
+    const MarkerFrames<Millimetres> set = upsampled(c3d.markers, upsample);
     const std::string marker_name = id + extension_of(markers);
     write_file_atomically(to / marker_name, markers == MarkerFormat::c3d   ? write_c3d(set, {c3d_synthetic_parameter()})
                                                        : markers == MarkerFormat::trc ? write_trc(set, marker_name)

@@ -1,6 +1,6 @@
 #pragma once
 // A SYNTHETIC stand-in for a voice's search data: recordings of random phones whose PCA frames
-// hold a known per-class shape (so tests can see what was rendered) plus optional noise. Not a
+// hold a known per-class shape (so tests can see what was concatenated) plus optional noise. Not a
 // voice: no mesh, no retargeting.
 #include "fapcast/select/phone_graph.hpp"
 
@@ -35,7 +35,7 @@ inline SyntheticVoiceGraph synthetic_voice_graph(std::uint32_t recordings, int p
                                                  std::uint32_t frames_per_phone, Eigen::Index k,
                                                  std::uint64_t seed, float noise = 0.0f,
                                                  std::vector<VisemeClass> classes = {},
-                                                 bool junction_features = true,
+                                                 bool join_features = true,
                                                  std::uint32_t max_frames_per_phone = 0) {
   if (classes.empty())
     for (std::size_t v = 0; v < kVisemeClassCount; ++v) classes.push_back(static_cast<VisemeClass>(v));
@@ -57,7 +57,7 @@ inline SyntheticVoiceGraph synthetic_voice_graph(std::uint32_t recordings, int p
     for (std::uint32_t n = s.frames.first; n < s.frames.first + s.frames.count; ++n)
       for (Eigen::Index c = 0; c < k; ++c)
         g.frames(n, c) = class_shape(s.viseme, c) + (noise > 0 ? noise * normal(rng) : 0.0f);
-  g.graph = junction_features ? std::make_unique<PhoneGraph>(g.states, fapcast::junction_features(g.states, g.frames))
+  g.graph = join_features ? std::make_unique<PhoneGraph>(g.states, fapcast::join_features(g.states, g.frames))
                               : std::make_unique<PhoneGraph>(g.states);
   return g;
 }

@@ -43,21 +43,21 @@ TEST(PortableRandom, DistributionsHaveTheirMomentsAndRepeat) {
   EXPECT_DOUBLE_EQ(g.uniform(), static_cast<double>(std::mt19937_64(42)() >> 11) * 0x1.0p-53);
 }
 
-MarkerFrames still_take(Eigen::Index markers, Eigen::Index frames) {
-  MarkerFrames take;
+MarkerFrames<Centimetres> still_take(Eigen::Index markers, Eigen::Index frames) {
+  MarkerFrames<Centimetres> take;
   take.labels.assign(static_cast<std::size_t>(markers), "m");
-  take.positions_cm = Eigen::MatrixXd::Zero(3 * markers, frames);
+  take.positions = Eigen::MatrixXd::Zero(3 * markers, frames);
   for (Eigen::Index m = 0; m < markers; ++m)
-    take.positions_cm.middleRows(3 * m, 3).colwise() = Eigen::Vector3d(m % 5 - 2.0, m / 5 - 2.0, 10.0);
+    take.positions.middleRows(3 * m, 3).colwise() = Eigen::Vector3d(m % 5 - 2.0, m / 5 - 2.0, 10.0);
   return take;
 }
 
 TEST(CaptureImperfections, MarkerNoiseHasTheStatedSigma) {
-  MarkerFrames take = still_take(20, 600);
-  const MarkerFrames clean = take;
+  MarkerFrames<Centimetres> take = still_take(20, 600);
+  const MarkerFrames<Centimetres> clean = take;
   PortableRandom random(test::test_seed());
   add_marker_noise(take, random, 0.2);
-  const Eigen::MatrixXd e = (take.positions_cm - clean.positions_cm) * 10.0;  // mm
+  const Eigen::MatrixXd e = (take.positions - clean.positions) * 10.0;  // mm
   const double sigma = std::sqrt(e.squaredNorm() / static_cast<double>(e.size()));
   EXPECT_NEAR(sigma, 0.2, 0.01);
   EXPECT_NEAR(e.mean(), 0.0, 0.01);
@@ -88,7 +88,7 @@ TEST(CaptureImperfections, HeadMotionIsSmallAndSmooth) {
 }
 
 TEST(CaptureImperfections, DroppedRunsAreMissingAndWithinLimits) {
-  MarkerFrames take = still_take(30, 3600);  // one minute
+  MarkerFrames<Centimetres> take = still_take(30, 3600);  // one minute
   PortableRandom random(test::test_seed());
   const auto runs = drop_marker_runs(take, random, {3.0, 24});
   // Expected 90 runs (30 markers x 3 per minute); Poisson spread.
@@ -111,17 +111,17 @@ TEST(CaptureImperfections, DroppedRunsAreMissingAndWithinLimits) {
 TEST(CaptureImperfections, SameSeedSameTakeOtherSeedOtherTake) {
   const auto make = [](std::uint64_t seed) {
     PortableRandom random(seed);
-    MarkerFrames take = still_take(10, 300);
+    MarkerFrames<Centimetres> take = still_take(10, 300);
     apply_head_motion(take, HeadMotion(random));
     add_marker_noise(take, random);
     drop_marker_runs(take, random, {20.0, 10});
     return take;
   };
-  const MarkerFrames a = make(5), b = make(5), c = make(6);
-  EXPECT_TRUE(a.positions_cm.cwiseEqual(b.positions_cm).count() +
-                  (a.positions_cm.array().isNaN() && b.positions_cm.array().isNaN()).count() ==
-              a.positions_cm.size());
-  EXPECT_FALSE(a.positions_cm.isApprox(c.positions_cm));
+  const MarkerFrames<Centimetres> a = make(5), b = make(5), c = make(6);
+  EXPECT_TRUE(a.positions.cwiseEqual(b.positions).count() +
+                  (a.positions.array().isNaN() && b.positions.array().isNaN()).count() ==
+              a.positions.size());
+  EXPECT_FALSE(a.positions.isApprox(c.positions));
 }
 
 TEST(CaptureImperfections, UtteranceVariationStaysInRange) {

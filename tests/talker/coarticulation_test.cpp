@@ -43,13 +43,13 @@ TEST_P(BilabialClosure, LipsClosedAtTheCentreOfEveryBilabial) {
   int bilabials = 0;
   for (std::size_t i = 0; i < t.phones.size(); ++i) {
     const auto& p = t.phones[i].phone;
-    if (p != "P" && p != "B" && p != "M") continue;
+    if (p != Phone::P && p != Phone::B && p != Phone::M) continue;
     ++bilabials;
     for (const FaceModel* face : {&generic, &actor})
       for (const float effort : {0.85f, 1.0f, 1.15f}) {
         const auto [vertical, distance] = inner_lip_gap_mm(*face, t, centre_s(t, i), effort);
-        EXPECT_LT(std::abs(vertical), 1.0) << "phone " << i << " /" << p << "/ effort " << effort;
-        EXPECT_LT(distance, 2.5) << "phone " << i << " /" << p << "/ effort " << effort;
+        EXPECT_LT(std::abs(vertical), 1.0) << "phone " << i << " /" << arpabet(p) << "/ effort " << effort;
+        EXPECT_LT(distance, 2.5) << "phone " << i << " /" << arpabet(p) << "/ effort " << effort;
       }
   }
   EXPECT_GT(bilabials, 0);
@@ -120,7 +120,7 @@ TEST(Coarticulation, TongueAndJawFollowThePhones) {
 TEST(Coarticulation, RandomUtterancesAreContinuousAndInRange) {
   const auto seed = test::test_seed();
   SCOPED_TRACE("reproduce: FAPCAST_SEED=" + std::to_string(seed) +
-               " fapcast_synth_tests --gtest_filter='Coarticulation.*'");
+               " fapcast_talker_tests --gtest_filter='Coarticulation.*'");
   PortableRandom random(seed);
   const auto phones = articulation_phones();
   const ShapeMapper mapper(ict_face_model());
@@ -146,16 +146,15 @@ TEST(Coarticulation, RandomUtterancesAreContinuousAndInRange) {
 }
 
 TEST(Coarticulation, RefusesBadTimelines) {
-  EXPECT_THROW((void)coarticulate(PhoneTimeline{0, {}}), std::invalid_argument);
-  EXPECT_THROW((void)coarticulate(PhoneTimeline{16000, {{"AA", 100, 100}}}), std::invalid_argument);
-  EXPECT_THROW((void)coarticulate(PhoneTimeline{16000, {{"AA", 0, 100}, {"P", 50, 150}}}), std::invalid_argument);
+  EXPECT_THROW((void)coarticulate(PhoneTimeline{SampleRate{0}, {}}), std::invalid_argument);
+  EXPECT_THROW((void)coarticulate(PhoneTimeline{SampleRate{16000}, {{Phone::AA, 100, 100}}}), std::invalid_argument);
   try {
-    (void)coarticulate(PhoneTimeline{16000, {{"AA", 0, 100}, {"XX", 100, 150}}});
+    (void)coarticulate(PhoneTimeline{SampleRate{16000}, {{Phone::AA, 0, 100}, {Phone::P, 50, 150}}});
     FAIL();
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("phone 1 'XX'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("phone 1 'P'"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(coarticulate(PhoneTimeline{16000, {}}).frame_count(), 0);
+  EXPECT_EQ(coarticulate(PhoneTimeline{SampleRate{16000}, {}}).frame_count(), 0);
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 #include "fapcast/talker/reference_talker.hpp"
 
 #include "fapcast/corpus/c3d.hpp"
-#include "fapcast/corpus/marker_conversion.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/core/synthetic_label.hpp"
 #include "fapcast/corpus/textgrid.hpp"
@@ -30,7 +29,7 @@ const FaceModel& actor() {
 
 // RMS (cm) of the difference between two takes over the frames both have and the samples
 // present in both (another seed also draws another speaking rate, so lengths may differ).
-double rms_difference(const MarkerFrames& a, const MarkerFrames& b, std::size_t* samples = nullptr) {
+double rms_difference(const MarkerFrames<Centimetres>& a, const MarkerFrames<Centimetres>& b, std::size_t* samples = nullptr) {
   double sum = 0;
   std::size_t n = 0;
   for (Eigen::Index k = 0; k < std::min(a.frame_count(), b.frame_count()); ++k)
@@ -48,9 +47,9 @@ TEST(ReferenceTalker, C3dAndTextGridReadBackWhatWasRecorded) {
   const ReferenceTake take = record_take(word("a pup"), "utt0001", actor(), random);
   ASSERT_GT(take.captured.frame_count(), 20);
 
-  const C3dFile c3d = read_c3d(write_c3d(to_marker_set(take.captured), {c3d_synthetic_parameter()}), "utt0001.c3d");
+  const C3dFile c3d = read_c3d(write_c3d(to_millimetres(take.captured), {c3d_synthetic_parameter()}), "utt0001.c3d");
   EXPECT_EQ(c3d.text_parameters.at("FAPCAST:SYNTHETIC"), kSyntheticLabel);
-  const MarkerFrames back = to_marker_frames(c3d.markers);
+  const MarkerFrames<Centimetres> back = to_centimetres(c3d.markers);
   ASSERT_EQ(back.labels, take.captured.labels);
   ASSERT_EQ(back.frame_count(), take.captured.frame_count());
   std::size_t samples = 0;
@@ -105,7 +104,7 @@ TEST(ReferenceTalker, CorpusDirectoryHasManifestAndSaysSynthetic) {
     EXPECT_TRUE(files.count(stem + ".c3d")) << stem;
     EXPECT_TRUE(files.count(stem + ".TextGrid")) << stem;
     EXPECT_TRUE(std::filesystem::exists(dir / (stem + ".wav"))) << stem;
-    EXPECT_EQ(read_wav(dir / (stem + ".wav")).sample_rate_hz, u["sample_rate_hz"]);
+    EXPECT_EQ(read_wav(dir / (stem + ".wav")).sample_rate.hz, u["sample_rate_hz"]);
   }
   EXPECT_EQ(manifest["utterances"][2]["section"], "nonsense");
   std::filesystem::remove_all(dir);

@@ -38,10 +38,10 @@ TEST(FbaTrack, UnitsSitOnTheWavTimelineWithIntraAtThePeriod) {
   FbaEncoderOptions o;
   o.intra_period = 12;
   std::vector<MediaUnit> units;
-  ASSERT_FALSE(encode_track_units(seq, 44100, o, units));
+  ASSERT_FALSE(encode_track_units(seq, SampleRate{44100}, o, units));
   ASSERT_EQ(units.size(), 100u);
   for (std::size_t k = 0; k < units.size(); ++k) {
-    EXPECT_EQ(units[k].sample, frame_to_sample(static_cast<std::int64_t>(k), {30000, 1001}, 44100));
+    EXPECT_EQ(units[k].sample, frame_to_sample(static_cast<std::int64_t>(k), {30000, 1001}, SampleRate{44100}));
     EXPECT_EQ(units[k].intra, k % 12 == 0) << k;
   }
 }
@@ -64,11 +64,11 @@ TEST_P(FbaOverLossyRtp, DecodedFramesAreExactAndGapsHold) {
   o.fap_quant = 0;
   o.intra_period = 15;
   std::vector<MediaUnit> units;
-  ASSERT_FALSE(encode_track_units(seq, clock, o, units));
+  ASSERT_FALSE(encode_track_units(seq, SampleRate{clock}, o, units));
   ReceiverOptions ro;
-  ro.clock_rate = clock;
+  ro.clock_rate = SampleRate{clock};
   RtpStreamReceiver rx(ro);
-  ReceivedTrack track(clock, 100000);
+  ReceivedTrack track(SampleRate{clock}, 100000);
   RtpStreamIds ids{99, 65000, 4'294'000'000u};
   std::vector<ReceivedUnit> out;
   Clock::time_point now{};
@@ -115,8 +115,8 @@ TEST(ReceivedTrack, HostileTimestampsCannotGrowTheTrack) {
   FbaEncoderOptions o;
   o.intra_period = 1;
   std::vector<MediaUnit> units;
-  ASSERT_FALSE(encode_track_units(seq, 48000, o, units));
-  ReceivedTrack track(48000, 20);
+  ASSERT_FALSE(encode_track_units(seq, SampleRate{48000}, o, units));
+  ReceivedTrack track(SampleRate{48000}, 20);
   for (std::size_t i = 0; i < units.size(); ++i) {
     ReceivedUnit u;
     u.bytes = units[i].bytes;
@@ -134,7 +134,7 @@ TEST_P(TrackFileRoundTrip, WritesAndReadsBackTheSameFrames) {
   const auto seq = smooth_track(40, {25, 1});
   const std::string path = test::make_temp_dir("track") + "/t" + GetParam();
   TrackWriteOptions options;
-  options.sample_rate = 48000;
+  options.sample_rate = SampleRate{48000};
   const auto notes = write_track_file(path, seq, options);
   const auto back = read_track_file(path);
   EXPECT_EQ(back.frames, seq.frames);

@@ -47,7 +47,7 @@ TEST(Voice, OpensACompleteVoiceAndHandsOutItsParts) {
   EXPECT_EQ(voice.frame_coefficients()(1, 0), -0.5f);
   ASSERT_EQ(voice.graph().size(), 2u);
   EXPECT_EQ(voice.graph().state(1).viseme, VisemeClass::kBilabial);
-  EXPECT_TRUE(voice.graph().has_junction_features());
+  EXPECT_TRUE(voice.graph().has_join_features());
   ASSERT_EQ(voice.state_phones().size(), 2u);
   EXPECT_EQ(voice.state_phones()[1], Phone::M);
   EXPECT_EQ(voice.graph().entries(VisemeClass::kSilence, VisemeClass::kBilabial).size(), 1u);

@@ -11,15 +11,15 @@ __extension__ typedef __int128 Int128;
 // The frame whose start is nearest `samples` after the first frame: the sender rounded each
 // frame's start to a whole sample, so a difference of two starts may be one sample off the
 // exact multiple; rounding to the nearest frame absorbs that.
-std::int64_t nearest_frame(std::int64_t samples, FrameRate rate, std::int64_t clock_rate) {
+std::int64_t nearest_frame(std::int64_t samples, FrameRate rate, SampleRate clock_rate) {
   if (samples < 0) return -1;
-  const Int128 num = 2 * static_cast<Int128>(samples) * rate.numerator + static_cast<Int128>(clock_rate) * rate.denominator;
-  const Int128 den = 2 * static_cast<Int128>(clock_rate) * rate.denominator;
+  const Int128 num = 2 * static_cast<Int128>(samples) * rate.numerator + static_cast<Int128>(clock_rate.hz) * rate.denominator;
+  const Int128 den = 2 * static_cast<Int128>(clock_rate.hz) * rate.denominator;
   return static_cast<std::int64_t>(num / den);
 }
 }  // namespace
 
-std::error_code encode_track_units(const FapSequence& seq, std::int64_t clock_rate,
+std::error_code encode_track_units(const FapSequence& seq, SampleRate clock_rate,
                                    const FbaEncoderOptions& options,
                                    std::vector<MediaUnit>& out, std::int64_t* frame_index) {
   FbaFrameEncoder encoder(options, seq.rate);
@@ -37,8 +37,8 @@ std::error_code encode_track_units(const FapSequence& seq, std::int64_t clock_ra
   return {};
 }
 
-ReceivedTrack::ReceivedTrack(std::int64_t clock_rate, std::int64_t max_frames)
-    : clock_rate_(std::max<std::int64_t>(1, clock_rate)), max_frames_(std::max<std::int64_t>(1, max_frames)) {}
+ReceivedTrack::ReceivedTrack(SampleRate clock_rate, std::int64_t max_frames)
+    : clock_rate_{std::max<std::int64_t>(1, clock_rate.hz)}, max_frames_(std::max<std::int64_t>(1, max_frames)) {}
 
 std::error_code ReceivedTrack::add(const ReceivedUnit& unit) {
   const FbaProfile profile = unit.fapcast ? FbaProfile::kFapcast : FbaProfile::kStandard;

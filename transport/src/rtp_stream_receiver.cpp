@@ -27,12 +27,12 @@ std::ostream& operator<<(std::ostream& out, const ReceiverStats& s) {
 RtpStreamReceiver::RtpStreamReceiver(ReceiverOptions options) : options_(options) {
   if (options_.reorder_capacity == 0) options_.reorder_capacity = 1;
   if (options_.reorder_capacity > kHistory / 2) options_.reorder_capacity = kHistory / 2;
-  if (options_.clock_rate < 1) options_.clock_rate = 1;
+  if (!options_.clock_rate.valid()) options_.clock_rate = SampleRate{1};
   ssrc_ = options_.ssrc;
 }
 
 double RtpStreamReceiver::jitter_seconds() const {
-  return stats_.jitter / static_cast<double>(options_.clock_rate);
+  return stats_.jitter / static_cast<double>(options_.clock_rate.hz);
 }
 
 std::error_code RtpStreamReceiver::on_datagram(std::span<const std::uint8_t> datagram,

@@ -59,19 +59,19 @@ RtpStreamer::RtpStreamer(asio::io_context& io, udp::endpoint destination, Stream
                             "destination port must be 1..65532 (P..P+3 are used)");
 }
 
-StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const WavAudio* audio) {
+StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Audio* audio) {
   std::error_code ec;
   StreamReport report = run(animation, audio, ec);
   if (ec) throw std::system_error(ec, "stream to " + destination_.address().to_string());
   return report;
 }
 
-StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const WavAudio* audio,
+StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Audio* audio,
                               std::error_code& ec) {
   using Clock = std::chrono::steady_clock;
   ec.clear();
   StreamReport report;
-  const std::int64_t clock = std::max<std::int64_t>(1, options_.clock_rate);
+  const std::int64_t clock = std::max<std::int64_t>(1, options_.clock_rate.hz);
   if (audio && !audio_rtp_) {
     audio_rtp_.emplace(io_, offset_port(destination_, 2), options_.socket);
     audio_rtcp_.emplace(io_, offset_port(destination_, 3), options_.socket);
@@ -86,7 +86,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Wav
   // and reported as wallclock wall_start + s/clock, the same instant for both streams.
   const Clock::time_point start = Clock::now();
   const auto wall_start = std::chrono::system_clock::now();
-  const auto media_time = [clock](std::int64_t s) { return samples_to_duration(s, clock); };
+  const auto media_time = [clock](std::int64_t s) { return samples_to_duration(s, SampleRate{clock}); };
   asio::steady_timer timer(io_);
   std::vector<std::uint8_t> packet;
   std::size_t next_unit = 0;

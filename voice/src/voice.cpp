@@ -158,8 +158,8 @@ Voice Voice::from_view(VoiceFileView view) {
       refuse(view, vs::kFaceMaps, "non-finite", "a face map holds a NaN or an infinity");
   }
   Eigen::MatrixXf frames = coefficients;
-  JunctionFeatures junction = junction_features(graph.states, frames);
-  PhoneGraph phone_graph(std::move(graph.states), std::move(junction));
+  JoinFeatures join = join_features(graph.states, frames);
+  PhoneGraph phone_graph(std::move(graph.states), std::move(join));
   return Voice(std::move(view), std::move(provenance), std::move(points), std::move(rigid), std::move(frames),
                std::move(phone_graph), std::move(graph.phones), std::move(graph.utterances), std::move(map));
 }

@@ -7,8 +7,6 @@
 
 namespace fapcast {
 namespace {
-__extension__ typedef __int128 Int128;
-
 std::string describe(std::span<const TimedPhone> phones, std::size_t i) {
   return "phone " + std::to_string(i) + " '" + std::string(arpabet(phones[i].phone)) + "' [" +
          std::to_string(phones[i].start_sample) + ", " + std::to_string(phones[i].end_sample) + ")";
@@ -23,30 +21,16 @@ void append(TargetTimeline& out, Phone phone, std::int64_t first, std::int64_t e
 
 }  // namespace
 
-std::int64_t voice_frame_sample(std::int64_t n, std::int64_t sample_rate_hz) {
-  // round(n * rate / 60) with halves up = floor((2 n rate + 60) / 120).
-  const Int128 twice = static_cast<Int128>(2) * n * sample_rate_hz + kVoiceFramesPerSecond;
-  return static_cast<std::int64_t>(twice / (2 * kVoiceFramesPerSecond));
-}
-
-std::int64_t first_voice_frame_at(std::int64_t sample, std::int64_t sample_rate_hz) {
-  // Smallest n >= 0 with floor((2 n R + 60) / 120) >= s, i.e. 2 n R >= 120 s - 60.
-  const Int128 need = static_cast<Int128>(2 * kVoiceFramesPerSecond) * sample - kVoiceFramesPerSecond;
-  if (need <= 0) return 0;
-  const Int128 step = static_cast<Int128>(2) * sample_rate_hz;
-  return static_cast<std::int64_t>((need + step - 1) / step);
-}
-
-TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, std::int64_t sample_rate_hz,
+TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, SampleRate sample_rate,
                                    std::int64_t end_sample, const std::string& source) {
-  if (sample_rate_hz < 1)
-    throw std::invalid_argument("voice grid: sample rate " + std::to_string(sample_rate_hz) + " Hz");
+  if (!sample_rate.valid())
+    throw std::invalid_argument("voice grid: sample rate " + std::to_string(sample_rate.hz) + " Hz");
   TargetTimeline out;
-  out.sample_rate_hz = sample_rate_hz;
+  out.sample_rate = sample_rate;
   std::int64_t previous_end = 0;
   std::int64_t frame = 0;  // where the next target starts
   auto fill_silence_to = [&](std::int64_t sample) {
-    const std::int64_t to = first_voice_frame_at(sample, sample_rate_hz);
+    const std::int64_t to = first_frame_at(sample, kVoiceFrameRate, sample_rate);
     if (to > frame) {
       append(out, Phone::SIL, frame, to);
       ++out.gaps_filled;
@@ -64,7 +48,7 @@ TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, std::int6
                        describe(phones, i) + " starts before the previous phone ends (sample " +
                            std::to_string(previous_end) + "): phones must be in time order");
     fill_silence_to(p.start_sample);
-    const std::int64_t end = first_voice_frame_at(p.end_sample, sample_rate_hz);
+    const std::int64_t end = first_frame_at(p.end_sample, kVoiceFrameRate, sample_rate);
     if (end <= frame) {
       ++out.dropped;  // zero duration, or between two frame instants
     } else {

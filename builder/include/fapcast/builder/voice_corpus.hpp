@@ -71,7 +71,7 @@ CorpusListing list_corpus(const std::filesystem::path& directory);
 // One take as the build needs it.
 struct CorpusTake {
   std::string id;
-  MarkerFrames markers;              // marker_sites() order, cm, capture frame, NaN = missing
+  MarkerFrames<Centimetres> markers;              // marker_sites() order, cm, capture frame, NaN = missing
   std::vector<Phone> phones;         // phone segments in time order (adjacent silences merged)
   std::vector<FrameSpan> spans;      // their frames, relative to the take, each non-empty
   bool synthetic = false;            // the C3D (FAPCAST:SYNTHETIC) or the TextGrid says so
@@ -101,6 +101,6 @@ Eigen::Matrix3Xd corpus_rigid_reference(const CorpusTake& take, const std::strin
 // metres. Samples still missing after gap filling are interpolated linearly in time (held at the
 // take's ends), so every frame maps; throws InputError corpus-markers when a feature point is
 // missing throughout the take.
-Eigen::MatrixXd source_vectors_m(const MarkerFrames& stabilised, const std::string& source);
+Eigen::MatrixXd source_vectors_m(const MarkerFrames<Centimetres>& stabilised, const std::string& source);
 
 }  // namespace fapcast

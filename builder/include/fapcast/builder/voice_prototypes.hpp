@@ -36,7 +36,7 @@ struct PrototypeSpecRow {
   std::string basis;  // "articulation", "articulation+detail" or "detail"
   std::string why;    // the argument for a detail, "-" for pure articulation rows
 };
-// Throws DataFileError (file:line: rule).
+// Throws InputError (file:line: rule).
 std::vector<PrototypeSpecRow> read_prototype_spec(const std::filesystem::path& file);
 
 // The target prototypes of `classes` on `face`: one row per class, the neutral mesh plus the

@@ -32,14 +32,14 @@ struct MarkerGap {
 };
 
 struct GapFillResult {
-  MarkerFrames frames;          // filled where outcome == filled
+  MarkerFrames<Centimetres> frames;          // filled where outcome == filled
   std::vector<MarkerGap> gaps;  // every gap found, in marker then frame order
   // Gaps left missing.
   std::size_t unfilled_count() const;
 };
 
 // Fills short gaps of every marker; see GapFillOptions and GapOutcome.
-GapFillResult fill_gaps(const MarkerFrames& frames, const GapFillOptions& options = {});
+GapFillResult fill_gaps(const MarkerFrames<Centimetres>& frames, const GapFillOptions& options = {});
 
 // Natural cubic spline through (x[i], y[i]), x strictly increasing, n >= 2, evaluated at xs.
 Eigen::VectorXd natural_cubic_spline(const Eigen::VectorXd& x, const Eigen::VectorXd& y,

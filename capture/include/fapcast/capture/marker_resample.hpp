@@ -5,7 +5,7 @@
 // an input frame (120 -> 60: every second frame) the sample is copied bit for bit. An output
 // sample is missing when an input sample it is interpolated from is missing. No anti-alias
 // filter is applied (spec/voice.md "Corpus" says why this is acceptable for >= 50 fps takes).
-#include "fapcast/corpus/marker_set.hpp"
+#include "fapcast/corpus/marker_frames.hpp"
 
 #include <cstdint>
 
@@ -18,6 +18,6 @@ namespace fapcast {
 // a position within 1e-9 frames of an input frame taken as that frame (and counted as inside).
 // Throws std::invalid_argument for a rate out of range, a non-positive or non-finite input rate,
 // or an inconsistent set.
-MarkerSet resample_markers(const MarkerSet& markers, std::int32_t rate_hz);
+MarkerFrames<Millimetres> resample_markers(const MarkerFrames<Millimetres>& markers, std::int32_t rate_hz);
 
 }  // namespace fapcast

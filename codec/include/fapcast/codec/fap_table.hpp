@@ -1,7 +1,7 @@
 #pragma once
 // The 68 facial animation parameters (FAPs) of MPEG-4 face animation, as constexpr data.
-// Facts from ../shared/design/FAP-NOTES.md; spec/faps.tsv is the machine-readable copy that a
-// test checks this table against.
+// Facts gathered from public players and codecs that read and write FAP data (spec/fap-text.md);
+// spec/faps.tsv is the machine-readable copy that a test checks this table against.
 #include "fapcast/codec/feature_point.hpp"
 #include "fapcast/codec/fapu.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // A PCA face basis restricted to the MPEG-4 feature points: the codec's second kind of input
-// (ARCHITECTURE.md: "PCA frames plus a face basis"), whatever built it. A mesh frame is
+// (PCA frames plus a face basis, spec/synthesis.md), whatever built it. A mesh frame is
 // mean + c * components for a row c of k PCA coefficients; only the feature points' columns are
 // kept, so turning a frame into FAPs costs O(k x points), not O(k x mesh).
 #include "fapcast/codec/fapu_values.hpp"

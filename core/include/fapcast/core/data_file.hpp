@@ -1,5 +1,8 @@
 #pragma once
-// Line-oriented reading of synth data files (meshes, targets, spec tables), with size limits.
+// Line-oriented reading of data files (meshes, targets, spec tables), with size limits.
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/core/text_input.hpp"
+
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
@@ -12,16 +15,13 @@
 
 namespace fapcast {
 
-// Opens `file` for reading; throws DataFileError (line 0) when it is missing, unreadable or
+// Opens `file` for reading; throws InputError (line 0) when it is missing, unreadable or
 // larger than max_bytes.
 std::ifstream open_data_file(const std::filesystem::path& file, std::uintmax_t max_bytes);
 
 // Reads the next line that is neither blank nor a '#' comment into `line` (CR stripped),
 // counting every line read in `line_number`; false at the end of the stream.
 bool next_content_line(std::istream& in, std::string& line, std::size_t& line_number);
-
-// Splits a line on spaces and tabs.
-std::vector<std::string_view> split_whitespace(std::string_view line);
 
 // Parses all of `text` as a number of type T; false on any leftover, overflow or empty text.
 template <typename T>
@@ -30,7 +30,7 @@ bool parse_number(std::string_view text, T& value) {
   return err == std::errc{} && end == text.data() + text.size() && !text.empty();
 }
 
-// A finite float coordinate; throws DataFileError(file, line, "bad-coordinate") otherwise.
+// A finite float coordinate; throws InputError(file, line, "bad-coordinate") otherwise.
 float parse_coordinate(const std::filesystem::path& file, std::size_t line, std::string_view text);
 
 }  // namespace fapcast

@@ -1,6 +1,6 @@
 #pragma once
-// The label every output derived from the reference talker carries (see ARCHITECTURE.md,
-// "The default world"): the talker is a known generator, not a person.
+// The label every output derived from the reference talker carries (spec/talker.md): the talker
+// is a known generator, not a person.
 #include <string_view>
 
 namespace fapcast {

@@ -1,5 +1,5 @@
 #pragma once
-// Private helpers shared by synth's text readers (TextGrid, .lab, TRC, marker CSV): decoding to
+// What the text readers (TextGrid, .lab, TRC, marker CSV, OBJ, TSV tables) share: decoding to
 // UTF-8, splitting into numbered lines and fields, strict number parsing with located errors.
 #include "fapcast/core/input_error.hpp"
 
@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace fapcast::detail {
+namespace fapcast {
 
 // Throws InputError at `line` of `source` (text readers' single way to fail).
 [[noreturn]] void fail_at_line(const std::string& source, std::uint64_t line, const std::string& rule,
@@ -48,4 +48,4 @@ std::string shortest_decimal(double value);
 // `text` cut to at most 40 bytes for quoting in an error message, with "..." when cut.
 std::string excerpt(std::string_view text);
 
-}  // namespace fapcast::detail
+}  // namespace fapcast

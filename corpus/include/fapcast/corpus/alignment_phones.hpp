@@ -20,7 +20,7 @@ const LabelTier* phone_tier(const Alignment& alignment);
 // label of an unlabelled gap, which is silence. A TIMIT closure ("dcl") directly followed by its
 // release ("d") becomes one phone, as the front-end's closures are. Throws InputError (source,
 // rule "phone-label") naming the interval and its label when a label is none of these.
-std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, std::int64_t sample_rate_hz,
+std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, SampleRate sample_rate,
                                          const std::string& source);
 
 // An alignment and its WAV rarely end on the same sample. Phones running past the audio's

@@ -6,7 +6,7 @@
 // (processor type 84) is supported, DEC (85) and MIPS (86) files are refused by name. Every
 // offset and count is checked against the file size before use. Rules in spec/corpus.md.
 #include "fapcast/core/input_error.hpp"
-#include "fapcast/corpus/marker_set.hpp"
+#include "fapcast/corpus/marker_frames.hpp"
 
 #include <map>
 #include <string>
@@ -16,7 +16,7 @@
 namespace fapcast {
 
 struct C3dFile {
-  MarkerSet markers;  // converted to mm from POINT:UNITS; unlabelled markers are named "*N"
+  MarkerFrames<Millimetres> markers;  // converted to mm from POINT:UNITS; unlabelled markers are named "*N"
   // Every character parameter as "GROUP:NAME" -> text (names upper-cased; a 2-D array's rows are
   // trimmed of trailing spaces and joined with '\n'), e.g. "FAPCAST:SYNTHETIC".
   std::map<std::string, std::string> text_parameters;
@@ -40,9 +40,9 @@ C3dFile read_c3d(std::string_view bytes, const std::string& source);
 // An Intel float C3D (POINT:SCALE -1, units mm, first frame 1) of `markers`, with POINT:LABELS
 // (and LABELS2 ... when needed), POINT:RATE, POINT:UNITS "mm", ANALOG:USED 0 and the `extra`
 // parameters. Missing samples are written as 0 0 0 with residual -1. Reading it back gives the
-// same set exactly when the positions are floats. Throws std::invalid_argument if the set does
+// same markers exactly when the positions are floats. Throws std::invalid_argument if the set does
 // not fit C3D (more than 65535 frames or markers, inconsistent shapes, bad labels or names).
-std::string write_c3d(const MarkerSet& markers, const std::vector<C3dTextParameter>& extra = {});
+std::string write_c3d(const MarkerFrames<Millimetres>& markers, const std::vector<C3dTextParameter>& extra = {});
 
 // The parameter that marks a file as written by the reference talker (FAPCAST:SYNTHETIC).
 C3dTextParameter c3d_synthetic_parameter();

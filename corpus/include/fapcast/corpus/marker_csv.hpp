@@ -8,7 +8,7 @@
 // LABEL.z; all three cells empty = missing sample; frame numbers consecutive. Without a
 // frame_rate_hz setting the rate is (frames - 1) / (last time - first time). See spec/corpus.md.
 #include "fapcast/core/input_error.hpp"
-#include "fapcast/corpus/marker_set.hpp"
+#include "fapcast/corpus/marker_frames.hpp"
 
 #include <string>
 #include <string_view>
@@ -16,10 +16,10 @@
 namespace fapcast {
 
 // Parses a marker CSV. Throws InputError ("name:line: csv-...: detail").
-MarkerSet read_marker_csv(std::string_view bytes, const std::string& source);
+MarkerFrames<Millimetres> read_marker_csv(std::string_view bytes, const std::string& source);
 
 // The marker CSV of `markers` (frame_rate_hz and units=mm settings, shortest exact decimals).
 // Throws std::invalid_argument if a label is empty or holds a comma, quote or line break.
-std::string write_marker_csv(const MarkerSet& markers);
+std::string write_marker_csv(const MarkerFrames<Millimetres>& markers);
 
 }  // namespace fapcast

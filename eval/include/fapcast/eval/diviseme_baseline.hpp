@@ -3,11 +3,11 @@
 // section 4). Every unit is exactly one diviseme - two consecutive target phones - cut from a
 // corpus recording of that viseme pair, from the centre of its first phone to the centre of its
 // second; consecutive divisemes meet in the middle of the phone they share (the classic diviseme
-// cut, where a phone is most stable). The units go through render_units - the same time warp,
+// cut, where a phone is most stable). The units go through concatenate_units - the same time warp,
 // cross-fade and smoothing as the variable-length search's units - so only the unit choice
 // differs between the two systems.
 #include "fapcast/select/phone_graph.hpp"
-#include "fapcast/synthesis/unit_render.hpp"
+#include "fapcast/synthesis/unit_concatenation.hpp"
 
 #include <Eigen/Core>
 
@@ -45,15 +45,15 @@ enum class DivisemeChoiceRule {
 DivisemeSelection select_divisemes(const PhoneGraph& graph, std::span<const TargetPhone> targets,
                                    DivisemeChoiceRule rule = DivisemeChoiceRule::kBestDuration);
 
-// Renders a selection over `targets` from the voice's PCA frames (frames x k): each target phone
+// Concatenates a selection over `targets` from the voice's PCA frames (frames x k): each target phone
 // is cut at its middle frame into two halves (a one-frame phone stays whole, in its first half);
 // the first half comes from the diviseme ending in the phone, the second from the diviseme
 // starting there (the very first and last halves from the first and last divisemes). Returns
-// end_frame(last) - first_frame(first) rows of k, like render_units. Throws
+// end_frame(last) - first_frame(first) rows of k, like concatenate_units. Throws
 // std::invalid_argument when the selection does not fit the targets.
-Eigen::MatrixXf render_divisemes(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+Eigen::MatrixXf concatenate_divisemes(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
                                  const DivisemeSelection& selection,
                                  std::span<const TargetPhone> targets,
-                                 const RenderOptions& options = {});
+                                 const ConcatenationOptions& options = {});
 
 }  // namespace fapcast

@@ -4,9 +4,9 @@
 // class's recorded phones; a target phone string becomes a trajectory by the dominance-weighted
 // mean F(t) = sum_s D_s(t - centre_s) T_s / sum_s D_s(t - centre_s), D from articulation.hpp.
 // This is the classic rule-based alternative to concatenation: no recorded motion, only targets.
-#include "fapcast/talker/articulation.hpp"
+#include "fapcast/math/dominance.hpp"
 #include "fapcast/select/phone_graph.hpp"
-#include "fapcast/synthesis/unit_render.hpp"
+#include "fapcast/synthesis/unit_concatenation.hpp"
 
 #include <Eigen/Core>
 

@@ -52,7 +52,7 @@ struct LipCurves {
 
 // The curves of a take; a frame with any of the six markers missing (NaN) gives NaN measures.
 // Throws std::invalid_argument naming a label the take does not have.
-LipCurves lip_curves(const MarkerFrames& take);
+LipCurves lip_curves(const MarkerFrames<Centimetres>& take);
 
 // The curves of mesh frames: `frames` is F x 3N (xyz interleaved per vertex, any unit) and
 // `vertices` the six mesh vertices of kLipMarkerLabels (e.g. from marker_map's table).

@@ -9,7 +9,7 @@
 #include "fapcast/corpus/marker_frames.hpp"
 #include "fapcast/eval/synthesis_score.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
-#include "fapcast/synthesis/unit_render.hpp"
+#include "fapcast/synthesis/unit_concatenation.hpp"
 
 #include <Eigen/Core>
 
@@ -27,7 +27,7 @@ struct HeldOutUtterance {
   std::string text;
   Speech speech;                     // audio and timed phones
   std::vector<TargetPhone> targets;  // the phones on the 60 fps grid (place_on_voice_grid)
-  MarkerFrames recorded;             // ground truth: the actor's clean markers (cm, 60 fps)
+  MarkerFrames<Centimetres> recorded;             // ground truth: the actor's clean markers (cm, 60 fps)
 };
 
 // Records the first `count` of kHeldOutSentences (at most all of them) on `actor`, drawing each
@@ -51,7 +51,7 @@ struct NamedSystem {
 // A target class the voice never recorded is replaced as synthesize() replaces it
 // (covered_viseme), so every system says the same visemes.
 NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
-                            RenderOptions options = {},
+                            ConcatenationOptions options = {},
                             DivisemeChoiceRule rule = DivisemeChoiceRule::kBestDuration);
 NamedSystem dominance_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
                              DominanceBaselineOptions options = {});
@@ -63,7 +63,7 @@ struct EvaluationFace {
   const RbfMap* retarget_map = nullptr;                 // source markers -> target mesh
   // The map's source vectors of a take (d x frames), built exactly as the voice build built the
   // vectors it fitted the map on.
-  std::function<Eigen::MatrixXd(const MarkerFrames&)> source_vectors;
+  std::function<Eigen::MatrixXd(const MarkerFrames<Centimetres>&)> source_vectors;
   EvaluationPoints points;
 };
 

@@ -30,7 +30,7 @@ struct FaceModel {
 };
 
 // Loads the ICT-FaceKit folder (generic_neutral_mesh.obj, vertex_indices.json,
-// expressions/<name>.target, identities/identity*.target); throws DataFileError.
+// expressions/<name>.target, identities/identity*.target); throws InputError.
 FaceModel load_ict_face_model(const std::filesystem::path& folder);
 
 // The vendored ICT-FaceKit model at data_root()/ict-facekit, loaded once and shared.

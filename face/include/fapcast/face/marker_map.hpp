@@ -48,7 +48,7 @@ struct MarkerSpecRow {
   std::string how_chosen;
 };
 
-// Reads spec/markers.tsv (4 tab-separated columns); throws DataFileError.
+// Reads spec/markers.tsv (4 tab-separated columns); throws InputError.
 std::vector<MarkerSpecRow> read_marker_spec(const std::filesystem::path& file);
 
 // Blends only the marker vertices: precomputes each shape's offsets at the markers, so one frame

@@ -15,7 +15,7 @@ struct ObjMesh {
   Positions vertices;
   PolygonFaces faces;
 };
-// Reads the v and f lines (1-based or negative indices) of an OBJ file; throws DataFileError.
+// Reads the v and f lines (1-based or negative indices) of an OBJ file; throws InputError.
 ObjMesh read_obj_mesh(const std::filesystem::path& file);
 
 // The OBJ text of a mesh: "v x y z" lines (shortest round-trip float text), then "f" lines
@@ -23,7 +23,7 @@ ObjMesh read_obj_mesh(const std::filesystem::path& file);
 std::string write_obj_mesh(const Positions& vertices, const PolygonFaces& faces,
                            std::string_view comment = {});
 
-// Throws DataFileError(specific_file, 0, "topology-mismatch") when `specific` does not have the
+// Throws InputError(specific_file, 0, "topology-mismatch") when `specific` does not have the
 // vertex count and the faces (same corners, same order) of `generic`, naming the first difference.
 void require_same_topology(const ObjMesh& generic, const std::filesystem::path& generic_file,
                            const ObjMesh& specific, const std::filesystem::path& specific_file);

@@ -17,13 +17,13 @@ namespace fapcast {
 // Receives one output file: its name (e.g. "jawOpen.obj") and its bytes.
 using WriteFile = std::function<void(const std::string& name, std::string_view bytes)>;
 
-// The *.obj files directly in `dir`, sorted by name; throws DataFileError (line 0) when `dir` is
+// The *.obj files directly in `dir`, sorted by name; throws InputError (line 0) when `dir` is
 // not a directory ("no-target-folder") or holds no .obj file ("no-targets").
 std::vector<std::filesystem::path> list_obj_targets(const std::filesystem::path& dir);
 
 // Reads the generic and specific neutral meshes and every target in `targets_dir`, and writes
 // each target adapted to the specific face: specific + FaceAdaptation(target - generic), with the
-// specific mesh's faces, under the target's file name. Throws DataFileError for a bad OBJ
+// specific mesh's faces, under the target's file name. Throws InputError for a bad OBJ
 // (file:line: rule) or a mesh whose topology differs from the generic one ("topology-mismatch").
 // Returns the number of targets written.
 std::size_t adapt_obj_targets(const std::filesystem::path& generic_file,

@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "fapcast/core/input_error.hpp"
-#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/core/audio.hpp"
 #include "fapcast/phonetics/phone.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
 
@@ -32,6 +32,17 @@ namespace fapcast {
 // Longest accepted text: 32 KiB is about 5,000 words, half an hour of speech, 80 MB of audio.
 // Longer texts must be split by the caller (e.g. per paragraph).
 inline constexpr std::size_t kMaxTextBytes = 32 * 1024;
+
+inline constexpr int kNoWord = -1;
+
+// What espeak-ng said of a phone, beside its TimedPhone.
+struct PhoneEvent {
+  std::int64_t event_sample;    // where espeak-ng's phoneme event put the phone
+  std::int64_t release_sample;  // end of the closure's quiet stretch; = the phone's start for other phones
+  int word;                     // index into Speech::words, kNoWord for silence
+  std::string espeak;           // the espeak-ng mnemonic reported
+  friend bool operator==(const PhoneEvent&, const PhoneEvent&) = default;
+};
 
 struct TimedWord {
   std::string text;             // the word as written in the input (UTF-8)
@@ -42,8 +53,9 @@ struct TimedWord {
 };
 
 struct Speech {
-  MonoAudio audio;              // espeak-ng's own rate (22050 Hz for its voices), mono int16
+  Audio audio;              // espeak-ng's own rate (22050 Hz for its voices), mono int16
   std::vector<TimedPhone> phones;
+  std::vector<PhoneEvent> events;  // one per phone
   std::vector<TimedWord> words;
 };
 
@@ -78,7 +90,7 @@ struct Closure {
 // windows every 2.5 ms) that starts at most 10 ms before and at most 40 ms after the event.
 // With no quiet stretch the closure is the event itself. After silence (nothing to drop from)
 // the onset is 50 ms before the event, bounded by region_begin.
-Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
+Closure find_closure(std::span<const std::int16_t> samples, SampleRate sample_rate,
                      std::int64_t region_begin, std::int64_t event_sample, std::int64_t region_end);
 
 }  // namespace fapcast

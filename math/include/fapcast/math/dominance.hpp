@@ -1,7 +1,10 @@
 #pragma once
-// Cohen and Massaro's dominance function (1993): how strongly a phone's target pulls an
-// articulatory channel at a given time from the phone's centre.
+// Cohen and Massaro's coarticulation (1993): a dominance function per phone and channel, and the
+// blend of the phones' targets by their dominances. The reference talker's articulation, the
+// tongue of synthesis and the dominance baseline of the evaluation all blend with these.
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 namespace fapcast {
 
@@ -22,6 +25,31 @@ struct Dominance {
     const double x = c == 1.0f ? std::abs(tau_s) : std::pow(std::abs(tau_s), static_cast<double>(c));
     return std::exp(-theta * x);
   }
+};
+
+// The blend at one instant: per channel the dominance-weighted mean of the targets,
+// F = sum_s D_s T_s / sum_s D_s, summed in double in the order the phones are added; 0 in a
+// channel no phone dominates (sum D = 0). Reused frame after frame: clear(), add() the phones
+// near the frame, read value().
+class DominanceBlend {
+ public:
+  explicit DominanceBlend(std::size_t channels) : numerator_(channels, 0.0), denominator_(channels, 0.0) {}
+
+  std::size_t channels() const { return numerator_.size(); }
+  void clear() {
+    for (std::size_t c = 0; c < numerator_.size(); ++c) numerator_[c] = denominator_[c] = 0.0;
+  }
+  // One phone's pull on `channel`: its dominance there (>= 0) and its target.
+  void add(std::size_t channel, double dominance, double target) {
+    numerator_[channel] += dominance * target;
+    denominator_[channel] += dominance;
+  }
+  double value(std::size_t channel) const {
+    return denominator_[channel] > 0 ? numerator_[channel] / denominator_[channel] : 0.0;
+  }
+
+ private:
+  std::vector<double> numerator_, denominator_;
 };
 
 }  // namespace fapcast

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <ostream>
 #include <string_view>
 
 namespace fapcast {
@@ -88,6 +89,9 @@ constexpr const PhoneInfo& phone_info(Phone p) { return kPhoneTable[static_cast<
 
 // The ARPAbet name of a phone ("AA" ... "ZH", "SIL").
 constexpr std::string_view arpabet(Phone p) { return phone_info(p).arpabet; }
+
+// Prints the ARPAbet symbol (tests show what they saw).
+std::ostream& operator<<(std::ostream& out, Phone p);
 
 // True for vowels and diphthongs (the syllable nuclei).
 constexpr bool is_vowel(Phone p) {

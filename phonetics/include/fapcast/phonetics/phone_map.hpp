@@ -14,7 +14,7 @@
 namespace fapcast {
 
 // espeak-ng en-us mnemonic -> phone. Every symbol seen in the phoneme events for the 74,000
-// SUBTLEX-US words plus numbers and interjections (tests/synth/phone_map_test.cpp re-checks).
+// SUBTLEX-US words plus numbers and interjections (tests/phonetics/phone_test.cpp re-checks).
 inline constexpr auto kEspeakMap = std::to_array<std::pair<std::string_view, Phone>>({
     {"a", Phone::AE},     // trap
     {"aa", Phone::AE},    // bath (en-us: same as trap)

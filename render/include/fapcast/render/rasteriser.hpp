@@ -1,7 +1,7 @@
 #pragma once
 // A small headless rasteriser so a person can look at an animation without a GPU or a viewer:
 // flat Lambert shading, a z-buffer, an orthographic front view (looking down -z, +y up).
-// Deliberately outside the libraries (ARCHITECTURE.md: rendering is a tool, not a stage).
+// Not a stage of the pipeline: a tool for looking at its output (`fapcast render`).
 #include <Eigen/Core>
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
 #pragma once
 // The phone graph of the paper's section 3.7: one horizontal chain of phone states per recorded
 // utterance, indexed so that the unit search never scans the corpus.
-#include "fapcast/select/junction_bound.hpp"
+#include "fapcast/select/join_bound.hpp"
 #include "fapcast/phonetics/viseme.hpp"
 
 #include <Eigen/Core>
@@ -30,35 +30,35 @@ struct PhoneState {
   bool operator==(const PhoneState&) const = default;
 };
 
-// Boundary shape of a state for the junction cost (see junction_cost): `entry` is
+// Boundary shape of a state for the join cost (see join_cost): `entry` is
 // [x0, x1 - 2 x0] of its first two frames, `exit` is [2 x_-1 - x_-2, -x_-1] of its last two,
 // where x are the PCA coefficient vectors (k each, so both have 2k entries). One row per state,
-// row-major, zero-padded to a multiple of kJunctionLanes columns: a state's boundary is one
+// row-major, zero-padded to a multiple of kJoinLanes columns: a state's boundary is one
 // contiguous run of floats, and the padding adds nothing to any cost (zero in every row).
-inline constexpr Eigen::Index kJunctionLanes = 8;
-using JunctionRows = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-struct JunctionFeatures {
-  JunctionRows entry;  // states x (2k rounded up to kJunctionLanes)
-  JunctionRows exit;   // states x (2k rounded up to kJunctionLanes)
+inline constexpr Eigen::Index kJoinLanes = 8;
+using JoinRows = Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+struct JoinFeatures {
+  JoinRows entry;  // states x (2k rounded up to kJoinLanes)
+  JoinRows exit;   // states x (2k rounded up to kJoinLanes)
 };
 
-// Makes the junction features of every state from the voice's PCA frames (frames x k). A state
+// Makes the join features of every state from the voice's PCA frames (frames x k). A state
 // shorter than two frames borrows frames from its neighbours in the recording.
-JunctionFeatures junction_features(std::span<const PhoneState> states,
+JoinFeatures join_features(std::span<const PhoneState> states,
                                    const Eigen::MatrixXf& pca_frames);
 
 // C of a join from the state whose exit row is `exit` into the state whose entry row is `entry`
-// (`dims` floats each, a multiple of kJunctionLanes): half the squared distance of the rows, i.e.
-// the mean squared second difference over the junction. Summed in kJunctionLanes fixed lanes, so
+// (`dims` floats each, a multiple of kJoinLanes): half the squared distance of the rows, i.e.
+// the mean squared second difference over the join. Summed in kJoinLanes fixed lanes, so
 // every caller gets the same float to the bit; Dims > 0 fixes the width at compile time (the
 // search's hot loop), Dims = 0 reads it from `dims`.
 template <Eigen::Index Dims = 0>
-inline float junction_cost(const float* entry, const float* exit, Eigen::Index dims = Dims) {
-  static_assert(kJunctionLanes == 8 && Dims % kJunctionLanes == 0, "two blocks of four lanes");
+inline float join_cost(const float* entry, const float* exit, Eigen::Index dims = Dims) {
+  static_assert(kJoinLanes == 8 && Dims % kJoinLanes == 0, "two blocks of four lanes");
   using Four = Eigen::Array4f;
   const Eigen::Index width = Dims > 0 ? Dims : dims;
   Four low = Four::Zero(), high = Four::Zero();  // lanes 0-3 and 4-7
-  for (Eigen::Index d = 0; d < width; d += kJunctionLanes) {
+  for (Eigen::Index d = 0; d < width; d += kJoinLanes) {
     const Four g0 = Eigen::Map<const Four>(entry + d) - Eigen::Map<const Four>(exit + d);
     const Four g1 = Eigen::Map<const Four>(entry + d + 4) - Eigen::Map<const Four>(exit + d + 4);
     low += g0 * g0;
@@ -71,10 +71,10 @@ inline float junction_cost(const float* entry, const float* exit, Eigen::Index d
 class PhoneGraph {
  public:
   // `states` must list each utterance's phones contiguously and in spoken order; `features`
-  // has one row per state (or is empty: then every junction costs only its segment count).
+  // has one row per state (or is empty: then every join costs only its segment count).
   // Throws std::invalid_argument when a viseme class is out of range, an utterance's states
   // are not contiguous, or the feature rows do not match the states.
-  PhoneGraph(std::vector<PhoneState> states, JunctionFeatures features = {});
+  PhoneGraph(std::vector<PhoneState> states, JoinFeatures features = {});
 
   std::size_t size() const { return states_.size(); }
   const PhoneState& state(StateId j) const { return states_[j]; }
@@ -98,16 +98,16 @@ class PhoneGraph {
   // unit that ended in class `from` (G = 0 in the paper).
   std::span<const StateId> entries(VisemeClass from, VisemeClass to) const;
 
-  bool has_junction_features() const { return features_.entry.rows() > 0; }
-  const JunctionFeatures& junction() const { return features_; }
-  // The search's lower bound on junction costs (empty without features).
-  const JunctionBound& junction_bound() const { return bound_; }
+  bool has_join_features() const { return features_.entry.rows() > 0; }
+  const JoinFeatures& join_features() const { return features_; }
+  // The search's lower bound on join costs (empty without features).
+  const JoinBound& join_bound() const { return bound_; }
 
  private:
   std::vector<PhoneState> states_;
   std::vector<std::uint8_t> child_viseme_;  // per state: its child's class, kVisemeClassCount if none
-  JunctionFeatures features_;
-  JunctionBound bound_;
+  JoinFeatures features_;
+  JoinBound bound_;
   // CSR-style indices: by_viseme_[offsets_[v] .. offsets_[v+1]) and the same for divisemes.
   std::vector<std::uint32_t> viseme_offsets_;
   std::vector<StateId> by_viseme_;
@@ -115,8 +115,8 @@ class PhoneGraph {
   std::vector<StateId> by_diviseme_;
 };
 
-// Mean squared second derivative of the concatenated PCA trajectory over a junction from state
+// Mean squared second derivative of the concatenated PCA trajectory over a join from state
 // i (ending a unit) to state j (starting the next): the paper's C, in coefficient units^2/frame^4.
-float junction_cost(const PhoneGraph& graph, StateId i, StateId j);
+float join_cost(const PhoneGraph& graph, StateId i, StateId j);
 
 }  // namespace fapcast

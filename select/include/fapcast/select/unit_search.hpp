@@ -10,18 +10,21 @@
 
 namespace fapcast {
 
+// The default values are what fapcast ships: `say`, `animate` and `eval synth` search with them
+// unless told otherwise (spec/search.md: beta 0.1 and a cap of 64, chosen by spec/evaluation.md
+// and the cap's cost in spec/search.md).
 struct SearchOptions {
   // Weight of the smoothness term: a join costs 1 + beta * C. beta = 0 minimises the number
   // of units alone.
-  double beta = 0.0;
+  double beta = 0.1;
   // Keep at most this many active states per target phone (the cheapest); nullopt = all.
-  std::optional<std::size_t> max_active;
+  std::optional<std::size_t> max_active = 64;
   // Skip the joins that provably cannot win or survive the cap (spec/search.md, "Pruning the
   // joins"). The result is identical either way, to the bit; false evaluates every pair of
   // active state and entry state, the reference the tests and the benchmark compare against.
   bool prune_joins = true;
   // Weight of the duration term: state j serving a target phone of n_t frames adds
-  // duration_weight * ln^2(n_j / n_t), n_j its recorded frames. The renderer warps every phone to
+  // duration_weight * ln^2(n_j / n_t), n_j its recorded frames. The concatenation warps every phone to
   // its target's length, and a large warp distorts the timing of lip opening and closure most;
   // the term prefers units whose phones already last about as long. 0 = the paper's cost.
   double duration_weight = 0.0;
@@ -43,7 +46,7 @@ struct SearchStats {
 struct SearchResult {
   std::vector<StateId> states;  // one per target phone
   std::vector<Unit> units;
-  double cost = 0.0;  // number of units + beta * sum of junction costs + the duration terms
+  double cost = 0.0;  // number of units + beta * sum of join costs + the duration terms
   SearchStats stats;
 };
 

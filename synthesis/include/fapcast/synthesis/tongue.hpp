@@ -6,7 +6,7 @@
 // raise the back and open vowels lower it, with anticipation and carry-over between phones.
 #include "fapcast/math/dominance.hpp"
 #include "fapcast/phonetics/phone.hpp"
-#include "fapcast/synthesis/unit_render.hpp"
+#include "fapcast/synthesis/unit_concatenation.hpp"
 
 #include <Eigen/Core>
 

@@ -14,6 +14,7 @@
 
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/math/dominance.hpp"
+#include "fapcast/phonetics/phone.hpp"
 
 namespace fapcast {
 
@@ -58,6 +59,8 @@ std::vector<std::string_view> articulation_phones();
 // A phone's articulation; a trailing stress digit ("AH0") is ignored, "" and "sp"/"pau" are
 // silence. Throws std::invalid_argument naming an unknown symbol.
 const PhoneArticulation& phone_articulation(std::string_view phone);
+// The same for a Phone (SIL: "sil").
+const PhoneArticulation& phone_articulation(Phone phone);
 
 // One row of the channel -> expression-shape map.
 struct ChannelShapeRow {

@@ -42,10 +42,10 @@ class HeadMotion {
 };
 
 // Moves every present marker of every frame by the head motion at the frame's time.
-void apply_head_motion(MarkerFrames& frames, const HeadMotion& motion);
+void apply_head_motion(MarkerFrames<Centimetres>& frames, const HeadMotion& motion);
 
 // Adds isotropic Gaussian noise of sigma_mm per coordinate to every present sample.
-void add_marker_noise(MarkerFrames& frames, PortableRandom& random, double sigma_mm = 0.2);
+void add_marker_noise(MarkerFrames<Centimetres>& frames, PortableRandom& random, double sigma_mm = 0.2);
 
 struct DropoutLimits {
   double runs_per_marker_minute = 3.0;  // expected dropped runs per marker per minute
@@ -55,7 +55,7 @@ struct DroppedRun {
   Eigen::Index marker, first_frame, frame_count;
 };
 // Drops runs of frames of random markers (occlusions); returns what it dropped.
-std::vector<DroppedRun> drop_marker_runs(MarkerFrames& frames, PortableRandom& random,
+std::vector<DroppedRun> drop_marker_runs(MarkerFrames<Centimetres>& frames, PortableRandom& random,
                                          const DropoutLimits& limits = {});
 
 // All per-take imperfections, in capture order: head motion, noise, dropouts.
@@ -65,11 +65,11 @@ struct CaptureSettings {
   DropoutLimits dropouts{};
 };
 struct CapturedTake {
-  MarkerFrames frames;              // what the "studio" delivers
+  MarkerFrames<Centimetres> frames;              // what the "studio" delivers
   std::vector<DroppedRun> dropped;  // ground truth of the dropouts
 };
 // Applies every imperfection to a clean take; the same random state gives the same take.
-CapturedTake capture_take(const MarkerFrames& clean, PortableRandom& random,
+CapturedTake capture_take(const MarkerFrames<Centimetres>& clean, PortableRandom& random,
                           const CaptureSettings& settings = {});
 
 }  // namespace fapcast

@@ -7,20 +7,15 @@
 #include <string>
 #include <vector>
 
+#include "fapcast/core/sample_rate.hpp"
+#include "fapcast/phonetics/timed_phone.hpp"
 #include "fapcast/talker/articulation.hpp"
 
 namespace fapcast {
 
-// A phone with its span [start_sample, end_sample) on the WAV timeline.
-struct PhoneSpan {
-  std::string phone;  // ARPAbet symbol (stress digit allowed) or "sil"
-  std::int64_t start_sample;
-  std::int64_t end_sample;
-};
-
 struct PhoneTimeline {
-  std::int32_t sample_rate_hz = 0;  // > 0
-  std::vector<PhoneSpan> phones;   // in time order, non-overlapping, each non-empty
+  SampleRate sample_rate;  // valid
+  std::vector<TimedPhone> phones;  // in time order, non-overlapping, each non-empty
 };
 
 struct CoarticulationOptions {

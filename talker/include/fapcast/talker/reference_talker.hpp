@@ -1,5 +1,5 @@
 #pragma once
-// The reference talker (ARCHITECTURE.md, "The default world"): records a SYNTHETIC visual-speech
+// The reference talker (spec/talker.md): records a SYNTHETIC visual-speech
 // corpus in the formats a capture studio delivers (spec/corpus.md): per utterance a C3D of the
 // markers of spec/markers.tsv at 60 fps, the espeak-ng WAV, and a TextGrid with phone and word
 // tiers; one manifest.json. Speech is real TTS (espeak-ng); the face is ICT-FaceKit with an
@@ -9,7 +9,7 @@
 #include "fapcast/corpus/alignment.hpp"
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/corpus/marker_frames.hpp"
-#include "fapcast/core/mono_audio.hpp"
+#include "fapcast/core/wav_file.hpp"
 #include "fapcast/core/portable_random.hpp"
 #include "fapcast/corpus/recording_script.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
@@ -27,11 +27,11 @@ namespace fapcast {
 struct ReferenceTake {
   std::string id;        // "utt0001"
   std::string text;      // the script item (a word, or a nonsense item's ARPAbet spelling)
-  MonoAudio audio;       // espeak-ng's audio
+  Audio audio;       // espeak-ng's audio
   Speech speech;         // phones and words on the audio's sample timeline
   Alignment alignment;   // phones and words tiers, marked SYNTHETIC
-  MarkerFrames clean;    // ground truth: the face's markers with no head motion, noise or drops
-  MarkerFrames captured; // what the capture delivers: head motion, noise, dropped markers
+  MarkerFrames<Centimetres> clean;    // ground truth: the face's markers with no head motion, noise or drops
+  MarkerFrames<Centimetres> captured; // what the capture delivers: head motion, noise, dropped markers
   float effort = 1.0f;   // articulation effort drawn for this utterance
 };
 

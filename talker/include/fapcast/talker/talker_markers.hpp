@@ -11,11 +11,11 @@
 namespace fapcast {
 
 // Marker positions for per-frame expression weights (shapes x frames), labelled by the table.
-MarkerFrames render_markers(const MarkerBlender& blender, const Eigen::MatrixXf& weights,
+MarkerFrames<Centimetres> blend_markers(const MarkerBlender& blender, const Eigen::MatrixXf& weights,
                             std::int32_t frame_rate_hz);
 
 // The whole clean chain for one utterance on one face, all markers of marker_sites().
-MarkerFrames talker_markers(const FaceModel& face, const PhoneTimeline& timeline,
+MarkerFrames<Centimetres> talker_markers(const FaceModel& face, const PhoneTimeline& timeline,
                             const CoarticulationOptions& options = {});
 
 }  // namespace fapcast

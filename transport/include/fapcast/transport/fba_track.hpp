@@ -2,6 +2,7 @@
 // The bridge between FAP tracks and RTP media units: a track becomes one FBA access unit per
 // frame placed on the WAV timeline (sender), and received units become a track again
 // (receiver), frames placed by their RTP timestamps so that loss leaves holes, not a shift.
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/fba/fba_stream.hpp"
 #include "fapcast/transport/media_unit.hpp"
@@ -16,7 +17,7 @@ namespace fapcast {
 
 // Encodes every frame of `seq` as one access unit at sample frame_to_sample(k, seq.rate,
 // clock_rate). Returns the encoder's error for the first frame it refuses (and `frame_index`).
-std::error_code encode_track_units(const FapSequence& seq, std::int64_t clock_rate,
+std::error_code encode_track_units(const FapSequence& seq, SampleRate clock_rate,
                                    const FbaEncoderOptions& options,
                                    std::vector<MediaUnit>& out, std::int64_t* frame_index = nullptr);
 
@@ -40,7 +41,7 @@ class ReceivedTrack {
   // Gaps longer than this many seconds are not filled (a sender restart, a hostile timestamp).
   static constexpr std::int64_t kMaxFilledGapSeconds = 10;
 
-  ReceivedTrack(std::int64_t clock_rate, std::int64_t max_frames);
+  ReceivedTrack(SampleRate clock_rate, std::int64_t max_frames);
 
   // Decodes one unit and places its frame. Errors come from the FBA decoder.
   std::error_code add(const ReceivedUnit& unit);
@@ -49,7 +50,7 @@ class ReceivedTrack {
   const ReceivedTrackStats& stats() const { return stats_; }
 
  private:
-  std::int64_t clock_rate_;
+  SampleRate clock_rate_;
   std::int64_t max_frames_;
   FbaFrameDecoder decoder_;
   FapSequence seq_;

@@ -4,6 +4,7 @@
 // in a bounded buffer, declares loss when a gap outlives its wait, and after loss withholds units
 // until the next intra one. It keeps RFC 3550 statistics: loss (A.3) and interarrival jitter
 // (A.8). Memory is bounded whatever arrives: at most `reorder_capacity` packets are held.
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/transport/rtp_packet.hpp"
 
 #include <bitset>
@@ -21,7 +22,7 @@ namespace fapcast {
 struct ReceiverOptions {
   std::uint8_t payload_type = kDefaultFbaPayloadType;  // others are refused
   std::optional<std::uint32_t> ssrc;  // lock on this source; unset: on the first valid packet
-  std::int64_t clock_rate = 48'000;   // RTP timestamp units per second (jitter is in these)
+  SampleRate clock_rate{48'000};     // RTP timestamp units per second (jitter is in these)
   bool fba_payload = true;            // packets carry the one-byte FBA payload header
   std::size_t reorder_capacity = 64;  // packets held waiting for an earlier one (>= 1)
   std::chrono::milliseconds reorder_delay{40};  // longest a packet waits for an earlier one

@@ -1,6 +1,7 @@
 #pragma once
 // FAP tracks in files, chosen by extension: .fap (text, spec/fap-text.md), .fba (bitstream,
 // spec/fba.md) and .json (spec/json.md). Reads are size-limited, writes atomic.
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/fap_text.hpp"
@@ -23,8 +24,8 @@ std::optional<TrackFormat> track_format_of(const std::filesystem::path& path);
 FapSequence read_track_file(const std::filesystem::path& path);
 
 struct TrackWriteOptions {
-  std::optional<std::int64_t> sample_rate;  // .json: each frame's WAV sample
-  FapTextWriteOptions fap;                  // .fap: dialect and player (spec/fap-text.md)
+  std::optional<SampleRate> sample_rate;  // .json: each frame's WAV sample
+  FapTextWriteOptions fap;                // .fap: dialect and player (spec/fap-text.md)
 };
 // Writes `seq` atomically in the format of the extension; .fba losslessly: the standard syntax
 // at fap_quant 0 where it codes every value, else the fapcast profile (spec/fba.md §9). Returns

@@ -1,6 +1,6 @@
 #pragma once
-// A loaded, verified voice (spec/voice.md; contract: VOICE-API.md): everything the unit search
-// and the renderer need, in place in the memory-mapped file. Voice::open refuses any bad file
+// A loaded, verified voice (spec/voice.md): everything the unit search
+// and the concatenation need, in place in the memory-mapped file. Voice::open refuses any bad file
 // with an InputError before the first frame is synthesised.
 #include <Eigen/Core>
 #include <cstdint>

@@ -77,7 +77,7 @@ inline constexpr SectionId kRbfScalars{"RPAR"};    // f64 1 x 2: r^2, lambda
 inline constexpr SectionId kPhoneGraph{"GRPH"};    // bytes: phone graph (voice_graph.hpp layout)
 inline constexpr SectionId kFeaturePoints{"FPNT"}; // json: target-face feature points (voice.hpp)
 // Optional: f32 N x 9, vertex i's 3 x 3 map (row-major) from the generic ICT face to the voice's
-// face; written by `fapcast voice retarget` (voice_retarget.hpp), absent in a voice built on ICT.
+// face; written by `fapcast voice retarget` (voice_adaptation.hpp), absent in a voice built on ICT.
 inline constexpr SectionId kFaceMaps{"FMAP"};
 }  // namespace voice_section
 

@@ -1,9 +1,9 @@
 #pragma once
-// The voice's 60 fps frame grid on the WAV timeline, and timed phones placed on it. Frame n is
-// shown from sample round(n * rate / 60) (halves up), the rule of frame_to_sample; it is
-// restated here in exact integers because synth must not include codec (a test checks that the
-// two agree). Timed phones -> target phones for the unit search and the renderer.
+// The voice's 60 fps frame grid on the WAV timeline, and timed phones placed on it: frame n is
+// shown from frame_to_sample(n, kVoiceFrameRate, rate) (core/frame_rate.hpp, the one
+// frame <-> sample rule). Timed phones -> target phones for the unit search and concatenation.
 #include "fapcast/core/input_error.hpp"
+#include "fapcast/core/frame_rate.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
 #include "fapcast/phonetics/viseme.hpp"
 
@@ -25,16 +25,10 @@ struct TargetPhone {
 
 // The corpus / PCA frame rate of every voice (paper section 3.2: 60 fps capture).
 inline constexpr std::int64_t kVoiceFramesPerSecond = 60;
+inline constexpr FrameRate kVoiceFrameRate{static_cast<std::uint32_t>(kVoiceFramesPerSecond), 1};
 
-// The sample from which voice frame n (>= 0) is shown: round(n * sample_rate / 60), halves up.
-// Preconditions: n >= 0, sample_rate_hz >= 1.
-std::int64_t voice_frame_sample(std::int64_t n, std::int64_t sample_rate_hz);
-
-// The first voice frame shown at or after `sample` (>= 0): the frame a phone starting there owns.
-std::int64_t first_voice_frame_at(std::int64_t sample, std::int64_t sample_rate_hz);
-
-// Timed phones on the voice grid. Phone i's frames are [first_voice_frame_at(start),
-// first_voice_frame_at(end)): every frame belongs to the phone on screen when it is shown.
+// Timed phones on the voice grid. Phone i's frames are [first_frame_at(start), first_frame_at(end))
+// at kVoiceFrameRate: every frame belongs to the phone on screen when it is shown.
 // Rules (spec/synthesis.md, "Input phones"):
 //  - phones must be in time order and must not overlap (InputError "phone-overlap"); an end
 //    before its start is "phone-reversed", a negative start "phone-negative-start";
@@ -44,7 +38,7 @@ std::int64_t first_voice_frame_at(std::int64_t sample, std::int64_t sample_rate_
 //    target; counted in `gaps_filled`), so the track starts at frame 0 = sample 0;
 //  - /p b m/ and /f v/ are held (TargetPhone::hold): the smoother must not round their shape.
 struct TargetTimeline {
-  std::int64_t sample_rate_hz = 0;
+  SampleRate sample_rate;
   std::vector<TargetPhone> phones;     // contiguous from frame 0
   std::vector<Phone> phone_of;         // the phone of each target (SIL for filled gaps)
   std::size_t dropped = 0;
@@ -55,8 +49,8 @@ struct TargetTimeline {
 // `end_sample` (e.g. the audio's length) extends the timeline with silence when it lies past
 // the last phone; phones running past it are the caller's concern (see tools' animate).
 // Throws InputError (source `source`, rule as above, detail naming the phone index) or
-// std::invalid_argument for sample_rate_hz < 1.
-TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, std::int64_t sample_rate_hz,
+// std::invalid_argument for an invalid sample rate.
+TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, SampleRate sample_rate,
                                    std::int64_t end_sample = 0, const std::string& source = "phones");
 
 // Whether a phone's visible shape must be met exactly (lip closure, lip to teeth).

@@ -2,7 +2,7 @@
 // The GRPH section of a voice (spec/voice.md, "Phone graph layout"): the phone states of every
 // corpus utterance - utterance, frame span, viseme class and ARPAbet phone - and each utterance's
 // frame span, in a fixed little-endian binary layout. The search's indices (by viseme class and
-// diviseme, junction features) are rebuilt from it at open (PhoneGraph), which is O(states).
+// diviseme, join features) are rebuilt from it at open (PhoneGraph), which is O(states).
 #include <cstddef>
 #include <cstdint>
 #include <span>

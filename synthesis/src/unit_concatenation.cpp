@@ -1,4 +1,4 @@
-#include "fapcast/synthesis/unit_render.hpp"
+#include "fapcast/synthesis/unit_concatenation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +18,7 @@ struct RecordingFrames {
   std::int64_t lo, hi;
 };
 
-// The recording of state j: O(its length), so a render never walks the whole corpus.
+// The recording of state j: O(its length), so a concatenation never walks the whole corpus.
 RecordingFrames recording_frames(const PhoneGraph& graph, StateId j) {
   StateId first = j, last = j;
   while (graph.has_parent(first)) --first;
@@ -121,18 +121,18 @@ void backward_substitute(const SmoothingFactor& f, double* z, std::size_t k, Eig
 
 }  // namespace
 
-Eigen::MatrixXf render_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+Eigen::MatrixXf concatenate_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
                              const SearchResult& result, std::span<const TargetPhone> targets,
-                             const RenderOptions& options) {
+                             const ConcatenationOptions& options) {
   if (result.states.size() != targets.size())
-    throw std::invalid_argument("render: " + std::to_string(result.states.size()) +
+    throw std::invalid_argument("concatenation: " + std::to_string(result.states.size()) +
                                 " selected states for " + std::to_string(targets.size()) + " target phones");
   if (targets.empty()) return Eigen::MatrixXf(0, pca_frames.cols());
   for (std::size_t t = 0; t < targets.size(); ++t) {
     if (targets[t].end_frame <= targets[t].first_frame)
-      throw std::invalid_argument("render: target phone " + std::to_string(t) + " spans no frames");
+      throw std::invalid_argument("concatenation: target phone " + std::to_string(t) + " spans no frames");
     if (t > 0 && targets[t].first_frame != targets[t - 1].end_frame)
-      throw std::invalid_argument("render: target phone " + std::to_string(t) +
+      throw std::invalid_argument("concatenation: target phone " + std::to_string(t) +
                                   " does not start where the previous one ends");
   }
   // The recording of each target's state (consecutive states of one recording share it).

@@ -1,4 +1,4 @@
-#include "fapcast/core/wav_audio.hpp"
+#include "fapcast/core/wav_file.hpp"
 
 #include "fapcast/core/file_io.hpp"
 #include "support/run_command.hpp"
@@ -28,20 +28,20 @@ std::string canonical_wav(int rate, int channels, const std::vector<std::int16_t
   return out;
 }
 
-TEST(WavAudio, ReadsEveryInterleavedSampleExactly) {
+TEST(WavFile, ReadsEveryInterleavedSampleExactly) {
   const std::string dir = test::make_temp_dir("wav");
   const std::vector<std::int16_t> samples{0, 1, -1, 32767, -32768, 100, -100, 7, 8};
   write_file_atomically(dir + "/three_ch.wav", canonical_wav(22050, 3, samples));
-  const WavAudio audio = read_multichannel_wav(dir + "/three_ch.wav");
-  EXPECT_EQ(audio.sample_rate, 22050);
+  const Audio audio = read_wav(dir + "/three_ch.wav");
+  EXPECT_EQ(audio.sample_rate.hz, 22050);
   EXPECT_EQ(audio.channels, 3);
   EXPECT_EQ(audio.instants(), 3);
   EXPECT_EQ(audio.samples, samples);
 }
 
-TEST(WavAudio, ReadsTheSoxFixture) {
-  const WavAudio audio = read_multichannel_wav(kData / "tone_16k_mono.wav");
-  EXPECT_EQ(audio.sample_rate, 16000);
+TEST(WavFile, ReadsTheSoxFixture) {
+  const Audio audio = read_wav(kData / "tone_16k_mono.wav");
+  EXPECT_EQ(audio.sample_rate.hz, 16000);
   EXPECT_EQ(audio.channels, 1);
   EXPECT_EQ(audio.instants(), 800);
 }
@@ -61,8 +61,8 @@ TEST_P(WavFromSox, RateChannelsAndLength) {
   const std::string file = dir + "/" + c.name;
   const auto r = test::run_command("sox -n " + std::string(c.args) + " " + file + " synth 0.1 sine 300");
   if (r.exit_code != 0) GTEST_SKIP() << "sox failed: " << r.err;
-  const WavAudio audio = read_multichannel_wav(file);
-  EXPECT_EQ(audio.sample_rate, c.rate);
+  const Audio audio = read_wav(file);
+  EXPECT_EQ(audio.sample_rate.hz, c.rate);
   EXPECT_EQ(audio.channels, c.channels);
   EXPECT_EQ(audio.instants(), c.rate / 10);
 }
@@ -74,7 +74,7 @@ INSTANTIATE_TEST_SUITE_P(Table, WavFromSox,
                                          SoxCase{"flac_32k.flac", "-r 32000 -c 2", 32000, 2}),
                          [](const auto& info) { return std::to_string(info.index); });
 
-TEST(WavAudio, BadFilesMatchTheGoldenList) {
+TEST(WavFile, BadFilesMatchTheGoldenList) {
   std::ifstream golden(kData / "bad" / "expected-errors.txt");
   std::string line;
   int checked = 0;
@@ -83,7 +83,7 @@ TEST(WavAudio, BadFilesMatchTheGoldenList) {
     const std::string name = line.substr(0, colon);
     const std::string rule = line.substr(colon + 2);
     try {
-      read_multichannel_wav(kData / "bad" / name);
+      read_wav(kData / "bad" / name);
       ADD_FAILURE() << name << " was accepted";
     } catch (const std::runtime_error& e) {
       const std::string what = e.what();
@@ -95,10 +95,10 @@ TEST(WavAudio, BadFilesMatchTheGoldenList) {
   EXPECT_EQ(checked, 2);
 }
 
-TEST(WavAudio, MissingFileAndLengthLimitNameTheFile) {
-  EXPECT_THROW(read_multichannel_wav("/nonexistent/x.wav"), std::runtime_error);
+TEST(WavFile, MissingFileAndLengthLimitNameTheFile) {
+  EXPECT_THROW(read_wav("/nonexistent/x.wav"), std::runtime_error);
   try {
-    read_multichannel_wav(kData / "tone_16k_mono.wav", 0);
+    read_wav(kData / "tone_16k_mono.wav", 0);
     FAIL();
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("tone_16k_mono.wav: wav-too-long"), std::string::npos) << e.what();

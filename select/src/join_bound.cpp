@@ -1,4 +1,4 @@
-#include "fapcast/select/junction_bound.hpp"
+#include "fapcast/select/join_bound.hpp"
 
 #include "fapcast/select/phone_graph.hpp"
 
@@ -19,19 +19,19 @@ Eigen::Index of(VisemeClass v) { return static_cast<Eigen::Index>(v); }
 
 }  // namespace
 
-struct JunctionBound::Lazy {
+struct JoinBound::Lazy {
   std::once_flag once;
   DivisemePoints points;
   std::atomic<std::size_t> computed{0};  // exit points computed per call so far
   std::atomic<bool> tabled{false};
   std::once_flag table_once;
-  std::vector<JunctionPoint> exit;       // every state of class `from`, in with_viseme order
+  std::vector<JoinPoint> exit;       // every state of class `from`, in with_viseme order
   std::atomic<std::size_t> sketch_calls{0};
   std::once_flag sketch_once;
   DivisemeSketches sketches;
 };
 
-struct JunctionBound::ClassSketches {
+struct JoinBound::ClassSketches {
   std::atomic<std::size_t> computed{0};  // sketches made per call so far
   std::atomic<bool> tabled{false};
   std::once_flag once;
@@ -42,7 +42,7 @@ struct JunctionBound::ClassSketches {
 namespace {
 
 // A row relative to c_a on the unit axis q: along = (row - c_a) . q, across = |r - along q|.
-JunctionPoint point_on_axis(const float* row, const Eigen::Ref<const Eigen::RowVectorXd>& centre,
+JoinPoint point_on_axis(const float* row, const Eigen::Ref<const Eigen::RowVectorXd>& centre,
                             const Eigen::Ref<const Eigen::RowVectorXd>& axis, double slack_per_spread) {
   const auto r = Eigen::Map<const Eigen::RowVectorXf>(row, centre.size()).cast<double>() - centre;  // no allocation
   const double spread = r.squaredNorm(), along = r.dot(axis);
@@ -52,10 +52,10 @@ JunctionPoint point_on_axis(const float* row, const Eigen::Ref<const Eigen::RowV
 
 }  // namespace
 
-JunctionBound::Shared::~Shared() = default;
+JoinBound::Shared::~Shared() = default;
 
-JunctionBound::JunctionBound(const PhoneGraph& graph) : shared_(std::make_shared<Shared>()) {
-  const auto& f = graph.junction();
+JoinBound::JoinBound(const PhoneGraph& graph) : shared_(std::make_shared<Shared>()) {
+  const auto& f = graph.join_features();
   const auto n = static_cast<Eigen::Index>(graph.size());
   const Eigen::Index dims = f.entry.cols();
   Shared& s = *shared_;
@@ -99,11 +99,11 @@ JunctionBound::JunctionBound(const PhoneGraph& graph) : shared_(std::make_shared
   }
 }
 
-const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const {
+const DivisemePoints& JoinBound::points(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const {
   Lazy& lazy = shared_->divisemes[static_cast<std::size_t>(of(from) * kClasses + of(to))];
   std::call_once(lazy.once, [&] {
     const Shared& s = *shared_;
-    const auto& f = graph.junction();
+    const auto& f = graph.join_features();
     const Eigen::Index dims = f.entry.cols();
     const auto centre = s.centre.row(of(from));
     const auto axis = s.axis.row(of(from) * kClasses + of(to));
@@ -122,11 +122,11 @@ const DivisemePoints& JunctionBound::points(const PhoneGraph& graph, VisemeClass
   return lazy.points;
 }
 
-void JunctionBound::exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to,
-                          std::span<const std::uint32_t> states, std::span<JunctionPoint> out) const {
+void JoinBound::exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to,
+                          std::span<const std::uint32_t> states, std::span<JoinPoint> out) const {
   const Shared& s = *shared_;
   Lazy& lazy = s.divisemes[static_cast<std::size_t>(of(from) * kClasses + of(to))];
-  const auto& f = graph.junction();
+  const auto& f = graph.join_features();
   const auto centre = s.centre.row(of(from));
   const auto axis = s.axis.row(of(from) * kClasses + of(to));
   const auto members = graph.with_viseme(from);
@@ -145,13 +145,13 @@ void JunctionBound::exits(const PhoneGraph& graph, VisemeClass from, VisemeClass
   for (std::size_t m = 0; m < states.size(); ++m) out[m] = lazy.exit[s.rank[states[m]]];
 }
 
-const DivisemeSketches* JunctionBound::entry_sketches(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const {
+const DivisemeSketches* JoinBound::entry_sketches(const PhoneGraph& graph, VisemeClass from, VisemeClass to) const {
   if (!sketched()) return nullptr;
   const Shared& s = *shared_;
   Lazy& lazy = s.divisemes[static_cast<std::size_t>(of(from) * kClasses + of(to))];
   if (lazy.sketch_calls.fetch_add(1, std::memory_order_relaxed) == 0) return nullptr;
   std::call_once(lazy.sketch_once, [&] {
-    const auto& f = graph.junction();
+    const auto& f = graph.join_features();
     const auto dims = static_cast<std::size_t>(f.entry.cols());
     const auto entries = graph.entries(from, to);
     DivisemeSketches& k = lazy.sketches;
@@ -163,11 +163,11 @@ const DivisemeSketches* JunctionBound::entry_sketches(const PhoneGraph& graph, V
   return &lazy.sketches;
 }
 
-void JunctionBound::exit_sketches(const PhoneGraph& graph, VisemeClass from, std::span<const std::uint32_t> states,
+void JoinBound::exit_sketches(const PhoneGraph& graph, VisemeClass from, std::span<const std::uint32_t> states,
                                   std::span<SketchRef> out, std::vector<std::int16_t>& buffer) const {
   const Shared& s = *shared_;
   ClassSketches& table = s.sketches[static_cast<std::size_t>(of(from))];
-  const auto& f = graph.junction();
+  const auto& f = graph.join_features();
   const auto dims = static_cast<std::size_t>(f.exit.cols());
   const auto members = graph.with_viseme(from);
   if (!table.tabled.load(std::memory_order_acquire) &&

@@ -1,5 +1,5 @@
 #pragma once
-// An exact lower bound on the junction cost C(i, j) from three numbers per state, so that the
+// An exact lower bound on the join cost C(i, j) from three numbers per state, so that the
 // unit search evaluates the full 2k-dimensional cost only for joins that might win
 // (spec/search.md, "Pruning the joins").
 //
@@ -15,8 +15,8 @@
 // Opening a voice computes only the centres and axes (O(states x 2k)); the points of a diviseme
 // are computed the first time a search joins into it (O((states of a + entries of a b) x 2k)), so
 // a one-sentence synthesis pays for the few divisemes it uses, not for all of them. The same
-// lazy tables hold the rows' sketches, the second bound (junction_sketch.hpp).
-#include "fapcast/select/junction_sketch.hpp"
+// lazy tables hold the rows' sketches, the second bound (join_sketch.hpp).
+#include "fapcast/select/join_sketch.hpp"
 #include "fapcast/phonetics/viseme.hpp"
 
 #include <Eigen/Core>
@@ -32,7 +32,7 @@ class PhoneGraph;
 
 // A state's boundary row on the axis of one diviseme: `along` = u (or v), `across` = s (or t).
 // `slack` is a rounding allowance, subtracted so that the float bound stays below the float cost.
-struct JunctionPoint {
+struct JoinPoint {
   float along = 0.0f;
   float across = 0.0f;
   float slack = 0.0f;
@@ -41,12 +41,12 @@ struct JunctionPoint {
 // The entries of one diviseme a b in the order of PhoneGraph::entries(a, b): their points and
 // their entry rows, each contiguous (the search reads a diviseme's entries in one sweep).
 struct DivisemePoints {
-  std::vector<JunctionPoint> entry;
+  std::vector<JoinPoint> entry;
   Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> entry_rows;
   double along_mean = 0.0, across_mean = 0.0;  // the entries' mean point (u', s')
 };
 
-// The sketches (junction_sketch.hpp) of a diviseme's entries, in the same order: entry_rows.cols()
+// The sketches (join_sketch.hpp) of a diviseme's entries, in the same order: entry_rows.cols()
 // values each, and their rounding norms.
 struct DivisemeSketches {
   std::vector<std::int16_t> entry;
@@ -59,12 +59,12 @@ struct SketchRef {
   float error = 0.0f;
 };
 
-class JunctionBound {
+class JoinBound {
  public:
-  JunctionBound() = default;  // no junction features: no bound (empty())
-  // O(states x 2k): the class centres and the diviseme axes. The graph must have junction
+  JoinBound() = default;  // no join features: no bound (empty())
+  // O(states x 2k): the class centres and the diviseme axes. The graph must have join
   // features.
-  explicit JunctionBound(const PhoneGraph& graph);
+  explicit JoinBound(const PhoneGraph& graph);
 
   bool empty() const { return !shared_; }
 
@@ -78,9 +78,9 @@ class JunctionBound {
   // a one-sentence search pays for its predecessors only, a long-running process for each
   // point once. Either way the same values.
   void exits(const PhoneGraph& graph, VisemeClass from, VisemeClass to, std::span<const std::uint32_t> states,
-             std::span<JunctionPoint> out) const;
+             std::span<JoinPoint> out) const;
 
-  // Whether there are sketches (junction_sketch.hpp): rows of at most kSketchMaxDims values.
+  // Whether there are sketches (join_sketch.hpp): rows of at most kSketchMaxDims values.
   bool sketched() const { return shared_ && shared_->sketched; }
   const SketchGrid& sketch_grid() const { return shared_->grid; }
 
@@ -98,7 +98,7 @@ class JunctionBound {
 
   // A lower bound on 2 C(i, j) for exit point x and entry point e of the same diviseme; may be
   // negative (then it bounds nothing).
-  static float twice_cost_floor(const JunctionPoint& e, const JunctionPoint& x) {
+  static float twice_cost_floor(const JoinPoint& e, const JoinPoint& x) {
     const float da = e.along - x.along, dc = e.across - x.across;
     return da * da + dc * dc - e.slack - x.slack;
   }

@@ -1,7 +1,7 @@
-// retarget_voice on hand-made voices: a scaled and moved specific face scales every target-space
+// adapt_voice on hand-made voices: a scaled and moved specific face scales every target-space
 // quantity exactly and leaves the rest byte for byte; maps compose over two re-targets; a generic
 // mesh that is not the voice's face is refused naming the feature point.
-#include "fapcast/voice/voice_retarget.hpp"
+#include "fapcast/voice/voice_adaptation.hpp"
 
 #include <gtest/gtest.h>
 
@@ -37,13 +37,13 @@ Voice open_bytes(const std::string& bytes, const std::string& name) {
   return Voice::open(file);
 }
 
-TEST(VoiceRetarget, AScaledFaceScalesEveryTargetQuantityExactly) {
+TEST(VoiceAdaptation, AScaledFaceScalesEveryTargetQuantityExactly) {
   const Voice voice = open_bytes(TinyVoice().bytes(), "fapcast_retarget_in.fapv");
   const Positions generic = tiny_face();
   const float s = 1.5f;
   const Eigen::Vector3f t(0.01f, -0.02f, 0.03f);
   const Positions specific = (s * generic).colwise() + t;
-  const RetargetedVoice out = retarget_voice(voice, generic, specific, one_triangle(), "big.obj");
+  const AdaptedVoice out = adapt_voice(voice, generic, specific, one_triangle(), "big.obj");
   EXPECT_EQ(out.summary.vertices, 3u);
   EXPECT_EQ(out.summary.triangles, 1u);
   const Voice v2 = open_bytes(out.bytes, "fapcast_retarget_out.fapv");
@@ -73,25 +73,25 @@ TEST(VoiceRetarget, AScaledFaceScalesEveryTargetQuantityExactly) {
 
   // A second re-target (from the specific face, scale 2 more) composes the maps: 3 I.
   const Positions bigger = 2.0f * specific;
-  const Voice v3 = open_bytes(retarget_voice(v2, specific, bigger, one_triangle(), "bigger.obj").bytes,
+  const Voice v3 = open_bytes(adapt_voice(v2, specific, bigger, one_triangle(), "bigger.obj").bytes,
                               "fapcast_retarget_out2.fapv");
   EXPECT_NEAR((*v3.face_maps())(1, 4), 2 * s, 1e-5f);  // row 1's yy entry
   EXPECT_NEAR((*v3.face_maps())(1, 1), 0.0f, 1e-5f);
   EXPECT_LT((v3.pca_components() - 2 * s * voice.pca_components()).cwiseAbs().maxCoeff(), 1e-5f);
 }
 
-TEST(VoiceRetarget, RefusesAGenericMeshThatIsNotTheVoicesFace) {
+TEST(VoiceAdaptation, RefusesAGenericMeshThatIsNotTheVoicesFace) {
   const Voice voice = open_bytes(TinyVoice().bytes(), "fapcast_retarget_bad.fapv");
   const Positions cm = 100.0f * tiny_face();  // the right face in the wrong unit
   try {
-    (void)retarget_voice(voice, cm, cm, one_triangle(), "s.obj");
+    (void)adapt_voice(voice, cm, cm, one_triangle(), "s.obj");
     FAIL() << "accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("generic-mismatch: feature point 8.1 (vertex 0)"), std::string::npos)
         << e.what();
   }
   const Positions four = Positions::Zero(3, 4);
-  EXPECT_THROW((void)retarget_voice(voice, four, four, one_triangle(), "s.obj"), std::invalid_argument);
+  EXPECT_THROW((void)adapt_voice(voice, four, four, one_triangle(), "s.obj"), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 #pragma once
-// A second exact lower bound on the junction cost C(i, j), for the joins that the axis bound of
-// junction_bound.hpp cannot tell apart (spec/search.md, "Pruning the joins").
+// A second exact lower bound on the join cost C(i, j), for the joins that the axis bound of
+// join_bound.hpp cannot tell apart (spec/search.md, "Pruning the joins").
 //
 // A sketch of a boundary row rounds each value to the nearest multiple of a step h = 2^-n (at
 // most kSketchReach steps from 0, clamped beyond), kept as int16, together with an upper bound
@@ -17,7 +17,7 @@
 
 namespace fapcast {
 
-struct JunctionFeatures;  // phone_graph.hpp
+struct JoinFeatures;  // phone_graph.hpp
 
 // At most this many steps from 0, so that no sum of squared differences of <= kSketchMaxDims
 // values overflows int32 (kSketchMaxDims (2 x 2047)^2 < 2^31).
@@ -33,7 +33,7 @@ struct SketchGrid {
 // The grid for rows of this size: the smallest power-of-two step at which a row value of
 // min(largest |value|, 8 x root mean square), over a sample of the rows, is within kSketchReach
 // steps (larger values are clamped, which only widens their own rows' rounding norms).
-SketchGrid sketch_grid(const JunctionFeatures& features);
+SketchGrid sketch_grid(const JoinFeatures& features);
 
 // Rounds the `dims` floats of `row` onto `grid` into `out` (dims int16); returns an upper bound of
 // the norm of the rounding error (infinite or NaN rows give a norm that bounds nothing).
@@ -52,7 +52,7 @@ inline std::int32_t sketch_distance2(const std::int16_t* a, const std::int16_t* 
   return sum;
 }
 
-// A lower bound on the float junction_cost of two rows whose sketches are `distance2` apart and
+// A lower bound on the float join_cost of two rows whose sketches are `distance2` apart and
 // whose rounding norms sum to `error`: (1 - 2^-16) / 2 (h sqrt(distance2) - error)^2. The factor
 // covers the float cost's own rounding (below 2^-17 of it for <= kSketchMaxDims values) and the
 // bound's double arithmetic.

@@ -16,7 +16,7 @@ namespace fapcast {
 namespace {
 
 // Source vectors: every marker, metres; the face's "vertex" of a marker is its row.
-Eigen::MatrixXd markers_m(const MarkerFrames& take) { return 0.01 * take.positions_cm; }
+Eigen::MatrixXd markers_m(const MarkerFrames<Centimetres>& take) { return 0.01 * take.positions; }
 
 TEST(EvaluateSynthesis, AnOracleBeatsAFrozenFace) {
   const FaceModel actor = reference_actor(ict_face_model(), 1);

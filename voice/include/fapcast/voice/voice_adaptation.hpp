@@ -1,5 +1,5 @@
 #pragma once
-// A voice re-targeted to a specific face of its face's topology without re-recording (paper
+// A voice adapted to a specific face of its face's topology without re-recording (paper
 // section 3.9, spec/adaptation.md "Re-targeting a voice"): every target-space quantity of the
 // voice is carried through the per-vertex maps of FaceAdaptation(generic, specific); the PCA
 // coefficients, the phone graph and the unit search are unchanged.
@@ -10,7 +10,7 @@
 
 namespace fapcast {
 
-struct VoiceRetargetSummary {
+struct VoiceAdaptationSummary {
   std::size_t vertices = 0;
   std::size_t triangles = 0;
   std::size_t degenerate_triangles = 0;      // weight 0 in the per-vertex means
@@ -18,9 +18,9 @@ struct VoiceRetargetSummary {
   double max_feature_point_offset_m = 0;     // largest |specific - generic| at a feature point
 };
 
-struct RetargetedVoice {
+struct AdaptedVoice {
   std::string bytes;  // the new voice file (write with write_file_atomically)
-  VoiceRetargetSummary summary;
+  VoiceAdaptationSummary summary;
 };
 
 // generic_m: the voice's own neutral face (3 x N, metres); specific_m: the specific neutral face
@@ -34,7 +34,7 @@ struct RetargetedVoice {
 // Throws std::invalid_argument when N differs from the voice's or generic_m is not the voice's
 // neutral face (a feature point more than 0.1 mm from FPNT's position: rule generic-mismatch,
 // naming the point), and FaceAdaptation's errors for bad faces.
-RetargetedVoice retarget_voice(const Voice& voice, const Positions& generic_m, const Positions& specific_m,
+AdaptedVoice adapt_voice(const Voice& voice, const Positions& generic_m, const Positions& specific_m,
                                const PolygonFaces& faces, const std::string& specific_name);
 
 }  // namespace fapcast

@@ -1,4 +1,4 @@
-#include "fapcast/voice/voice_retarget.hpp"
+#include "fapcast/voice/voice_adaptation.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -44,7 +44,7 @@ void check_generic(const Voice& voice, const Positions& generic_m) {
 
 }  // namespace
 
-RetargetedVoice retarget_voice(const Voice& voice, const Positions& generic_m, const Positions& specific_m,
+AdaptedVoice adapt_voice(const Voice& voice, const Positions& generic_m, const Positions& specific_m,
                                const PolygonFaces& faces, const std::string& specific_name) {
   const Eigen::Index n = voice.dimension() / 3;
   if (generic_m.cols() != n || specific_m.cols() != n)
@@ -54,7 +54,7 @@ RetargetedVoice retarget_voice(const Voice& voice, const Positions& generic_m, c
   check_generic(voice, generic_m);
   const FaceAdaptation a(generic_m, specific_m, faces);
 
-  RetargetedVoice out;
+  AdaptedVoice out;
   auto& s = out.summary;
   s.vertices = static_cast<std::size_t>(n);
   s.triangles = a.triangle_count();

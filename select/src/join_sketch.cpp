@@ -1,4 +1,4 @@
-#include "fapcast/select/junction_sketch.hpp"
+#include "fapcast/select/join_sketch.hpp"
 
 #include "fapcast/select/phone_graph.hpp"
 
@@ -8,11 +8,11 @@
 
 namespace fapcast {
 
-SketchGrid sketch_grid(const JunctionFeatures& features) {
+SketchGrid sketch_grid(const JoinFeatures& features) {
   // From at most about 1,024 evenly spaced rows of each table: any grid is exact (values beyond
   // reach are clamped, widening only their rows' rounding norms), the sample only tunes it.
   double largest = 0.0, squares = 0.0, values = 0.0;
-  for (const JunctionRows* rows : {&features.entry, &features.exit}) {
+  for (const JoinRows* rows : {&features.entry, &features.exit}) {
     const Eigen::Index stride = std::max<Eigen::Index>(1, rows->rows() / 1024);
     for (Eigen::Index r = 0; r < rows->rows(); r += stride) {
       largest = std::max(largest, static_cast<double>(rows->row(r).cwiseAbs().maxCoeff()));
@@ -33,7 +33,7 @@ float sketch_row(const float* row, Eigen::Index dims, const SketchGrid& grid, st
   constexpr auto reach = static_cast<float>(kSketchReach);
   const auto step = static_cast<float>(grid.step);
   Four low = Four::Zero(), high = Four::Zero();  // squared rounding errors, lanes 0-3 and 4-7
-  for (Eigen::Index d = 0; d < dims; d += 4) {  // dims is a multiple of kJunctionLanes
+  for (Eigen::Index d = 0; d < dims; d += 4) {  // dims is a multiple of kJoinLanes
     const Four v = Eigen::Map<const Four>(row + d);
     Four y = (v * grid.scale).max(-reach).min(reach);
     y = (y == y).select(y, Four::Zero());  // NaN: 0 (its rounding norm is NaN, which bounds nothing)

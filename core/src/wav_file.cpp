@@ -1,0 +1,112 @@
+#include "fapcast/core/wav_file.hpp"
+
+#include <sndfile.h>
+
+#include <algorithm>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "fapcast/core/file_io.hpp"
+
+namespace fapcast {
+namespace {
+
+struct SndfileCloser {
+  void operator()(SNDFILE* f) const { sf_close(f); }
+};
+using SndfilePtr = std::unique_ptr<SNDFILE, SndfileCloser>;
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& rule, const std::string& detail) {
+  throw InputError({path.string(), std::nullopt, std::nullopt}, rule, detail);
+}
+
+// A growing byte buffer libsndfile writes into (its virtual I/O), so that the file itself is
+// written once, atomically, by write_file_atomically.
+struct MemoryFile {
+  std::string bytes;
+  sf_count_t position = 0;
+};
+sf_count_t memory_length(void* user) { return static_cast<sf_count_t>(static_cast<MemoryFile*>(user)->bytes.size()); }
+sf_count_t memory_seek(sf_count_t offset, int whence, void* user) {
+  auto& f = *static_cast<MemoryFile*>(user);
+  const sf_count_t base = whence == SEEK_SET ? 0 : whence == SEEK_CUR ? f.position : static_cast<sf_count_t>(f.bytes.size());
+  f.position = std::max<sf_count_t>(0, base + offset);
+  return f.position;
+}
+sf_count_t memory_read(void* out, sf_count_t count, void* user) {
+  auto& f = *static_cast<MemoryFile*>(user);
+  const sf_count_t size = static_cast<sf_count_t>(f.bytes.size());
+  const sf_count_t n = std::clamp<sf_count_t>(size - f.position, 0, count);
+  if (n > 0) std::memcpy(out, f.bytes.data() + f.position, static_cast<std::size_t>(n));
+  f.position += n;
+  return n;
+}
+sf_count_t memory_write(const void* in, sf_count_t count, void* user) {
+  auto& f = *static_cast<MemoryFile*>(user);
+  const auto end = static_cast<std::size_t>(f.position + count);
+  if (end > f.bytes.size()) f.bytes.resize(end);
+  std::memcpy(f.bytes.data() + f.position, in, static_cast<std::size_t>(count));
+  f.position += count;
+  return count;
+}
+sf_count_t memory_tell(void* user) { return static_cast<MemoryFile*>(user)->position; }
+
+}  // namespace
+
+Audio read_wav(const std::filesystem::path& path, std::int64_t max_instants) {
+  SF_INFO info{};
+  SndfilePtr file(sf_open(path.c_str(), SFM_READ, &info));
+  if (!file) fail(path, "wav-open", std::string("cannot read as audio: ") + sf_strerror(nullptr));
+  if (info.channels < 1 || info.channels > 1024) fail(path, "wav-channels", "unsupported channel count");
+  if (info.samplerate < 1) fail(path, "wav-rate", "sample rate must be positive");
+  Audio audio;
+  audio.sample_rate = SampleRate{info.samplerate};
+  audio.channels = info.channels;
+  constexpr sf_count_t kChunkInstants = 4096;
+  std::vector<std::int16_t> chunk(static_cast<std::size_t>(kChunkInstants) * info.channels);
+  for (;;) {
+    const sf_count_t got = sf_readf_short(file.get(), chunk.data(), kChunkInstants);
+    if (got <= 0) break;
+    if (audio.instants() + got > max_instants)
+      fail(path, "wav-too-long", "more than " + std::to_string(max_instants) + " sampling instants");
+    audio.samples.insert(audio.samples.end(), chunk.begin(),
+                         chunk.begin() + static_cast<std::ptrdiff_t>(got * info.channels));
+  }
+  if (sf_error(file.get()) != SF_ERR_NO_ERROR) fail(path, "wav-read", sf_strerror(file.get()));
+  return audio;
+}
+
+Audio read_mono_wav(const std::filesystem::path& path, std::int64_t max_instants) {
+  Audio audio = read_wav(path, max_instants);
+  if (audio.channels != 1)
+    fail(path, "wav-mono", "expected mono audio, found " + std::to_string(audio.channels) + " channels");
+  return audio;
+}
+
+std::string wav_bytes(const Audio& audio) {
+  if (audio.sample_rate.hz < 1 || audio.sample_rate.hz > 0x7fffffff)
+    throw std::invalid_argument("WAV: sample rate " + std::to_string(audio.sample_rate.hz) + " Hz out of range");
+  if (audio.channels < 1) throw std::invalid_argument("WAV: channel count must be positive");
+  SF_VIRTUAL_IO io{memory_length, memory_seek, memory_read, memory_write, memory_tell};
+  MemoryFile memory;
+  SF_INFO info{};
+  info.samplerate = static_cast<int>(audio.sample_rate.hz);
+  info.channels = audio.channels;
+  info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_16;
+  {
+    SndfilePtr file(sf_open_virtual(&io, SFM_WRITE, &info, &memory));
+    if (!file) throw std::runtime_error(std::string("WAV: cannot encode: ") + sf_strerror(nullptr));
+    const sf_count_t n = audio.instants();
+    if (sf_writef_short(file.get(), audio.samples.data(), n) != n)
+      throw std::runtime_error(std::string("WAV: write failed: ") + sf_strerror(file.get()));
+  }
+  return std::move(memory.bytes);
+}
+
+void write_wav(const std::filesystem::path& path, const Audio& audio) {
+  write_file_atomically(path, wav_bytes(audio));
+}
+
+}  // namespace fapcast

@@ -3,6 +3,7 @@
 // -> FAP frames through the codec -> the requested frame rate on the WAV timeline -> a file
 // chosen by extension. Wiring only: each step is a library function.
 #include "fapcast/codec/fap_frame.hpp"
+#include "fapcast/codec/fap_text.hpp"
 #include "fapcast/codec/feature_point_basis.hpp"
 #include "fapcast/synthesis/speech_expression.hpp"
 #include "fapcast/synthesis/synthesis.hpp"
@@ -44,7 +45,7 @@ bool is_mesh_output(const std::filesystem::path& path);
 
 // Writes `seq` atomically by extension; .json carries each frame's sample at `sample_rate`,
 // .bvh is rigged on the neutral face (fit_generic_face supplies pivots and the tongue tip).
-void write_animation(const std::filesystem::path& path, const FapSequence& seq,
+void write_animation(const std::filesystem::path& path, const FapSequence& seq, const FapTextWriteOptions& fap,
                      SampleRate sample_rate, const FeaturePointPositions& neutral);
 
 }  // namespace fapcast::cli

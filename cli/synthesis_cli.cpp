@@ -2,6 +2,8 @@
 
 #include "command.hpp"
 #include "fapcast/render/mesh_export.hpp"
+#include "fap_output.hpp"
+#include "file_extension.hpp"
 #include "voice_face.hpp"
 
 #include "fapcast/codec/gltf_export.hpp"
@@ -75,6 +77,7 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
           },
           "EXPRESSION"));
   cmd->add_option("--obj-frames-out", args.obj_frames, ".glb: also write every frame as OBJ (metres) into this folder, for debugging");
+  add_player_option(cmd, args.player);
   cmd->add_flag("-q,--quiet", args.quiet, "No progress on standard error");
   cmd->callback([&args, fps, name, run = std::move(run)] {
     if (!is_animation_output(args.output))
@@ -87,6 +90,8 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
       throw UsageError(name + ": --viseme (FAP 1) has no place in a .glb");
     if (!is_mesh_output(args.output) && !args.obj_frames.empty())
       throw UsageError(name + ": --obj-frames-out needs a .glb output");
+    if (!args.player.empty() && lower_extension(args.output) != ".fap")
+      throw UsageError(name + ": --player applies to a .fap output");
     if (!args.expression_text.empty()) args.expression = parse_expression_blend(args.expression_text);
     run();
   });
@@ -147,7 +152,7 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
     track.pca_frames = speech_weights(track.pca_frames, speech);
     const FapSequence seq = fap_track(track, basis, animation, audio_samples);
     seconds = elapsed();
-    write_animation(args.output, seq, sample_rate, basis.neutral);
+    write_animation(args.output, seq, fap_write_options(args.player), sample_rate, basis.neutral);
     frames = seq.frames.size();
   }
   std::cout << args.output << ": " << frames << " frames at " << fps << " fps ("

@@ -25,6 +25,7 @@ struct SynthesisArgs {
   bool viseme = false;
   bool quiet = false;
   std::string obj_frames;  // .glb only: also every frame as OBJ here (debugging)
+  std::string player;      // .fap only: --player xface|greta|vreng
   std::string expression_text;                     // as given: "joy:40[,surprise:20]"
   std::optional<ExpressionBlend> expression;  // parsed before `run` is called
 };

@@ -2,6 +2,7 @@
 // an RTP FAP stream (spec/rtp.md) until it falls silent and writes the track atomically.
 // Argument parsing only; receiving and decoding are transport functions.
 #include "command.hpp"
+#include "fap_output.hpp"
 
 #include "fapcast/transport/fba_track.hpp"
 #include "fapcast/transport/timeline.hpp"
@@ -18,6 +19,7 @@ using namespace fapcast;
 struct RecvArgs {
   std::string url;
   std::string output;
+  std::string player;
   double timeout_seconds = 5;
   std::string source;
   std::string interface;
@@ -61,10 +63,18 @@ void run_recv(const RecvArgs& a) {
             << " sequence jumps, " << filtered << " from other sources\n"
             << "jitter:    " << stream.jitter_seconds() * 1000 << " ms (RFC 3550 A.8)\n"
             << "frames:    " << track.sequence().frames.size() << " (" << t.decoded << " decoded, "
-            << t.held_frames << " held over gaps, " << t.decode_errors << " decode errors)\n";
+            << t.held_frames << " held over gaps, " << t.decode_errors << " decode errors)\n"
+            << "received:  ";
+  if (t.fapcast_units > 0) std::cout << t.fapcast_units << " units " << fba_profile_name(FbaProfile::kFapcast);
+  if (t.fapcast_units > 0 && t.standard_units > 0) std::cout << ", ";
+  if (t.standard_units > 0 || t.fapcast_units == 0) std::cout << t.standard_units << " units " << fba_profile_name(FbaProfile::kStandard);
+  if (t.fap_quant >= 0)
+    std::cout << ", fap_quant " << t.fap_quant << (t.fap_quant == 0 ? " (the values sent, losslessly)" : " (within half a step)");
+  std::cout << "\n";
   if (track.sequence().frames.empty())
     throw std::runtime_error(a.url + ": no decodable frames arrived before the timeout");
-  write_track_file(a.output, track.sequence(), SampleRate{a.clock_rate});
+  cli::print_notes(a.output, write_track_file(a.output, track.sequence(),
+                                              {.sample_rate = SampleRate{a.clock_rate}, .fap = cli::fap_write_options(a.player)}));
 }
 
 const cli::Registration reg{"recv", [](CLI::App& app) {
@@ -72,6 +82,7 @@ const cli::Registration reg{"recv", [](CLI::App& app) {
   auto* cmd = app.add_subcommand("recv", "Receive a FAP track over RTP/UDP and write it to a file");
   cmd->add_option("URL", args->url, "Listen on udp://HOST:PORT (a multicast group joins it)")->required();
   cmd->add_option("-o,--output", args->output, "Output track: .fap, .fba or .json")->required();
+  cli::add_player_option(cmd, args->player);
   cmd->add_option("--timeout", args->timeout_seconds, "Stop after this many seconds without packets")
       ->check(CLI::Range(0.01, 86400.0));
   cmd->add_option("--source", args->source, "Accept datagrams from this address only");

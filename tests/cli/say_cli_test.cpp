@@ -85,6 +85,16 @@ void SayWritesTheTrackInSyncWithTheWav() {
   EXPECT_GT(jaw_max - jaw_min, 50) << "the jaw moves";
   EXPECT_GT(tip_max, 250) << "/th t/ lift the tongue tip";
   EXPECT_TRUE(bilabial) << "/m/ shows viseme 1";
+  // FAP 1 in the standard layout: the players that read it otherwise are named (spec/fap-text.md).
+  EXPECT_NE(r.err.find("note: " + out("say.fap") + ": FAP 1/2 written in the standard layout"), std::string::npos) << r.err;
+  // Written for VREng (and Greta): FAP 1 one field, nothing lost (say's visemes are at full
+  // weight), no note; read back by fapcast as the same frames.
+  const auto vreng = run_command(fapcast("say \"Maybe the thin cat will go home.\" --voice " + voice() + " -o " +
+                                         out("say-vreng.fap") + " --viseme --player vreng"));
+  ASSERT_EQ(vreng.exit_code, 0) << vreng.err;
+  EXPECT_EQ(vreng.err.find("note:"), std::string::npos) << vreng.err;
+  EXPECT_EQ(read_track_file(out("say-vreng.fap")).frames, seq.frames);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" --voice " + voice() + " -o " + out("x.fba") + " --player xface")).exit_code, 2);
 }
 
 void EveryFormatAndRate() {

@@ -133,10 +133,29 @@ class TrackFileRoundTrip : public testing::TestWithParam<const char*> {};
 TEST_P(TrackFileRoundTrip, WritesAndReadsBackTheSameFrames) {
   const auto seq = smooth_track(40, {25, 1});
   const std::string path = test::make_temp_dir("track") + "/t" + GetParam();
-  write_track_file(path, seq, SampleRate{48000});
+  TrackWriteOptions options;
+  options.sample_rate = SampleRate{48000};
+  const auto notes = write_track_file(path, seq, options);
   const auto back = read_track_file(path);
   EXPECT_EQ(back.frames, seq.frames);
   EXPECT_EQ(back.rate, seq.rate);
+  if (std::string(GetParam()) == ".fba") {
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0], "standard FBA at fap_quant 0 (lossless)");
+  }
+}
+
+// An .fba track file is lossless whatever the values: the standard syntax where it reaches them,
+// else the fapcast profile, and the note says which.
+TEST(TrackFile, FbaIsLosslessBeyondTheStandardRange) {
+  auto seq = smooth_track(40, {25, 1});
+  seq.frames[7].set(47, 2955);  // tongue_roll as `say` makes it: beyond +/-1860
+  const std::string path = test::make_temp_dir("track") + "/wide.fba";
+  const auto notes = write_track_file(path, seq);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("fapcast profile (lossless)"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[0].find("frame 7, FAP 47 tongue_roll"), std::string::npos) << notes[0];
+  EXPECT_EQ(read_track_file(path).frames, seq.frames);
 }
 INSTANTIATE_TEST_SUITE_P(Formats, TrackFileRoundTrip, testing::Values(".fap", ".fba", ".json"),
                          [](const auto& info) { return std::string(info.param + 1); });

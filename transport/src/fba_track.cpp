@@ -30,8 +30,8 @@ std::error_code encode_track_units(const FapSequence& seq, SampleRate clock_rate
       if (frame_index) *frame_index = static_cast<std::int64_t>(k);
       return ec;
     }
-    out.push_back({frame_to_sample(static_cast<std::int64_t>(k), seq.rate, clock_rate),
-                   std::move(au.bytes), au.intra});
+    out.push_back({frame_to_sample(static_cast<std::int64_t>(k), seq.rate, clock_rate), std::move(au.bytes), au.intra,
+                   options.profile == FbaProfile::kFapcast});
     au = {};
   }
   return {};
@@ -41,13 +41,17 @@ ReceivedTrack::ReceivedTrack(SampleRate clock_rate, std::int64_t max_frames)
     : clock_rate_{std::max<std::int64_t>(1, clock_rate.hz)}, max_frames_(std::max<std::int64_t>(1, max_frames)) {}
 
 std::error_code ReceivedTrack::add(const ReceivedUnit& unit) {
-  if (unit.after_loss) decoder_.reset();  // prediction across a gap would be wrong
+  const FbaProfile profile = unit.fapcast ? FbaProfile::kFapcast : FbaProfile::kStandard;
+  // Prediction across a gap would be wrong; a unit of the other profile starts afresh too.
+  if (unit.after_loss || profile != decoder_.profile()) decoder_.reset(profile);
   FapFrame frame;
   if (const auto ec = decoder_.decode(unit.bytes, frame)) {
     ++stats_.decode_errors;
     return ec;
   }
   ++stats_.decoded;
+  ++(unit.fapcast ? stats_.fapcast_units : stats_.standard_units);
+  if (unit.intra) stats_.fap_quant = decoder_.fap_quant();
   const FrameRate rate = decoder_.rate();
   if (!last_timestamp_) {
     seq_.rate = rate;

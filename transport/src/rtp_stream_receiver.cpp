@@ -63,6 +63,7 @@ std::error_code RtpStreamReceiver::on_datagram(std::span<const std::uint8_t> dat
       return ec;
     }
     unit.intra = payload.intra;
+    unit.fapcast = payload.fapcast;
     unit.bytes.assign(payload.access_unit.begin(), payload.access_unit.end());
   } else {
     unit.intra = true;  // every unit of a stateless format is a resumption point

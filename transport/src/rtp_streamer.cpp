@@ -44,7 +44,7 @@ std::error_code pack_animation_packet(const MediaUnit& unit, std::size_t index,
   h.ssrc = ids.ssrc;
   std::vector<std::uint8_t> payload;
   payload.reserve(unit.bytes.size() + 1);
-  pack_fba_payload(unit.intra, unit.bytes, payload);
+  pack_fba_payload(unit.intra, unit.fapcast, unit.bytes, payload);
   return pack_rtp(h, payload, out);
 }
 

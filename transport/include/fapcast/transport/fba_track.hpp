@@ -28,6 +28,9 @@ struct ReceivedTrackStats {
   std::uint64_t out_of_order = 0;    // units whose timestamp does not advance (dropped)
   std::uint64_t discontinuities = 0; // timestamp jumps too large to fill (frames appended as is)
   std::uint64_t over_limit = 0;      // units dropped because the track reached max_frames
+  std::uint64_t standard_units = 0;  // decoded units of the standard syntax ...
+  std::uint64_t fapcast_units = 0;   // ... and of the fapcast profile (the payload header's F bit)
+  int fap_quant = -1;                // of the last intra unit decoded (-1: none)
 };
 
 // Rebuilds a track from units in sequence order. The first decoded frame is frame 0; a later

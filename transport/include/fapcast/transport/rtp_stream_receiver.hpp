@@ -34,6 +34,7 @@ struct ReceivedUnit {
   std::uint32_t timestamp = 0;
   bool marker = false;
   bool intra = false;
+  bool fapcast = false;                 // FBA: the payload header's F bit (the fapcast profile)
   bool after_loss = false;              // the first unit delivered after a gap (or the first)
   std::vector<std::uint8_t> bytes;      // the access unit (FBA) or payload (other formats)
 };

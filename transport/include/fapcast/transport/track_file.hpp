@@ -4,10 +4,13 @@
 #include "fapcast/core/sample_rate.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/fap_frame.hpp"
+#include "fapcast/codec/fap_text.hpp"
 
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace fapcast {
 
@@ -20,9 +23,15 @@ std::optional<TrackFormat> track_format_of(const std::filesystem::path& path);
 // rule broken; an .fba with any corrupt plane is refused with its first error.
 FapSequence read_track_file(const std::filesystem::path& path);
 
-// Writes `seq` atomically in the format of the extension. `sample_rate` adds each frame's WAV
-// sample to JSON output. Throws std::runtime_error naming the file on failure.
-void write_track_file(const std::filesystem::path& path, const FapSequence& seq,
-                      std::optional<SampleRate> sample_rate = std::nullopt);
+struct TrackWriteOptions {
+  std::optional<SampleRate> sample_rate;  // .json: each frame's WAV sample
+  FapTextWriteOptions fap;                // .fap: dialect and player (spec/fap-text.md)
+};
+// Writes `seq` atomically in the format of the extension; .fba losslessly: the standard syntax
+// at fap_quant 0 where it codes every value, else the fapcast profile (spec/fba.md §9). Returns
+// what a user should know about the file, one line each: the players' notes of a .fap, the
+// profile of an .fba. Throws std::runtime_error naming the file on failure.
+std::vector<std::string> write_track_file(const std::filesystem::path& path, const FapSequence& seq,
+                                          const TrackWriteOptions& options = {});
 
 }  // namespace fapcast

@@ -17,13 +17,34 @@ packages=(
   nodejs libjs-three
   # the BVH export's cross-check: Blender's own importer, run headless (tests/codec/bvh_blender_test.cpp)
   blender
+  # the rig outputs' consumers (tests/cli/rig_cli_test.cpp): headless Chromium renders an avatar,
+  # liblo's oscdump decodes the live VMC stream; npm installs tests/viewer's packages (below)
+  chromium liblo-tools
 )
+# npm, when Node came without it (Debian's nodejs does; NodeSource's carries its own)
+command -v npm >/dev/null 2>&1 || packages+=(npm)
+
+# tests/viewer's npm packages (three.js, @pixiv/three-vrm, three-vrm-animation, node-osc), exactly as
+# its package-lock.json pins them; again only when they are missing or the lock changed.
+install_viewer_packages() {
+  local viewer stamp lock
+  viewer="$(cd "$(dirname "${BASH_SOURCE[0]}")/../tests/viewer" && pwd)"
+  stamp="$viewer/node_modules/.fapcast-package-lock.sha256"
+  lock="$(sha256sum "$viewer/package-lock.json" | cut -d' ' -f1)"
+  [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$lock" ] && return 0
+  echo "setup: npm ci in tests/viewer" >&2
+  (cd "$viewer" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  echo "$lock" > "$stamp"
+}
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -eq 0 ]; then
+  install_viewer_packages
+  exit 0
+fi
 
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
@@ -33,3 +54,4 @@ export DEBIAN_FRONTEND=noninteractive
 echo "wireshark-common wireshark-common/install-setuid boolean false" | $sudo debconf-set-selections
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+install_viewer_packages

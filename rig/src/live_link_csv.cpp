@@ -38,7 +38,10 @@ std::string live_link_csv(const Eigen::MatrixXf& arkit, FrameRate rate) {
   if (arkit.cols() != static_cast<Eigen::Index>(kArkitShapeCount))
     throw std::invalid_argument("live_link_csv: " + std::to_string(arkit.cols()) + " columns, want 52");
   std::string out = "Timecode,BlendShapeCount";
-  for (const ArkitShape& s : kArkitShapes) out += "," + live_link_name(s.name);
+  for (const ArkitShape& s : kArkitShapes) {
+    out += ',';
+    out += live_link_name(s.name);
+  }
   for (const char* r : kRotations) (out += ",") += r;
   out += '\n';
   out.reserve(out.size() + static_cast<std::size_t>(arkit.rows()) * (20 + 61 * 13));

@@ -56,6 +56,8 @@ class ArkitFit {
   const std::vector<int>& columns() const { return columns_; }
   std::int64_t region_vertices() const { return region_vertices_; }
   const Eigen::MatrixXd& gram() const { return gram_; }
+  // The unconstrained optimum for PCA coefficients c (k): u = H^-1 q, what BoxQp starts from.
+  Eigen::VectorXd unconstrained(const Eigen::VectorXd& c) const { return u0_ + u_of_c_ * c; }
   // Displacement of the feature point `p` (voice.feature_points() order) for column weights w.
   Eigen::Vector3d point_displacement(std::size_t p, const Eigen::VectorXd& w) const;
 

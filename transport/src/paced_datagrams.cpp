@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "wait_until.hpp"
+
 namespace fapcast {
 
 PacedSendReport send_paced(UdpSender& sender, std::span<const TimedDatagram> datagrams, bool pace, std::error_code& ec) {
@@ -12,17 +14,9 @@ PacedSendReport send_paced(UdpSender& sender, std::span<const TimedDatagram> dat
   const Clock::time_point start = Clock::now();
   for (const TimedDatagram& d : datagrams) {
     if (pace) {
-      const Clock::time_point deadline = start + d.at;
-      const Clock::time_point now = Clock::now();
-      if (now < deadline) {
-        timer.expires_at(deadline);
-        boost::system::error_code wait_error;
-        timer.wait(wait_error);
-      } else {
-        const auto late = std::chrono::duration_cast<std::chrono::nanoseconds>(now - deadline);
-        report.late_total += late;
-        report.late_max = std::max(report.late_max, late);
-      }
+      const auto late = std::chrono::duration_cast<std::chrono::nanoseconds>(detail::wait_until(timer, start + d.at));
+      report.late_total += late;
+      report.late_max = std::max(report.late_max, late);
     }
     sender.send(d.bytes, ec);
     if (ec) return report;

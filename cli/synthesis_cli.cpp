@@ -55,7 +55,9 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
   CLI::App* cmd = app.add_subcommand(name, description);
   cmd->add_option("-o,--output", args.output,
                   "Animation file by extension, written atomically: .fap, .fba, .json, .bvh (FAPs) or .glb "
-                  "(glTF mesh: the voice's PCA components as morph targets, its 60 fps PCA frames as weights)")
+                  "(glTF mesh: the voice's PCA components as morph targets, its 60 fps PCA frames as weights); "
+                  "with a rig (spec/rigs.md): .csv (Live Link Face, ARKit), .json with --rig (TalkingHead), "
+                  ".vrma (VRM animation), .glb with --avatar")
       ->required();
   cmd->add_option("--voice", args.voice, "Voice file (default: the reference voice, built on first use)");
   CLI::Option* fps = cmd->add_option("--fps", args.fps, "Output frames per second (25, 30, 60; any 1..120); not .glb")
@@ -78,11 +80,25 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
           "EXPRESSION"));
   cmd->add_option("--obj-frames-out", args.obj_frames, ".glb: also write every frame as OBJ (metres) into this folder, for debugging");
   add_player_option(cmd, args.player);
+  cmd->add_option("--rig", args.rig.rig_text,
+                  "Avatar rig: arkit (52 blendshapes), oculus (15 visemes), vrm (aa ih ou ee oh), vrm0 (A I U E O)");
+  cmd->add_option("--avatar", args.rig.avatar, "A .glb avatar whose morph targets (ARKit or Oculus names) -o X.glb animates");
+  cmd->add_option("--vmc", args.rig.vmc, "Also stream the rig live over VMC (OSC over UDP) to udp://HOST:PORT, in real time");
   cmd->add_flag("-q,--quiet", args.quiet, "No progress on standard error");
   cmd->callback([&args, fps, name, run = std::move(run)] {
-    if (!is_animation_output(args.output))
-      throw UsageError(name + ": output '" + args.output + "' must end in .fap, .fba, .json, .bvh or .glb");
+    if (!args.expression_text.empty()) args.expression = parse_expression_blend(args.expression_text);
+    if (!is_animation_output(args.output) && !is_rig_output(args.output, args.rig))
+      throw UsageError(name + ": output '" + args.output + "' must end in .fap, .fba, .json, .bvh, .glb, .csv or .vrma");
     args.fps_given = fps->count() > 0;
+    check_rig_args(name, args.output, args.rig);
+    if (is_rig_output(args.output, args.rig)) {
+      if (args.fps_given && args.fps != Voice::kFramesPerSecond)
+        throw UsageError(name + ": rig tracks hold the voice's " + std::to_string(Voice::kFramesPerSecond) +
+                         " fps frames; --fps does not apply");
+      if (args.viseme) throw UsageError(name + ": --viseme (FAP 1) has no place in a rig track");
+      if (!args.obj_frames.empty()) throw UsageError(name + ": --obj-frames-out needs the voice's own .glb (no --avatar)");
+      if (args.expression) throw UsageError(name + ": --expression is not fitted into rig tracks yet");
+    }
     if (is_mesh_output(args.output) && args.fps_given && args.fps != Voice::kFramesPerSecond)
       throw UsageError(name + ": a .glb holds the voice's " + std::to_string(Voice::kFramesPerSecond) +
                        " fps PCA frames as keyframes (players interpolate); --fps does not apply");
@@ -92,7 +108,6 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
       throw UsageError(name + ": --obj-frames-out needs a .glb output");
     if (!args.player.empty() && lower_extension(args.output) != ".fap")
       throw UsageError(name + ": --player applies to a .fap output");
-    if (!args.expression_text.empty()) args.expression = parse_expression_blend(args.expression_text);
     run();
   });
   return cmd;
@@ -134,7 +149,15 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
   int fps = args.fps;
   double seconds = 0;
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  if (is_mesh_output(args.output)) {
+  std::string rig_summary;
+  if (is_rig_output(args.output, args.rig)) {
+    rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, true, args.words, phones);
+    seconds = elapsed();
+    frames = static_cast<std::size_t>(std::min<std::int64_t>(
+        frames_shown(audio_samples, {static_cast<std::uint32_t>(Voice::kFramesPerSecond), 1}, sample_rate),
+        track.pca_frames.rows()));
+    fps = Voice::kFramesPerSecond;
+  } else if (is_mesh_output(args.output)) {
     const MorphAnimation animation = mesh_animation(args, speech, track, audio_samples, name);
     seconds = elapsed();
     write_file_atomically(args.output, write_glb(animation));
@@ -160,6 +183,9 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
             << track.timeline.phones.size() << " phones in " << track.search.units.size()
             << " units, synthesised in " << seconds * 1000.0 << " ms";
   if (args.expression) std::cout << ", expression " << expression_blend_text(*args.expression);
+  if (rig_summary.empty() && !args.rig.vmc.empty())
+    rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, false, args.words, phones);
+  std::cout << rig_summary;
   if (track.substituted > 0) std::cout << "; " << track.substituted << " phones borrowed a nearby viseme class";
   if (track.timeline.dropped > 0) std::cout << "; " << track.timeline.dropped << " phones shorter than a frame dropped";
   std::cout << "\n";

@@ -3,6 +3,7 @@
 // (output, voice, rate, search parameters, expression), and the common run: timed phones in, an
 // animation file out.
 #include "animation.hpp"
+#include "rig_output.hpp"
 
 #include "fapcast/synthesis/speech_expression.hpp"
 
@@ -13,6 +14,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace fapcast::cli {
 
@@ -28,6 +30,8 @@ struct SynthesisArgs {
   std::string player;      // .fap only: --player xface|greta|vreng
   std::string expression_text;                     // as given: "joy:40[,surprise:20]"
   std::optional<ExpressionBlend> expression;  // parsed before `run` is called
+  RigArgs rig;                     // --rig, --avatar, --vmc (spec/rigs.md)
+  std::vector<std::string> words;  // the words spoken (say), for the TalkingHead JSON
 };
 
 // The options that shape the synthesis, shared by `say`, `animate` and `eval synth`: --beta,

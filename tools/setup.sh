@@ -32,6 +32,19 @@ run_packages=(
   festlex-cmu           # syllabified CMU lexicon: the recording script of the default voice
 )
 
+# tests/viewer's npm packages (three.js, @pixiv/three-vrm, three-vrm-animation, node-osc), exactly as
+# its package-lock.json pins them; again only when they are missing or the lock changed.
+install_viewer_packages() {
+  local viewer stamp lock
+  viewer="$(cd "$(dirname "${BASH_SOURCE[0]}")/../tests/viewer" && pwd)"
+  stamp="$viewer/node_modules/.fapcast-package-lock.sha256"
+  lock="$(sha256sum "$viewer/package-lock.json" | cut -d' ' -f1)"
+  [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$lock" ] && return 0
+  echo "setup: npm ci in tests/viewer" >&2
+  (cd "$viewer" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+  echo "$lock" > "$stamp"
+}
+
 # The tests, benchmarks and fuzz targets, on top.
 test_packages=(
   clang                 # libFuzzer targets (tests/fuzz) are built with clang
@@ -47,10 +60,14 @@ test_packages=(
   sox                   # writes WAV variants the reader must accept (tests/core/wav_audio_test)
   xz-utils              # xz -9, the size baseline of the FBA benchmark (tests/bench/fba_bench)
   gzip                  # gzip -9, the other baseline there (Essential in Debian; listed for clarity)
+  chromium              # headless Chromium renders an avatar the rig outputs drive (tests/cli/rig_cli_test)
+  liblo-tools           # liblo's oscdump decodes the live VMC stream (tests/cli/rig_cli_test)
 )
 
 packages=("${run_packages[@]}")
 $tests && packages+=("${test_packages[@]}")
+# npm for tests/viewer, when Node came without it (Debian's nodejs does; NodeSource's carries its own)
+$tests && ! command -v npm >/dev/null 2>&1 && packages+=(npm)
 
 # One dpkg-query for the whole list; a package it does not know is simply not printed.
 installed=$(dpkg-query -W -f='${Package} ${Status}\n' "${packages[@]}" 2>/dev/null |
@@ -59,7 +76,10 @@ missing=()
 for p in "${packages[@]}"; do
   grep -qx "$p" <<<"$installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -eq 0 ]; then
+  $tests && install_viewer_packages
+  exit 0
+fi
 
 sudo=""
 [ "$(id -u)" -eq 0 ] || sudo="sudo"
@@ -71,3 +91,5 @@ if printf '%s\n' "${missing[@]}" | grep -qx tshark; then
 fi
 $sudo apt-get update -qq
 $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+$tests && install_viewer_packages
+exit 0

@@ -27,9 +27,11 @@ const cli::Registration reg{"say", [](CLI::App& app) {
         if (speech.phones.empty()) throw std::runtime_error("say: TEXT: empty-text: nothing to say");
         // A .glb is a mesh for a player: its sound goes beside it unless told where.
         std::string wav = args->wav;
-        if (wav.empty() && cli::is_mesh_output(args->synthesis.output))
+        if (wav.empty() && (cli::is_mesh_output(args->synthesis.output) ||
+                            cli::is_rig_output(args->synthesis.output, args->synthesis.rig)))
           wav = std::filesystem::path(args->synthesis.output).replace_extension(".wav").string();
         if (!wav.empty()) write_wav(wav, speech.audio);
+        for (const auto& w : speech.words) args->synthesis.words.push_back(w.text);
         cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate,
                                   static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");
       });

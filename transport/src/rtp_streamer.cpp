@@ -1,5 +1,7 @@
 #include "fapcast/transport/rtp_streamer.hpp"
 
+#include "wait_until.hpp"
+
 #include "fapcast/transport/fba_payload.hpp"
 #include "fapcast/transport/l16.hpp"
 #include "fapcast/transport/rtp_error.hpp"
@@ -124,17 +126,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
     if (!media_left) break;
     const std::int64_t report_at = rtcp_step > 0 ? next_report : kNever;
     const std::int64_t at = std::min({unit_at, audio_at, report_at});
-    if (options_.pace) {
-      const Clock::time_point deadline = start + media_time(at);
-      const Clock::time_point now = Clock::now();
-      if (now < deadline) {
-        timer.expires_at(deadline);
-        boost::system::error_code wait_error;
-        timer.wait(wait_error);
-      } else {
-        report.late_total += now - deadline;
-      }
-    }
+    if (options_.pace) report.late_total += detail::wait_until(timer, start + media_time(at));
     if (at == report_at) {
       send_reports(at);
       next_report += rtcp_step;

@@ -57,20 +57,33 @@ MonoAudio read_wav(const std::filesystem::path& path, std::int64_t max_samples) 
   SF_INFO info{};
   SndfilePtr file(sf_open(path.c_str(), SFM_READ, &info));
   if (!file) throw wav_error(path, std::string("cannot read audio: ") + sf_strerror(nullptr));
-  if (info.channels != 1) {
-    throw wav_error(path, "expected mono audio, found " + std::to_string(info.channels) + " channels");
+  if (info.channels < 1 || info.channels > kMaxWavChannels) {
+    throw wav_error(path, "cannot downmix " + std::to_string(info.channels) + " channels (at most " +
+                              std::to_string(kMaxWavChannels) + ")");
   }
   // Read in blocks: the header's frame count is not trusted for an allocation.
   MonoAudio audio;
   audio.sample_rate_hz = info.samplerate;
-  std::vector<std::int16_t> block(1 << 16);
+  audio.source_channels = info.channels;
+  const auto channels = static_cast<std::size_t>(info.channels);
+  const std::size_t frames_per_block = (std::size_t{1} << 16) / channels;
+  std::vector<std::int16_t> block(frames_per_block * channels);
   for (;;) {
-    const sf_count_t got = sf_read_short(file.get(), block.data(), static_cast<sf_count_t>(block.size()));
+    const sf_count_t got = sf_readf_short(file.get(), block.data(), static_cast<sf_count_t>(frames_per_block));
     if (got <= 0) break;
     if (static_cast<std::int64_t>(audio.samples.size()) + got > max_samples) {
       throw wav_error(path, "too many samples (limit " + std::to_string(max_samples) + ")");
     }
-    audio.samples.insert(audio.samples.end(), block.begin(), block.begin() + got);
+    if (channels == 1) {
+      audio.samples.insert(audio.samples.end(), block.begin(), block.begin() + got);
+      continue;
+    }
+    for (sf_count_t f = 0; f < got; ++f) {
+      std::int32_t sum = 0;
+      for (std::size_t c = 0; c < channels; ++c) sum += block[static_cast<std::size_t>(f) * channels + c];
+      const auto n = static_cast<std::int32_t>(channels);
+      audio.samples.push_back(static_cast<std::int16_t>((sum >= 0 ? sum + n / 2 : sum - n / 2) / n));
+    }
   }
   return audio;
 }

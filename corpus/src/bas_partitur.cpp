@@ -7,19 +7,6 @@
 #include <optional>
 
 namespace fapcast {
-namespace {
-
-using detail::excerpt;
-using detail::fail_at_line;
-using detail::parse_signed;
-using detail::split_lines;
-using detail::split_whitespace;
-using detail::TextLine;
-using detail::time_text;
-using detail::trim;
-using detail::kMaxSegments;
-
-}  // namespace
 
 Alignment read_partitur(std::string_view bytes, const std::string& source) {
   const std::string text = detail::decode_text(bytes, source, "partitur");
@@ -34,34 +21,34 @@ Alignment read_partitur(std::string_view bytes, const std::string& source) {
   mau.name = "MAU";
   std::vector<std::int64_t> links;
   std::vector<std::uint64_t> mau_lines;
-  for (const TextLine& line : split_lines(text)) {
-    const std::string_view l = trim(line.text);
+  for (const detail::TextLine& line : detail::split_lines(text)) {
+    const std::string_view l = detail::trim(line.text);
     if (l.empty()) continue;
     const std::size_t colon = l.find(':');
     if (colon != 3) {
-      fail_at_line(source, line.number, "partitur-syntax", "expected \"KEY: ...\" with a three-letter key, found \"" + excerpt(l) + "\"");
+      detail::fail_at_line(source, line.number, "partitur-syntax", "expected \"KEY: ...\" with a three-letter key, found \"" + detail::excerpt(l) + "\"");
     }
     const std::string_view key = l.substr(0, 3);
-    const auto f = split_whitespace(l.substr(4));
+    const auto f = detail::split_whitespace(l.substr(4));
     if (key == "SAM") {
       std::int64_t rate = 0;
       if (f.size() != 1 || !detail::parse_count(f[0], rate) || rate == 0) {
-        fail_at_line(source, line.number, "partitur-header", "SAM (the sample rate) must be a positive integer");
+        detail::fail_at_line(source, line.number, "partitur-header", "SAM (the sample rate) must be a positive integer");
       }
       sam = rate;
     } else if (key == "ORT") {
       std::int64_t index = 0;
       if (f.size() < 2 || !detail::parse_count(f[0], index) || static_cast<std::size_t>(index) != words.size()) {
-        fail_at_line(source, line.number, "partitur-syntax",
+        detail::fail_at_line(source, line.number, "partitur-syntax",
                      "ORT lines must be \"ORT: N WORD\" numbered 0, 1, 2 ... in order (expected " + std::to_string(words.size()) + ")");
       }
       words.push_back({std::string(f[1]), 0, 0, false});
     } else if (key == "MAU") {
-      if (!sam) fail_at_line(source, line.number, "partitur-header", "MAU before SAM: the sample rate is not known");
+      if (!sam) detail::fail_at_line(source, line.number, "partitur-header", "MAU before SAM: the sample rate is not known");
       std::int64_t begin = 0, duration = 0, link = 0;
       if (f.size() < 4 || !detail::parse_count(f[0], begin) || !detail::parse_count(f[1], duration) ||
-          !parse_signed(f[2], link)) {
-        fail_at_line(source, line.number, "partitur-syntax", "expected \"MAU: BEGIN DURATION WORD LABEL\" (samples, word index or -1)");
+          !detail::parse_signed(f[2], link)) {
+        detail::fail_at_line(source, line.number, "partitur-syntax", "expected \"MAU: BEGIN DURATION WORD LABEL\" (samples, word index or -1)");
       }
       const double rate = static_cast<double>(*sam);
       mau.intervals.push_back({static_cast<double>(begin) / rate, static_cast<double>(begin + duration + 1) / rate,
@@ -72,11 +59,11 @@ Alignment read_partitur(std::string_view bytes, const std::string& source) {
     }
     // every other tier (KAN, TRN, SAP, ...) and header key is read past
   }
-  if (!sam) fail_at_line(source, 1, "partitur-header", "no SAM line: the sample rate is not known");
+  if (!sam) detail::fail_at_line(source, 1, "partitur-header", "no SAM line: the sample rate is not known");
   for (std::size_t k = 0; k < links.size(); ++k) {
     if (links[k] < 0) continue;
     if (static_cast<std::size_t>(links[k]) >= words.size()) {
-      fail_at_line(source, mau_lines[k], "partitur-link", "MAU segment names word " + std::to_string(links[k]) +
+      detail::fail_at_line(source, mau_lines[k], "partitur-link", "MAU segment names word " + std::to_string(links[k]) +
                                                                ", but ORT has " + std::to_string(words.size()) + (words.size() == 1 ? " word" : " words"));
     }
     Word& w = words[static_cast<std::size_t>(links[k])];

@@ -7,60 +7,47 @@
 #include <optional>
 
 namespace fapcast {
-namespace {
-
-using detail::excerpt;
-using detail::fail_at_line;
-using detail::parse_signed;
-using detail::split_lines;
-using detail::split_whitespace;
-using detail::TextLine;
-using detail::time_text;
-using detail::trim;
-using detail::kMaxSegments;
-
-}  // namespace
 
 LabelTier read_esps_label(std::string_view bytes, const std::string& source, std::string tier_name) {
   const std::string text = detail::decode_text(bytes, source, "esps");
-  const std::vector<TextLine> lines = split_lines(text);
+  const std::vector<detail::TextLine> lines = detail::split_lines(text);
   std::size_t i = 0;
   std::optional<char> separator;
   for (; i < lines.size(); ++i) {
-    const std::string_view l = trim(lines[i].text);
+    const std::string_view l = detail::trim(lines[i].text);
     if (l == "#") break;
-    const auto f = split_whitespace(l);
+    const auto f = detail::split_whitespace(l);
     if (f.empty()) continue;
     if (f[0] == "separator" || f[0] == "seperator") {  // "seperator": EHMM's spelling in festvox
       if (f.size() != 2 || f[1].size() != 1) {
-        fail_at_line(source, lines[i].number, "esps-header", "separator must be one character");
+        detail::fail_at_line(source, lines[i].number, "esps-header", "separator must be one character");
       }
       separator = f[1][0];
     }
   }
   if (i == lines.size()) {
-    fail_at_line(source, lines.empty() ? 1 : lines.back().number, "esps-header",
+    detail::fail_at_line(source, lines.empty() ? 1 : lines.back().number, "esps-header",
                  "no line \"#\" ends the header (ESPS/xlabel files have one, even when the header is empty)");
   }
   LabelTier t;
   t.name = std::move(tier_name);
   double previous_end = 0;
   for (++i; i < lines.size(); ++i) {
-    const std::string_view row = trim(lines[i].text);
+    const std::string_view row = detail::trim(lines[i].text);
     if (row.empty()) continue;
-    const auto f = split_whitespace(row);
+    const auto f = detail::split_whitespace(row);
     double end = 0;
     if (!detail::parse_finite(f[0], end)) {
-      fail_at_line(source, lines[i].number, "esps-bad-time", "\"" + excerpt(f[0]) + "\" is not a time in seconds");
+      detail::fail_at_line(source, lines[i].number, "esps-bad-time", "\"" + detail::excerpt(f[0]) + "\" is not a time in seconds");
     }
     std::int64_t colour = 0;
-    if (f.size() < 2 || !parse_signed(f[1], colour)) {
-      fail_at_line(source, lines[i].number, "esps-fields",
+    if (f.size() < 2 || !detail::parse_signed(f[1], colour)) {
+      detail::fail_at_line(source, lines[i].number, "esps-fields",
                    "expected \"END_TIME COLOUR LABEL\", the colour (an integer) is missing");
     }
     // The label: the row after the colour field, up to the separator when the header sets one.
-    std::string_view label = trim(row.substr(static_cast<std::size_t>(f[1].data() + f[1].size() - row.data())));
-    if (separator) label = trim(label.substr(0, label.find(*separator)));
+    std::string_view label = detail::trim(row.substr(static_cast<std::size_t>(f[1].data() + f[1].size() - row.data())));
+    if (separator) label = detail::trim(label.substr(0, label.find(*separator)));
     t.intervals.push_back({previous_end, end, std::string(label)});
     detail::check_segment_order(t, source, lines[i].number, "esps-time-order");
     previous_end = end;

@@ -10,19 +10,6 @@
 #include <cmath>
 
 namespace fapcast {
-namespace {
-
-using detail::excerpt;
-using detail::fail_at_line;
-using detail::parse_signed;
-using detail::split_lines;
-using detail::split_whitespace;
-using detail::TextLine;
-using detail::time_text;
-using detail::trim;
-using detail::kMaxSegments;
-
-}  // namespace
 
 GentleRead read_gentle(std::string_view bytes, const std::string& source) {
   constexpr int kMaxDepth = 16;
@@ -61,9 +48,9 @@ GentleRead read_gentle(std::string_view bytes, const std::string& source) {
     };
     const double start = num(w, "start", which), end = num(w, "end", which);
     const std::string text = w.contains("word") && w["word"].is_string() ? w["word"].get<std::string>() : "";
-    if (end < start) fail("gentle-order", which + " (\"" + excerpt(text) + "\") ends before it starts");
+    if (end < start) fail("gentle-order", which + " (\"" + detail::excerpt(text) + "\") ends before it starts");
     if (!words.intervals.empty() && start < words.intervals.back().end_s - 1e-9) {
-      fail("gentle-order", which + " (\"" + excerpt(text) + "\") starts before the previous word ends");
+      fail("gentle-order", which + " (\"" + detail::excerpt(text) + "\") starts before the previous word ends");
     }
     words.intervals.push_back({start, end, text});
     if (!w.contains("phones") || !w["phones"].is_array()) fail("gentle-schema", which + " has no \"phones\" array");
@@ -80,11 +67,11 @@ GentleRead read_gentle(std::string_view bytes, const std::string& source) {
     // Gentle rounds start, end and durations to 10 ms: the phones may miss the word's end by that;
     // the last phone is made to end with its word.
     if (std::abs(t - end) > 0.0151) {
-      fail("gentle-order", which + " (\"" + excerpt(text) + "\"): its phones last " + time_text(t - start) + " s, the word " + time_text(end - start) + " s");
+      fail("gentle-order", which + " (\"" + detail::excerpt(text) + "\"): its phones last " + detail::time_text(t - start) + " s, the word " + detail::time_text(end - start) + " s");
     }
     if (k > 0) phones.intervals.back().end_s = std::max(end, phones.intervals.back().start_s);
-    if (words.intervals.size() > kMaxSegments || phones.intervals.size() > kMaxSegments) {
-      fail("gentle-limits", "more than " + std::to_string(kMaxSegments) + " words or phones");
+    if (words.intervals.size() > detail::kMaxSegments || phones.intervals.size() > detail::kMaxSegments) {
+      fail("gentle-limits", "more than " + std::to_string(detail::kMaxSegments) + " words or phones");
     }
   }
   detail::close_segment_tier(words);

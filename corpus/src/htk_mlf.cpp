@@ -5,19 +5,6 @@
 #include "segment_rows.hpp"
 
 namespace fapcast {
-namespace {
-
-using detail::excerpt;
-using detail::fail_at_line;
-using detail::parse_signed;
-using detail::split_lines;
-using detail::split_whitespace;
-using detail::TextLine;
-using detail::time_text;
-using detail::trim;
-using detail::kMaxSegments;
-
-}  // namespace
 
 bool mlf_pattern_matches(std::string_view pattern, std::string_view stem) {
   if (const auto slash = pattern.find_last_of("/\\"); slash != std::string_view::npos) {
@@ -43,53 +30,53 @@ bool mlf_pattern_matches(std::string_view pattern, std::string_view stem) {
 
 std::vector<MlfEntry> read_mlf(std::string_view bytes, const std::string& source) {
   const std::string text = detail::decode_text(bytes, source, "mlf");
-  const std::vector<TextLine> lines = split_lines(text);
+  const std::vector<detail::TextLine> lines = detail::split_lines(text);
   std::size_t i = 0;
-  while (i < lines.size() && trim(lines[i].text).empty()) ++i;
-  if (i == lines.size() || trim(lines[i].text) != "#!MLF!#") {
-    fail_at_line(source, i < lines.size() ? lines[i].number : 1, "mlf-header", "the first line is not #!MLF!#");
+  while (i < lines.size() && detail::trim(lines[i].text).empty()) ++i;
+  if (i == lines.size() || detail::trim(lines[i].text) != "#!MLF!#") {
+    detail::fail_at_line(source, i < lines.size() ? lines[i].number : 1, "mlf-header", "the first line is not #!MLF!#");
   }
   std::vector<MlfEntry> entries;
   for (++i; i < lines.size(); ++i) {
-    const std::string_view head = trim(lines[i].text);
+    const std::string_view head = detail::trim(lines[i].text);
     if (head.empty()) continue;
     if (!head.starts_with('"')) {
-      fail_at_line(source, lines[i].number, "mlf-syntax", "expected a quoted file pattern, found \"" + excerpt(head) + "\"");
+      detail::fail_at_line(source, lines[i].number, "mlf-syntax", "expected a quoted file pattern, found \"" + detail::excerpt(head) + "\"");
     }
     const std::size_t close = head.find('"', 1);
     if (close == std::string_view::npos) {
-      fail_at_line(source, lines[i].number, "mlf-syntax", "the file pattern has no closing quote");
+      detail::fail_at_line(source, lines[i].number, "mlf-syntax", "the file pattern has no closing quote");
     }
     MlfEntry e;
     e.pattern = std::string(head.substr(1, close - 1));
     e.line = lines[i].number;
-    const std::string_view rest = trim(head.substr(close + 1));
+    const std::string_view rest = detail::trim(head.substr(close + 1));
     if (rest.starts_with("->") || rest.starts_with("=>")) {
-      fail_at_line(source, lines[i].number, "mlf-redirect",
-                   "entry \"" + excerpt(e.pattern) + "\" points to the directory " + excerpt(trim(rest.substr(2))) +
+      detail::fail_at_line(source, lines[i].number, "mlf-redirect",
+                   "entry \"" + detail::excerpt(e.pattern) + "\" points to the directory " + detail::excerpt(detail::trim(rest.substr(2))) +
                        ": fapcast reads only the labels an MLF holds itself");
     }
     if (!rest.empty()) {
-      fail_at_line(source, lines[i].number, "mlf-syntax", "\"" + excerpt(rest) + "\" after the file pattern");
+      detail::fail_at_line(source, lines[i].number, "mlf-syntax", "\"" + detail::excerpt(rest) + "\" after the file pattern");
     }
     e.tier.name = e.pattern;
     bool closed = false;
     for (++i; i < lines.size(); ++i) {
-      const std::string_view l = trim(lines[i].text);
+      const std::string_view l = detail::trim(lines[i].text);
       if (l == ".") {
         closed = true;
         break;
       }
       if (l.empty()) continue;
       if (l == "///") {
-        fail_at_line(source, lines[i].number, "lab-alternatives",
+        detail::fail_at_line(source, lines[i].number, "lab-alternatives",
                      "HTK alternative transcriptions (///): fapcast reads one alignment per entry");
       }
-      const auto f = split_whitespace(l);
+      const auto f = detail::split_whitespace(l);
       std::int64_t start = 0, end = 0;
-      if (f.size() < 3 || !parse_signed(f[0], start) || !parse_signed(f[1], end)) {
-        fail_at_line(source, lines[i].number, "mlf-untimed",
-                     "label line \"" + excerpt(l) + "\" has no start and end times (a transcription, not an alignment)");
+      if (f.size() < 3 || !detail::parse_signed(f[0], start) || !detail::parse_signed(f[1], end)) {
+        detail::fail_at_line(source, lines[i].number, "mlf-untimed",
+                     "label line \"" + detail::excerpt(l) + "\" has no start and end times (a transcription, not an alignment)");
       }
       // f[2] is the level-1 label; what follows are its score and auxiliary labels (HVite -m / -f)
       // with optional scores: numbers and words, both allowed, neither used.
@@ -97,7 +84,7 @@ std::vector<MlfEntry> read_mlf(std::string_view bytes, const std::string& source
       detail::check_segment_order(e.tier, source, lines[i].number, "lab-interval-order");
     }
     if (!closed) {
-      fail_at_line(source, lines.back().number, "mlf-syntax", "entry \"" + excerpt(e.pattern) + "\" has no closing \".\" line");
+      detail::fail_at_line(source, lines.back().number, "mlf-syntax", "entry \"" + detail::excerpt(e.pattern) + "\" has no closing \".\" line");
     }
     detail::close_segment_tier(e.tier);
     entries.push_back(std::move(e));

@@ -175,6 +175,45 @@ const char* kind_name(TokenKind kind) {
   return "?";
 }
 
+// The tier kind a Praat class name stands for; nullopt for any other class.
+std::optional<TierKind> tier_kind_of(std::string_view klass) {
+  if (klass == "IntervalTier") return TierKind::intervals;
+  if (klass == "TextTier") return TierKind::points;
+  return std::nullopt;
+}
+std::string bad_tier_class(const std::string& which, std::string_view klass) {
+  return which + " has class \"" + excerpt(klass) + "\", not IntervalTier or TextTier";
+}
+
+// The checks both text parsers make of a value token: present, of the kind wanted, a finite
+// number, a count.
+Token checked(Token t, TokenKind kind, const std::string& what, const std::string& source) {
+  if (t.kind == TokenKind::end) {
+    throw InputError({source, t.line, std::nullopt}, "textgrid-truncated", "the file ends before " + what);
+  }
+  if (t.kind != kind) {
+    throw InputError({source, t.line, std::nullopt}, "textgrid-syntax",
+                     "expected " + std::string(kind_name(kind)) + " for " + what + ", found " + kind_name(t.kind));
+  }
+  return t;
+}
+double token_number(const Token& t, const std::string& source) {
+  double v = 0;
+  if (!detail::parse_finite(t.text, v)) {
+    throw InputError({source, t.line, std::nullopt}, "textgrid-bad-number",
+                     "\"" + excerpt(t.text) + "\" is not a finite number");
+  }
+  return v;
+}
+std::int64_t token_count(const Token& t, const std::string& what, const std::string& source) {
+  std::int64_t n = 0;
+  if (!detail::parse_count(t.text, n)) {
+    throw InputError({source, t.line, std::nullopt}, "textgrid-bad-count",
+                     what + " \"" + excerpt(t.text) + "\" is not a count");
+  }
+  return n;  // never used to allocate: items are appended as they are read
+}
+
 class Parser {
  public:
   Parser(std::string_view text, const std::string& source) : tokens_(text, source), source_(source) {}
@@ -216,14 +255,9 @@ class Parser {
     const std::string which = "tier " + std::to_string(index);
     LabelTier t;
     const Token klass = expect(TokenKind::string, "class =", "the class of " + which);
-    if (klass.text == "IntervalTier") {
-      t.kind = TierKind::intervals;
-    } else if (klass.text == "TextTier") {
-      t.kind = TierKind::points;
-    } else {
-      fail(klass.line, "textgrid-tier-class",
-           which + " has class \"" + excerpt(klass.text) + "\", not IntervalTier or TextTier");
-    }
+    const std::optional<TierKind> kind = tier_kind_of(klass.text);
+    if (!kind) fail(klass.line, "textgrid-tier-class", bad_tier_class(which, klass.text));
+    t.kind = *kind;
     t.name = expect(TokenKind::string, "name =", "the name of " + which).text;
     t.start_s = number("xmin =", "the xmin of " + which);
     const Token end = expect(TokenKind::number, "xmax =", "the xmax of " + which);
@@ -265,12 +299,7 @@ class Parser {
 
   // The next value, which must be of `kind` and (long form) follow words ending in `key`.
   Token expect(TokenKind kind, std::string_view key, const std::string& what) {
-    Token t = next();
-    if (t.kind == TokenKind::end) fail(t.line, "textgrid-truncated", "the file ends before " + what);
-    if (t.kind != kind) {
-      fail(t.line, "textgrid-syntax", "expected " + std::string(kind_name(kind)) + " for " + what +
-                                          ", found " + kind_name(t.kind));
-    }
+    Token t = checked(next(), kind, what, source_);
     const bool header = key == "File type =" || key == "Object class =";
     if (!header && long_form_ && !t.label.ends_with(key)) {
       fail(t.line, "textgrid-syntax", "expected \"" + std::string(key) + "\" before " + what +
@@ -283,23 +312,12 @@ class Parser {
     return t;
   }
 
-  double to_double(const Token& t) {
-    double v = 0;
-    if (!detail::parse_finite(t.text, v)) {
-      fail(t.line, "textgrid-bad-number", "\"" + excerpt(t.text) + "\" is not a finite number");
-    }
-    return v;
-  }
+  double to_double(const Token& t) { return token_number(t, source_); }
   double number(std::string_view key, const std::string& what) {
     return to_double(expect(TokenKind::number, key, what));
   }
   std::int64_t count(std::string_view key, const std::string& what) {
-    const Token t = expect(TokenKind::number, key, what);
-    std::int64_t n = 0;
-    if (!detail::parse_count(t.text, n)) {
-      fail(t.line, "textgrid-bad-count", what + " \"" + excerpt(t.text) + "\" is not a count");
-    }
-    return n;  // never used to allocate: items are appended as they are read
+    return token_count(expect(TokenKind::number, key, what), what, source_);
   }
 
   [[noreturn]] void fail(std::uint64_t line, const std::string& rule, const std::string& detail) {
@@ -338,14 +356,9 @@ class ChronologicalParser {
       const std::string which = "tier " + std::to_string(i + 1);
       LabelTier t;
       const Token klass = value(TokenKind::string, "the class of " + which);
-      if (klass.text == "IntervalTier") {
-        t.kind = TierKind::intervals;
-      } else if (klass.text == "TextTier") {
-        t.kind = TierKind::points;
-      } else {
-        fail(klass.line, "textgrid-tier-class",
-             which + " has class \"" + excerpt(klass.text) + "\", not IntervalTier or TextTier");
-      }
+      const std::optional<TierKind> kind = tier_kind_of(klass.text);
+      if (!kind) fail(klass.line, "textgrid-tier-class", bad_tier_class(which, klass.text));
+      t.kind = *kind;
       t.name = value(TokenKind::string, "the name of " + which).text;
       t.start_s = number("the xmin of " + which);
       const Token tend = value(TokenKind::number, "the xmax of " + which);
@@ -397,33 +410,13 @@ class ChronologicalParser {
     return out;
   }
   Token value(TokenKind kind, const std::string& what) {
-    Token t = tokens_.next();
-    if (t.kind == TokenKind::end) fail(t.line, "textgrid-truncated", "the file ends before " + what);
-    if (t.kind != kind) {
-      fail(t.line, "textgrid-syntax", "expected " + std::string(kind_name(kind)) + " for " + what +
-                                          ", found " + kind_name(t.kind));
-    }
-    if (!t.label.empty()) {
-      fail(t.line, "textgrid-syntax", "words (\"" + excerpt(t.label) + "\") before " + what);
-    }
+    Token t = checked(tokens_.next(), kind, what, source_);
+    if (!t.label.empty()) fail(t.line, "textgrid-syntax", "words (\"" + excerpt(t.label) + "\") before " + what);
     return t;
   }
-  double to_double(const Token& t) {
-    double v = 0;
-    if (!detail::parse_finite(t.text, v)) {
-      fail(t.line, "textgrid-bad-number", "\"" + excerpt(t.text) + "\" is not a finite number");
-    }
-    return v;
-  }
+  double to_double(const Token& t) { return token_number(t, source_); }
   double number(const std::string& what) { return to_double(value(TokenKind::number, what)); }
-  std::int64_t count(const std::string& what) {
-    const Token t = value(TokenKind::number, what);
-    std::int64_t n = 0;
-    if (!detail::parse_count(t.text, n)) {
-      fail(t.line, "textgrid-bad-count", what + " \"" + excerpt(t.text) + "\" is not a count");
-    }
-    return n;
-  }
+  std::int64_t count(const std::string& what) { return token_count(value(TokenKind::number, what), what, source_); }
   [[noreturn]] void fail(std::uint64_t line, const std::string& rule, const std::string& detail) {
     throw InputError({source_, line, std::nullopt}, rule, detail);
   }
@@ -479,14 +472,9 @@ class BinaryParser {
     LabelTier t;
     const std::size_t klass_at = pos_;
     const std::string klass = short_string("the class of " + which);
-    if (klass == "IntervalTier") {
-      t.kind = TierKind::intervals;
-    } else if (klass == "TextTier") {
-      t.kind = TierKind::points;
-    } else {
-      fail(klass_at, "textgrid-tier-class",
-           which + " has class \"" + excerpt(klass) + "\", not IntervalTier or TextTier");
-    }
+    const std::optional<TierKind> kind = tier_kind_of(klass);
+    if (!kind) fail(klass_at, "textgrid-tier-class", bad_tier_class(which, klass));
+    t.kind = *kind;
     t.name = text("the name of " + which);
     t.start_s = real("the xmin of " + which);
     const std::size_t end_at = pos_;

@@ -7,19 +7,6 @@
 #include <stdexcept>
 
 namespace fapcast {
-namespace {
-
-using detail::excerpt;
-using detail::fail_at_line;
-using detail::parse_signed;
-using detail::split_lines;
-using detail::split_whitespace;
-using detail::TextLine;
-using detail::time_text;
-using detail::trim;
-using detail::kMaxSegments;
-
-}  // namespace
 
 LabelTier read_timit_label(std::string_view bytes, const std::string& source, std::int64_t sample_rate_hz,
                            std::string tier_name) {
@@ -28,17 +15,17 @@ LabelTier read_timit_label(std::string_view bytes, const std::string& source, st
   LabelTier t;
   t.name = std::move(tier_name);
   const double rate = static_cast<double>(sample_rate_hz);
-  for (const TextLine& line : split_lines(text)) {
-    const auto f = split_whitespace(line.text);
+  for (const detail::TextLine& line : detail::split_lines(text)) {
+    const auto f = detail::split_whitespace(line.text);
     if (f.empty()) continue;
     if (f.size() != 3) {
-      fail_at_line(source, line.number, "timit-fields",
+      detail::fail_at_line(source, line.number, "timit-fields",
                    "expected \"BEGIN END LABEL\" (3 fields), found " + std::to_string(f.size()));
     }
     std::int64_t begin = 0, end = 0;
     if (!detail::parse_count(f[0], begin) || !detail::parse_count(f[1], end)) {
-      fail_at_line(source, line.number, "timit-bad-sample",
-                   "\"" + excerpt(detail::parse_count(f[0], begin) ? f[1] : f[0]) + "\" is not a sample number");
+      detail::fail_at_line(source, line.number, "timit-bad-sample",
+                   "\"" + detail::excerpt(detail::parse_count(f[0], begin) ? f[1] : f[0]) + "\" is not a sample number");
     }
     t.intervals.push_back({static_cast<double>(begin) / rate, static_cast<double>(end) / rate, std::string(f[2])});
     detail::check_segment_order(t, source, line.number, "timit-order");

@@ -287,7 +287,9 @@ void read_hts_context(LabelTier& t, const std::string& source, std::vector<std::
   notes.push_back("HTS full-context labels: the centre phone of each");
 }
 
-std::vector<AlignedSegment> map_segments(const LabelTier& t, LabelSet set, const std::string& source) {
+}  // namespace
+
+std::vector<AlignedSegment> segments_of(const LabelTier& t, LabelSet set, const std::string& source) {
   std::vector<AlignedSegment> out;
   bool join_next = false;
   for (std::size_t i = 0; i < t.intervals.size(); ++i) {
@@ -300,13 +302,14 @@ std::vector<AlignedSegment> map_segments(const LabelTier& t, LabelSet set, const
                  "\" is not " + label_set_article(set) + " label (--phone-set names another set)");
     }
     if (m->kind != LabelKind::phone) {
-      out.push_back({v.start_s, v.end_s, m->kind, Phone::SIL, v.label});
+      out.push_back({v.start_s, v.end_s, m->kind, Phone::SIL, v.start_s, v.label});
       join_next = false;
       continue;
     }
     if (join_next && !out.empty() && out.back().kind == LabelKind::phone && out.back().end_s == v.start_s &&
         out.back().phone == m->phones.front()) {
       out.back().end_s = v.end_s;  // a closure and its release: one phone from the closure on
+      out.back().release_s = v.start_s;
       join_next = m->join == LabelJoin::with_next;
       continue;
     }
@@ -320,14 +323,12 @@ std::vector<AlignedSegment> map_segments(const LabelTier& t, LabelSet set, const
     for (std::size_t k = 0; k < m->phones.size(); ++k) {
       const double a = v.start_s + step * static_cast<double>(k);
       const double b = k + 1 == m->phones.size() ? v.end_s : a + step;
-      out.push_back({a, b, LabelKind::phone, m->phones[k], v.label});
+      out.push_back({a, b, LabelKind::phone, m->phones[k], a, v.label});
     }
     join_next = m->join == LabelJoin::with_next;
   }
   return out;
 }
-
-}  // namespace
 
 std::string_view alignment_format_name(AlignmentFormat f) {
   switch (f) {
@@ -444,7 +445,7 @@ AlignmentFile read_alignment_file(std::string_view bytes, const std::string& pat
   } else {
     out.label_set = best_set(*c.tier).first;
   }
-  out.segments = map_segments(*c.tier, out.label_set, path);
+  out.segments = segments_of(*c.tier, out.label_set, path);
   std::size_t phones = 0, noises = 0;
   double speech = 0;
   for (const AlignedSegment& s : out.segments) {

@@ -124,7 +124,13 @@ std::optional<MappedLabel> map_label(LabelSet set, std::string_view label) {
         return MappedLabel{LabelKind::phone, {p.phone}, LabelJoin::none};
       }
       case LabelSet::timit: {
-        const TimitPhone t = phone_from_timit(label, "label");
+        // TIMIT's labels, and the ARPAbet that TIMIT-trained aligners and MOCHA mix with them.
+        TimitPhone t{Phone::SIL, false};
+        try {
+          t = phone_from_timit(label, "label");
+        } catch (const std::invalid_argument&) {
+          t = {parse_arpabet(label, "label").phone, false};
+        }
         if (t.phone == Phone::SIL) return MappedLabel{LabelKind::silence, {}, LabelJoin::none};
         return MappedLabel{LabelKind::phone, {t.phone}, t.closure ? LabelJoin::with_next : LabelJoin::none};
       }

@@ -6,6 +6,7 @@
 
 #include "fapcast/core/frame_rate.hpp"
 #include "fapcast/codec/gltf_export.hpp"
+#include "fapcast/corpus/alignment_file.hpp"
 #include "fapcast/corpus/alignment_phones.hpp"
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/face/facial_expression.hpp"
@@ -161,7 +162,7 @@ void BadInputExitsOneAndNamesIt() {
                    " -o " + out("e.fap"), "none.lab");
   write_file_atomically(out("bad.lab"), "0 1000000 sil\n1000000 2000000 xyz\n");
   expect_error("animate --wav " + take("wav") + " --align " + out("bad.lab") + " --voice " + voice() + " -o " +
-                   out("e.fap"), "phone-label");
+                   out("e.fap"), "alignment-unknown-label");
   write_file_atomically(out("overlap.lab"), "0 2000000 sil\n1000000 3000000 aa\n");
   expect_error("animate --wav " + take("wav") + " --align " + out("overlap.lab") + " --voice " + voice() + " -o " +
                    out("e.fap"), "overlap.lab");
@@ -173,10 +174,10 @@ void BadInputExitsOneAndNamesIt() {
 
 // The take's phones as `animate` reads them, synthesised by the library with the CLI's defaults.
 SynthesizedTrack library_track(const Voice& v, const MonoAudio& audio) {
-  const Alignment a = read_textgrid(read_file(take("TextGrid")), take("TextGrid"));
+  const AlignmentFile a = read_alignment_file(read_file(take("TextGrid")), take("TextGrid"), {});
   const auto samples = static_cast<std::int64_t>(audio.samples.size());
-  const auto phones = fit_phones_to_audio(phones_from_tier(*phone_tier(a), audio.sample_rate_hz, "t"),
-                                                 samples, audio.sample_rate_hz / 50, "t");
+  const auto phones = fit_phones_to_audio(timed_phones(a.segments, audio.sample_rate_hz), samples,
+                                          audio.sample_rate_hz / 50, "t");
   SynthesisOptions options;
   options.search.beta = 0.1;
   options.search.max_active = 64;

@@ -1,9 +1,8 @@
-// Phones from alignments: ARPAbet and TIMIT labels, gaps, closure + release, bad labels.
+// Timed phones from alignment segments: ARPAbet and TIMIT labels, gaps, closure + release,
+// EMU compounds and aspiration, bad labels; and fitting them to the audio.
 #include "fapcast/corpus/alignment_phones.hpp"
 
 #include "fapcast/core/input_error.hpp"
-#include "fapcast/corpus/lab_file.hpp"
-#include "fapcast/corpus/textgrid.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,9 +15,9 @@ LabelTier tier(std::vector<Interval> intervals, std::string name = "phones") {
 }
 
 TEST(AlignmentPhones, ReadsArpabetTimitAndGaps) {
-  const auto p = phones_from_tier(tier({{0.0, 0.1, ""}, {0.1, 0.2, "HH"}, {0.2, 0.35, "AH0"}, {0.35, 0.4, "pau"},
-                                        {0.4, 0.45, "dcl"}, {0.45, 0.5, "d"}, {0.5, 0.6, "ix"}, {0.6, 0.7, "sil"}}),
-                                   16000, "a.TextGrid");
+  const LabelTier t = tier({{0.0, 0.1, ""}, {0.1, 0.2, "HH"}, {0.2, 0.35, "AH0"}, {0.35, 0.4, "pau"},
+                            {0.4, 0.45, "dcl"}, {0.45, 0.5, "d"}, {0.5, 0.6, "ix"}, {0.6, 0.7, "sil"}});
+  const auto p = timed_phones(segments_of(t, LabelSet::timit, "a.TextGrid"), 16000);
   ASSERT_EQ(p.size(), 7u);
   EXPECT_EQ(p[0].phone, Phone::SIL);
   EXPECT_EQ(p[1].phone, Phone::HH);
@@ -28,43 +27,43 @@ TEST(AlignmentPhones, ReadsArpabetTimitAndGaps) {
   EXPECT_EQ(p[4].start_sample, 6400);
   EXPECT_EQ(p[4].end_sample, 8000);
   EXPECT_EQ(p[4].release_sample, 7200);
+  EXPECT_EQ(p[4].event_sample, 7200);
   EXPECT_EQ(p[5].phone, Phone::IH);
   EXPECT_EQ(p[6].end_sample, 11200);
 }
 
+TEST(AlignmentPhones, CompoundsSplitAndAspirationJoins) {
+  // EMU ae: "k H" is one K with its aspiration; "db" is D then B in halves of its interval.
+  const LabelTier t = tier({{0.0, 0.1, "k"}, {0.1, 0.14, "H"}, {0.14, 0.24, "db"}});
+  const auto p = timed_phones(segments_of(t, LabelSet::emu_ae, "e.lab"), 10000);
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p[0].phone, Phone::K);
+  EXPECT_EQ(p[0].end_sample, 1400);
+  EXPECT_EQ(p[1].phone, Phone::D);
+  EXPECT_EQ(p[1].end_sample, 1900);
+  EXPECT_EQ(p[2].phone, Phone::B);
+  EXPECT_EQ(p[2].start_sample, 1900);
+}
+
 TEST(AlignmentPhones, BadLabelNamesFileIntervalAndLabel) {
   try {
-    phones_from_tier(tier({{0.0, 0.1, "sil"}, {0.1, 0.2, "xyz"}}), 16000, "b.lab");
+    (void)segments_of(tier({{0.0, 0.1, "sil"}, {0.1, 0.2, "xyz"}}), LabelSet::arpabet, "b.lab");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.rule(), "phone-label");
-    const std::string what = e.what();
-    EXPECT_NE(what.find("b.lab"), std::string::npos) << what;
-    EXPECT_NE(what.find("interval 2"), std::string::npos) << what;
-    EXPECT_NE(what.find("'xyz'"), std::string::npos) << what;
+    EXPECT_EQ(e.rule(), "alignment-unknown-label");
+    EXPECT_STREQ(e.what(), "b.lab: alignment-unknown-label: interval 2 (0.1 to 0.2 s) of tier \"phones\": \"xyz\" is "
+                           "not an ARPAbet label (--phone-set names another set)");
   }
 }
 
-TEST(AlignmentPhones, FindsThePhoneTier) {
-  Alignment a;
-  a.tiers.push_back(tier({{0, 1, "hello"}}, "words"));
-  EXPECT_EQ(phone_tier(a), &a.tiers[0]) << "no phone tier: the first interval tier";
-  a.tiers.push_back(tier({{0, 1, "sil"}}, "Phones"));
-  EXPECT_EQ(phone_tier(a), &a.tiers[1]);
-  EXPECT_EQ(phone_tier(Alignment{}), nullptr);
-  // A .lab file's tier works the same.
-  const LabFile lab = read_lab("0 1000000 sil\n1000000 2500000 m\n2500000 4000000 aa\n", "c.lab");
-  const auto p = phones_from_tier(to_tier(lab, "phones"), 22050, "c.lab");
+TEST(AlignmentPhones, ALabFileReadsTheSameWay) {
+  const std::string lab = "0 1000000 sil\n1000000 2500000 m\n2500000 4000000 aa\n";
+  const AlignmentFile f = read_alignment_file(lab, "c.lab", {});
+  const auto p = timed_phones(f.segments, 22050);
   ASSERT_EQ(p.size(), 3u);
   EXPECT_EQ(p[1].phone, Phone::M);
   EXPECT_EQ(p[2].end_sample, to_sample(0.4, 22050));
 }
-
-}  // namespace
-}  // namespace fapcast
-
-namespace fapcast {
-namespace {
 
 TEST(FitPhonesToAudio, CutsWithinToleranceRefusesBeyond) {
   std::vector<TimedPhone> p{{Phone::SIL, 0, 100, 0, 0, kNoWord, ""}, {Phone::AA, 100, 200, 100, 100, kNoWord, ""},

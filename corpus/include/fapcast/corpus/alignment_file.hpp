@@ -30,6 +30,7 @@ struct AlignedSegment {
   double end_s = 0;
   LabelKind kind = LabelKind::silence;
   Phone phone = Phone::SIL;  // SIL for silence and noise
+  double release_s = 0;      // a closure joined with its release: where the release starts; else start_s
   std::string label;         // as the file spells it (joined segments: the first's)
 };
 
@@ -41,6 +42,11 @@ struct AlignmentFile {
   std::vector<AlignedSegment> segments;  // the phone tier, mapped; joins applied, compounds split
   std::vector<std::string> notes;        // what was chosen and why, what was found (spn, untimed words)
 };
+
+// The segments of `tier` read in `set`: joins applied (a TIMIT closure with its release, an EMU
+// aspiration with its stop), compound labels split evenly, silence and noise kept as such.
+// Throws InputError (alignment-unknown-label) naming the interval, its times and its label.
+std::vector<AlignedSegment> segments_of(const LabelTier& tier, LabelSet set, const std::string& source);
 
 // Refusals after the choice: no phones, or phones and noises covering less than this share of
 // the recording (or of the file's own span when the recording's length is not given).

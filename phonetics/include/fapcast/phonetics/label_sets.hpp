@@ -13,7 +13,7 @@ namespace fapcast {
 
 enum class LabelSet {
   arpabet,  // CMUdict / MFA english_us_arpa / Gentle ("AH0", "ah_I"), Festival's radio set ("ax")
-  timit,    // the 61 TIMIT labels (h#, dcl, ax-h ...), folded to 39
+  timit,    // the 61 TIMIT labels (h#, dcl, ax-h ...), folded to 39, and ARPAbet mixed with them
   ipa,      // IPA (MFA's IPA sets, Praat's IPA chart, espeak-ng --ipa)
   sampa,    // SAMPA / X-SAMPA as BAS WebMAUS writes it (English and German inventories)
   emu_ae,   // the EMU demo database "ae" (Australian English SAMPA with compound labels)

@@ -125,9 +125,9 @@ void AnimateFromTextGridAndLab() {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("1 phones shorter than a frame dropped"), std::string::npos) << r.out;
 
-  // Shorter than the WAV: padded with silence and said so.
+  // Shorter than the WAV (its last segment left out): padded with silence and said so.
   LabFile cut = lab;
-  cut.segments.resize(cut.segments.size() / 2);
+  cut.segments.pop_back();
   cut.scores.resize(cut.segments.size());
   write_file_atomically(out("short.lab"), write_lab(cut));
   r = run_command(fapcast("animate --wav " + take("wav") + " --align " + out("short.lab") + " --voice " + voice() +
@@ -147,6 +147,47 @@ void AnimateFromTextGridAndLab() {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("alignment-longer-than-audio"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out("long.fap")));
+}
+
+// Real alignment files written by other tools (tests/data/speech): TIMIT sample offsets, the same
+// file renamed .lab (refused with both readings), EMU's grid with an empty first tier, a stereo WAV.
+void AnimateRealAlignments() {
+  const fs::path speech = fs::path(FAPCAST_TEST_DATA) / "speech";
+  const std::string sa1 = (speech / "timit/dr1-fvmh0/sa1").string();
+  auto r = run_command(fapcast("animate --wav " + sa1 + ".wav --align " + sa1 + ".phn --voice " + voice() + " -o " +
+                               out("timit.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("sa1.phn: labels: timit (32 phones)"), std::string::npos) << r.err;
+  EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("timit.fap")).frames.size()),
+            frames_for(read_wav(sa1 + ".wav"), 25));
+
+  write_file_atomically(out("sa1.lab"), read_file(sa1 + ".phn"));
+  r = run_command(fapcast("animate --wav " + sa1 + ".wav --align " + out("sa1.lab") + " --voice " + voice() + " -o " +
+                          out("renamed.fap")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("sa1.lab: lab-units-mismatch: as HTK 100 ns units (what a .lab holds) the segments end at 5.5 ms"),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("renamed.fap")));
+
+  const std::string emu = (speech / "emu-ae/msajc003").string();
+  r = run_command(fapcast("animate --wav " + emu + ".wav --align " + emu + ".TextGrid --voice " + voice() + " -o " +
+                          out("emu.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("tier \"Phonetic\" of 11 (by its name)"), std::string::npos) << r.err;
+  r = run_command(fapcast("animate --wav " + emu + ".wav --align " + emu + ".TextGrid --tier Utterance --voice " +
+                          voice() + " -o " + out("emu-utt.fap")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("alignment-no-phones: tier \"Utterance\" has no phone"), std::string::npos) << r.err;
+
+  // praatIO's stereo recording of "bobby ripped the ledger" with its phone grid, whose one typo
+  // ("PT" for the P T of "ripped") is written out here as T.
+  std::string grid = read_file(speech / "praatio/bobby_phones.TextGrid");
+  grid.replace(grid.find("\"PT\""), 4, "\"T\"");
+  write_file_atomically(out("bobby.TextGrid"), grid);
+  r = run_command(fapcast("animate --wav " + (speech / "stereo/bobby_16bit_16khz_2ch.wav").string() + " --align " +
+                          out("bobby.TextGrid") + " --voice " + voice() + " -o " + out("stereo.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("bobby_16bit_16khz_2ch.wav: 2 channels downmixed to mono"), std::string::npos) << r.err;
 }
 
 void BadInputExitsOneAndNamesIt() {
@@ -376,6 +417,10 @@ TEST_F(SayCli, SayAndAnimateEndToEnd) {
     AnimateFromTextGridAndLab();
   }
   {
+    SCOPED_TRACE("AnimateRealAlignments");
+    AnimateRealAlignments();
+  }
+  {
     SCOPED_TRACE("BadInputExitsOneAndNamesIt");
     BadInputExitsOneAndNamesIt();
   }
@@ -400,7 +445,9 @@ TEST(SayCliUsage, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 500")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --duration-weight -1")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("animate --wav a.wav -o x.fap")).exit_code, 2);  // no --align
-  EXPECT_EQ(run_command(fapcast("animate --wav a.wav --align a.txt -o x.fap")).exit_code, 2);
+  // The alignment's format comes from its content (a .txt name is fine): an unknown label set is
+  // the usage mistake.
+  EXPECT_EQ(run_command(fapcast("animate --wav a.wav --align a.txt --phone-set klingon -o x.fap")).exit_code, 2);
   // Expressions: an unknown name or an intensity outside 0..63 is a usage mistake, said clearly.
   for (const std::string bad : {"glee:40", "joy:64", "joy:40,fear:10,anger:5"}) {
     const auto r = run_command(fapcast("say \"Hi.\" -o x.fap --voice v.fapv --expression " + bad));

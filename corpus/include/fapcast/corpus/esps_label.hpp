@@ -1,12 +1,13 @@
 #pragma once
+// ESPS/xlabel label files (Entropic; Festival, EMU and Edinburgh Speech Tools write them):
+// segment end times in seconds (spec/corpus.md "ESPS / xlabel / Festival").
 #include "fapcast/corpus/label_tier.hpp"
 
-#include <cstdint>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace fapcast {
+
 // ESPS xlabel (Entropic), as Festival, EMU and Edinburgh Speech Tools write it: header lines
 // ("signal x", "nfields 1", "separator ;", ...) up to a line "#", then one row per segment
 // "END_TIME COLOUR LABEL": times are segment ends in seconds, the first segment starts at 0.

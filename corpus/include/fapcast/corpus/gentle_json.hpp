@@ -1,13 +1,13 @@
 #pragma once
+// Gentle's forced-alignment JSON (spec/corpus.md "Gentle JSON").
 #include "fapcast/corpus/alignment.hpp"
-#include "fapcast/corpus/label_tier.hpp"
 
-#include <cstdint>
+#include <cstddef>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace fapcast {
+
 // Gentle (lowerquality/gentle) JSON: "words" with case "success" carry start, end and phones
 // (consecutive from the word's start by their durations); other cases have no timing and are
 // counted in `untimed_words`. Tiers "words" and "phones".

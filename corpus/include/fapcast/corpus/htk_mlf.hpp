@@ -1,4 +1,6 @@
 #pragma once
+// HTK master label files (.mlf): many utterances' label files in one (spec/corpus.md "HTK
+// master label files").
 #include "fapcast/corpus/label_tier.hpp"
 
 #include <cstdint>
@@ -7,6 +9,7 @@
 #include <vector>
 
 namespace fapcast {
+
 // One utterance of an HTK master label file.
 struct MlfEntry {
   std::string pattern;    // as written between the quotes ("*/sa1.lab")

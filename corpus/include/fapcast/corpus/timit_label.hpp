@@ -1,12 +1,13 @@
 #pragma once
+// TIMIT .phn/.wrd label files: segments in samples of the recording (spec/corpus.md "TIMIT").
 #include "fapcast/corpus/label_tier.hpp"
 
 #include <cstdint>
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace fapcast {
+
 // TIMIT .phn / .wrd: "BEGIN END LABEL" in samples of the recording (16 kHz in TIMIT itself).
 LabelTier read_timit_label(std::string_view bytes, const std::string& source, std::int64_t sample_rate_hz,
                            std::string tier_name);

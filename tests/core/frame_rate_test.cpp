@@ -14,7 +14,9 @@ TEST(FrameRate, FirstFrameAtAndSampleToFrameInvertFrameToSample) {
       for (std::int64_t s = 0; s < 5000; ++s) {
         const std::int64_t n = first_frame_at(s, rate, SampleRate{sample_rate});
         ASSERT_GE(frame_to_sample(n, rate, SampleRate{sample_rate}), s) << s << " @ " << sample_rate << " " << rate;
-        if (n > 0) ASSERT_LT(frame_to_sample(n - 1, rate, SampleRate{sample_rate}), s) << s << " @ " << sample_rate << " " << rate;
+        if (n > 0) {
+          ASSERT_LT(frame_to_sample(n - 1, rate, SampleRate{sample_rate}), s) << s << " @ " << sample_rate << " " << rate;
+        }
         const std::int64_t k = sample_to_frame(s, rate, SampleRate{sample_rate});
         ASSERT_LE(frame_to_sample(k, rate, SampleRate{sample_rate}), s) << s << " @ " << sample_rate << " " << rate;
         ASSERT_GT(frame_to_sample(k + 1, rate, SampleRate{sample_rate}), s) << s << " @ " << sample_rate << " " << rate;

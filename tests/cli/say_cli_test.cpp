@@ -224,7 +224,7 @@ void BadInputExitsOneAndNamesIt() {
   // A time no sample count can hold is the alignment's fault (exit 1), not an internal error.
   write_file_atomically(out("huge.lab"), "0 1e300 aa\n");
   expect_error("animate " + take("wav") + " " + out("huge.lab") + " --voice " + voice() + " -o " + out("e.fap"),
-               "huge.lab: tier 'phones' interval 1: time-off-sample-grid");
+               "huge.lab: time-off-sample-grid: segment 1 'aa': time 1e+300 s is off the sample grid of 22050 Hz");
   write_file_atomically(out("not-a-voice.fapv"), "this is not a voice\n");
   expect_error("say \"Hello.\" --voice " + out("not-a-voice.fapv") + " -o " + out("e.fap"), "not-a-voice.fapv");
   expect_error("say \"Hello.\" --voice " + out("missing.fapv") + " -o " + out("e.fap"), "missing.fapv");

@@ -167,7 +167,7 @@ TEST(AlignmentFile, RealFilesRefusedForTheirReason) {
   EXPECT_EQ(refusal("speech/mfa/61-70968-0000.TextGrid", 16000, 4.905),
             "speech/mfa/61-70968-0000.TextGrid: alignment-no-phone-tier: its only tier, \"61\", holds no phones (\"HE "
             "BEGAN A CONFUSED COMPLAINT AGAINST TH...\" ...): a transcript, not an alignment?");
-  EXPECT_EQ(refusal("alignment/timit/polyglotdb/test.WRD", 16000, 3.36),
+  EXPECT_EQ(refusal("alignment/timit/polyglotdb/test.WRD", 16000, 3.49),
             "alignment/timit/polyglotdb/test.WRD: alignment-words-only: a TIMIT .wrd holds words, not phones: give the .phn "
             "beside it");
   EXPECT_EQ(refusal("alignment/htk/est/msajc003_msajc010.mlf", 20000, 3.054, nullptr, "msajc010.mlf"),
@@ -184,11 +184,16 @@ TEST(AlignmentFile, RealFilesRefusedForTheirReason) {
 }
 
 // The issue's case: a TIMIT .phn (sample offsets) renamed .lab was read as 100 ns units. PolyglotDB's
-// test.PHN (its recording is not shipped: 3.36 s, the file's own span, stands for its length).
+// test.PHN (its recording is not shipped: 3.49 s, the file's own span, stands for its length).
 TEST(AlignmentFile, TimitPhnRenamedLabIsRefusedWithBothReadings) {
   const std::string phn = "alignment/timit/polyglotdb/test.PHN";
-  EXPECT_EQ(refusal(phn, 16000, 3.36, nullptr, "test.lab"), "X1");
-  EXPECT_EQ(refusal(phn, 0, 0, nullptr, "test.lab"), "X2");
+  EXPECT_EQ(refusal(phn, 16000, 3.49, nullptr, "test.lab"),
+            "test.lab: lab-units-mismatch: as HTK 100 ns units (what a .lab holds) the segments end at 5.6 ms of a 3.49 s "
+            "recording; as samples at 16000 Hz they end at 3.49 s: this is a TIMIT-style file of sample offsets, name it "
+            ".phn (or .wrd)");
+  EXPECT_EQ(refusal(phn, 0, 0, nullptr, "test.lab"),
+            "test.lab: lab-units-mismatch: as HTK 100 ns units its 43 segments average 0.1 ms (no phone is that short): "
+            "sample offsets? name the file .phn and give the recording");
   EXPECT_EQ(refusal(phn, 0, 0, nullptr, "test.phn"),
             "test.phn: timit-needs-rate: TIMIT offsets are samples: give the recording's sample rate");
 }

@@ -9,7 +9,7 @@ namespace fapcast {
 namespace {
 
 TEST(FrameRate, FirstFrameAtAndSampleToFrameInvertFrameToSample) {
-  for (const FrameRate rate : {FrameRate{60, 1}, FrameRate{25, 1}, FrameRate{30000, 1001}, FrameRate{120, 1}})
+  for (const FrameRate rate : {FrameRate{60, 1}, FrameRate{25, 1}, FrameRate{30000, 1001}, FrameRate{120, 1}}) {
     for (const std::int64_t sample_rate : {8000, 16000, 22050, 44100, 48000, 11025, 7}) {
       for (std::int64_t s = 0; s < 5000; ++s) {
         const std::int64_t n = first_frame_at(s, rate, SampleRate{sample_rate});
@@ -22,6 +22,7 @@ TEST(FrameRate, FirstFrameAtAndSampleToFrameInvertFrameToSample) {
         ASSERT_GT(frame_to_sample(k + 1, rate, SampleRate{sample_rate}), s) << s << " @ " << sample_rate << " " << rate;
       }
     }
+  }
 }
 
 }  // namespace

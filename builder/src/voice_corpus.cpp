@@ -14,6 +14,7 @@
 #include "fapcast/capture/head_pose.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/lab_file.hpp"
+#include "fapcast/corpus/label_tier.hpp"
 #include "fapcast/corpus/marker_csv.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/capture/marker_resample.hpp"
@@ -315,12 +316,7 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
                                                            " (label it so, or map a label to it in manifest.json's marker_map)");
 
   const AlignedPhones aligned_phones = read_alignment(u.alignment);
-  std::int64_t aligned = 0;
-  try {
-    aligned = to_sample(aligned_phones.end_s, kVoiceFrameClock);
-  } catch (const std::out_of_range& e) {
-    refuse(u.alignment, "time-off-sample-grid", e.what());
-  }
+  const std::int64_t aligned = alignment_sample(aligned_phones.end_s, kVoiceFrameClock, u.alignment.string(), "its end");
   if (std::llabs(aligned - frames) > kMaxLengthMismatchFrames)
     refuse(u.alignment, "corpus-length", "the alignment ends at frame " + std::to_string(aligned) + " (" +
                                              std::to_string(aligned_phones.end_s) + " s), " + u.markers.filename().string() +

@@ -1,5 +1,7 @@
 #include "fapcast/corpus/label_tier.hpp"
 
+#include "fapcast/core/input_error.hpp"
+
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -15,6 +17,14 @@ std::int64_t to_sample(double seconds, SampleRate sample_rate) {
     throw std::out_of_range(what.str());
   }
   return static_cast<std::int64_t>(samples);
+}
+
+std::int64_t alignment_sample(double seconds, SampleRate sample_rate, const std::string& source, const std::string& what) {
+  try {
+    return to_sample(seconds, sample_rate);
+  } catch (const std::out_of_range& e) {
+    throw InputError({source, std::nullopt, std::nullopt}, "time-off-sample-grid", (what.empty() ? "" : what + ": ") + e.what());
+  }
 }
 
 std::ostream& operator<<(std::ostream& out, const Interval& interval) {

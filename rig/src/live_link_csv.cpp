@@ -21,7 +21,7 @@ void append_value(std::string& out, float v) {
 
 std::string live_link_timecode(std::int64_t frame, FrameRate rate) {
   if (!rate.valid() || frame < 0) throw std::invalid_argument("live_link_timecode: invalid rate or frame");
-  const std::int64_t milli = frame_to_sample(frame, rate, 60'000);  // thousandths of a 60 fps frame
+  const std::int64_t milli = frame_to_sample(frame, rate, SampleRate{60'000});  // thousandths of a 60 fps frame
   const std::int64_t tc_frames = milli / 1000;
   const std::int64_t sub = milli % 1000;
   const std::int64_t ff = tc_frames % 60;

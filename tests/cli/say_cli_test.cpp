@@ -6,6 +6,7 @@
 
 #include "fapcast/core/frame_rate.hpp"
 #include "fapcast/codec/gltf_export.hpp"
+#include "fapcast/corpus/alignment_file.hpp"
 #include "fapcast/corpus/alignment_phones.hpp"
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/face/facial_expression.hpp"
@@ -21,6 +22,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 
 namespace fapcast::test {
@@ -134,9 +137,9 @@ void AnimateFromTextGridAndLab() {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("1 phones shorter than a frame dropped"), std::string::npos) << r.out;
 
-  // Shorter than the WAV: padded with silence and said so.
+  // Shorter than the WAV (its last segment left out): padded with silence and said so.
   LabFile cut = lab;
-  cut.segments.resize(cut.segments.size() / 2);
+  cut.segments.pop_back();
   cut.scores.resize(cut.segments.size());
   write_file_atomically(out("short.lab"), write_lab(cut));
   r = run_command(fapcast("animate " + take("wav") + " " + out("short.lab") + " --voice " + voice() +
@@ -158,6 +161,59 @@ void AnimateFromTextGridAndLab() {
   EXPECT_FALSE(fs::exists(out("long.fap")));
 }
 
+// Alignment files written by other tools (tests/data/speech): EMU's grid with an empty first tier,
+// a stereo WAV; and the take's own phones in TIMIT's layout (sample offsets), as a .phn and renamed
+// .lab (refused with both readings).
+void AnimateRealAlignments() {
+  const fs::path speech = fs::path(FAPCAST_TEST_DATA) / "speech";
+  const Audio audio = read_wav(take("wav"));
+  const AlignmentFile grid_phones = read_alignment_file(read_file(take("TextGrid")), take("TextGrid"), {});
+  std::string phn;
+  std::size_t phones = 0;
+  for (const AlignedSegment& s : grid_phones.segments) {
+    std::string label = s.kind == LabelKind::silence ? "h#" : s.label;
+    std::erase_if(label, [](char c) { return c >= '0' && c <= '9'; });  // TIMIT labels carry no stress
+    std::transform(label.begin(), label.end(), label.begin(), [](unsigned char c) { return std::tolower(c); });
+    phones += s.kind == LabelKind::phone;
+    phn += std::to_string(to_sample(s.start_s, audio.sample_rate)) + " " +
+           std::to_string(to_sample(s.end_s, audio.sample_rate)) + " " + label + "\n";
+  }
+  write_file_atomically(out("take.phn"), phn);
+  auto r = run_command(fapcast("animate " + take("wav") + " " + out("take.phn") + " --voice " + voice() + " -o " +
+                               out("timit.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("take.phn: labels: timit (" + std::to_string(phones) + " phones)"), std::string::npos) << r.err;
+  EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("timit.fap")).frames.size()), frames_for(audio, 25));
+
+  write_file_atomically(out("take-phn.lab"), phn);
+  r = run_command(fapcast("animate " + take("wav") + " " + out("take-phn.lab") + " --voice " + voice() + " -o " +
+                          out("renamed.fap")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("take-phn.lab: lab-units-mismatch: as HTK 100 ns units (what a .lab holds) the segments end at "),
+            std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("renamed.fap")));
+
+  const std::string emu = (speech / "emu-ae/msajc003").string();
+  r = run_command(fapcast("animate " + emu + ".wav " + emu + ".TextGrid --voice " + voice() + " -o " +
+                          out("emu.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("tier \"Phonetic\" of 11 (by its name)"), std::string::npos) << r.err;
+  r = run_command(fapcast("animate " + emu + ".wav " + emu + ".TextGrid --tier Utterance --voice " +
+                          voice() + " -o " + out("emu-utt.fap")));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("alignment-no-phones: tier \"Utterance\" has no phone"), std::string::npos) << r.err;
+
+  // praatIO's stereo recording of "bobby ripped the ledger" with its phone grid, whose one typo
+  // ("PT" for the P T of "ripped") is written out here as T.
+  std::string grid = read_file(speech / "praatio/bobby_phones.TextGrid");
+  grid.replace(grid.find("\"PT\""), 4, "\"T\"");
+  write_file_atomically(out("bobby.TextGrid"), grid);
+  r = run_command(fapcast("animate " + (speech / "stereo/bobby_16bit_16khz_2ch.wav").string() + " " +
+                          out("bobby.TextGrid") + " --voice " + voice() + " -o " + out("stereo.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("bobby_16bit_16khz_2ch.wav: 2 channels downmixed to mono"), std::string::npos) << r.err;
+}
+
 void BadInputExitsOneAndNamesIt() {
   auto expect_error = [](const std::string& args, const std::string& what) {
     const auto r = run_command(fapcast(args));
@@ -171,14 +227,14 @@ void BadInputExitsOneAndNamesIt() {
                    " -o " + out("e.fap"), "none.lab");
   write_file_atomically(out("bad.lab"), "0 1000000 sil\n1000000 2000000 xyz\n");
   expect_error("animate " + take("wav") + " " + out("bad.lab") + " --voice " + voice() + " -o " +
-                   out("e.fap"), "phone-label");
+                   out("e.fap"), "alignment-unknown-label");
   write_file_atomically(out("overlap.lab"), "0 2000000 sil\n1000000 3000000 aa\n");
   expect_error("animate " + take("wav") + " " + out("overlap.lab") + " --voice " + voice() + " -o " +
                    out("e.fap"), "overlap.lab");
   // A time no sample count can hold is the alignment's fault (exit 1), not an internal error.
   write_file_atomically(out("huge.lab"), "0 1e300 aa\n");
   expect_error("animate " + take("wav") + " " + out("huge.lab") + " --voice " + voice() + " -o " + out("e.fap"),
-               "huge.lab: tier 'phones' interval 1: time-off-sample-grid");
+               "huge.lab: time-off-sample-grid: segment 1 'aa': time 1e+300 s is off the sample grid of 22050 Hz");
   write_file_atomically(out("not-a-voice.fapv"), "this is not a voice\n");
   expect_error("say \"Hello.\" --voice " + out("not-a-voice.fapv") + " -o " + out("e.fap"), "not-a-voice.fapv");
   expect_error("say \"Hello.\" --voice " + out("missing.fapv") + " -o " + out("e.fap"), "missing.fapv");
@@ -187,10 +243,10 @@ void BadInputExitsOneAndNamesIt() {
 
 // The take's phones as `animate` reads them, synthesised by the library with the CLI's defaults.
 SynthesizedTrack library_track(const Voice& v, const Audio& audio) {
-  const Alignment a = read_textgrid(read_file(take("TextGrid")), take("TextGrid"));
-  const auto samples = static_cast<std::int64_t>(audio.samples.size());
-  const auto phones = fit_phones_to_audio(phones_from_tier(*phone_tier(a), audio.sample_rate, "t"),
-                                                 samples, audio.sample_rate.hz / 50, "t");
+  const AlignmentFile a = read_alignment_file(read_file(take("TextGrid")), take("TextGrid"), {});
+  const auto samples = audio.instants();
+  const auto phones = fit_phones_to_audio(timed_phones(a.segments, audio.sample_rate, "t"), samples,
+                                          audio.sample_rate.hz / 50, "t");
   const SynthesisOptions options;  // the library's defaults, which `animate` ships
   return synthesize(v.graph(), v.frame_coefficients(), phones, audio.sample_rate, samples, options, "t");
 }
@@ -387,6 +443,10 @@ TEST_F(SayCli, SayAndAnimateEndToEnd) {
     AnimateFromTextGridAndLab();
   }
   {
+    SCOPED_TRACE("AnimateRealAlignments");
+    AnimateRealAlignments();
+  }
+  {
     SCOPED_TRACE("BadInputExitsOneAndNamesIt");
     BadInputExitsOneAndNamesIt();
   }
@@ -411,10 +471,12 @@ TEST(SayCliUsage, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 500")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --duration-weight -1")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("animate a.wav -o x.fap")).exit_code, 2);  // no alignment
-  EXPECT_EQ(run_command(fapcast("animate a.wav a.txt -o x.fap")).exit_code, 2);
   // One meaning per option name: --wav is an input WAV (stream's); say writes its speech with --wav-out.
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --wav x.wav")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("animate --wav a.wav --align a.TextGrid -o x.fap")).exit_code, 2);
+  // The alignment's format comes from its content (a .txt name is fine): an unknown label set is
+  // the usage mistake.
+  EXPECT_EQ(run_command(fapcast("animate a.wav a.txt --phone-set klingon -o x.fap")).exit_code, 2);
   // Expressions: an unknown name or an intensity outside 0..63 is a usage mistake, said clearly.
   for (const std::string bad : {"glee:40", "joy:64", "joy:40,fear:10,anger:5"}) {
     const auto r = run_command(fapcast("say \"Hi.\" -o x.fap --voice v.fapv --expression " + bad));

@@ -45,6 +45,10 @@ struct LabelTier {
 // halves away from zero. Throws std::out_of_range if the result does not fit in int64.
 std::int64_t to_sample(double seconds, SampleRate sample_rate);
 
+// to_sample for a time read from the file `source`: a time no sample count holds is the file's
+// fault, InputError (source, rule "time-off-sample-grid", detail `what`: to_sample's reason).
+std::int64_t alignment_sample(double seconds, SampleRate sample_rate, const std::string& source, const std::string& what);
+
 std::ostream& operator<<(std::ostream& out, const Interval& interval);
 std::ostream& operator<<(std::ostream& out, const TimePoint& point);
 std::ostream& operator<<(std::ostream& out, const LabelTier& tier);

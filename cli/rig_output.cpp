@@ -86,7 +86,7 @@ void check_rig_args(const std::string& command, const std::filesystem::path& out
 
 std::string write_rig_outputs(const RigArgs& args, const std::filesystem::path& output, const Voice& voice,
                               const SynthesizedTrack& track, std::int64_t audio_samples, bool write_file,
-                              std::span<const std::string> words, std::span<const TimedPhone> phones) {
+                              std::span<const TimedWord> words) {
   const FrameRate rate{static_cast<std::uint32_t>(Voice::kFramesPerSecond), 1};
   const std::int64_t shown =
       std::min<std::int64_t>(frames_shown(audio_samples, rate, track.timeline.sample_rate), track.pca_frames.rows());
@@ -132,14 +132,10 @@ std::string write_rig_outputs(const RigArgs& args, const std::filesystem::path& 
       write_file_atomically(output, write_vrm_animation(out.names, out.weights, rate));
     } else if (ext == ".json") {
       std::vector<TimedText> timed;
-      for (std::size_t w = 0; w < words.size(); ++w) {
-        std::int64_t first = -1, last = -1;
-        for (const TimedPhone& p : phones)
-          if (p.word == static_cast<int>(w)) { if (first < 0) first = p.start_sample; last = p.end_sample; }
-        if (first < 0) continue;
-        const double ms = 1000.0 / static_cast<double>(track.timeline.sample_rate);
-        timed.push_back({words[w], static_cast<double>(first) * ms, static_cast<double>(last - first) * ms});
-      }
+      const double ms = 1000.0 / static_cast<double>(track.timeline.sample_rate.hz);
+      for (const TimedWord& w : words)
+        timed.push_back({w.text, static_cast<double>(w.start_sample) * ms,
+                         static_cast<double>(w.end_sample - w.start_sample) * ms});
       write_file_atomically(output, talkinghead_json(timed, oculus_viseme_timeline(phone_per_frame), out.names, out.weights, rate));
     } else {
       const AvatarAnimation animated = animate_avatar(*avatar, out.names, out.weights, rate, "fapcast speech");

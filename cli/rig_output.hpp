@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 
+#include "fapcast/frontend/text_frontend.hpp"
 #include "fapcast/synthesis/synthesis.hpp"
 #include "fapcast/voice/voice.hpp"
 
@@ -34,6 +35,6 @@ void check_rig_args(const std::string& command, const std::filesystem::path& out
 // rig format and streams the frames over VMC when asked; returns a summary for the command's line.
 std::string write_rig_outputs(const RigArgs& rig, const std::filesystem::path& output, const Voice& voice,
                               const SynthesizedTrack& track, std::int64_t audio_samples, bool write_file,
-                              std::span<const std::string> words, std::span<const TimedPhone> phones);
+                              std::span<const TimedWord> words);
 
 }  // namespace fapcast::cli

@@ -151,7 +151,7 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   std::string rig_summary;
   if (is_rig_output(args.output, args.rig)) {
-    rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, true, args.words, phones);
+    rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, true, args.words);
     seconds = elapsed();
     frames = static_cast<std::size_t>(std::min<std::int64_t>(
         frames_shown(audio_samples, {static_cast<std::uint32_t>(Voice::kFramesPerSecond), 1}, sample_rate),
@@ -184,7 +184,7 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
             << " units, synthesised in " << seconds * 1000.0 << " ms";
   if (args.expression) std::cout << ", expression " << expression_blend_text(*args.expression);
   if (rig_summary.empty() && !args.rig.vmc.empty())
-    rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, false, args.words, phones);
+    rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, false, args.words);
   std::cout << rig_summary;
   if (track.substituted > 0) std::cout << "; " << track.substituted << " phones borrowed a nearby viseme class";
   if (track.timeline.dropped > 0) std::cout << "; " << track.timeline.dropped << " phones shorter than a frame dropped";

@@ -31,7 +31,7 @@ struct SynthesisArgs {
   std::string expression_text;                     // as given: "joy:40[,surprise:20]"
   std::optional<ExpressionBlend> expression;  // parsed before `run` is called
   RigArgs rig;                     // --rig, --avatar, --vmc (spec/rigs.md)
-  std::vector<std::string> words;  // the words spoken (say), for the TalkingHead JSON
+  std::vector<TimedWord> words;  // the words spoken and their spans (say), for the TalkingHead JSON
 };
 
 // The options that shape the synthesis, shared by `say`, `animate` and `eval synth`: --beta,

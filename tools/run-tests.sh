@@ -21,7 +21,7 @@ ctest --test-dir build/ci --output-on-failure -j "$jobs"
 
 if [ "$fuzz_seconds" != 0 ]; then
   cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_COMPILER=clang++ -DFAPCAST_FUZZ=ON -DFAPCAST_TESTS=OFF -DFAPCAST_WERROR=ON \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_COMPILER=clang++ -DFAPCAST_FUZZ=ON -DFAPCAST_TESTS=OFF -DFAPCAST_WERROR=ON \
     -DFAPCAST_FUZZ_SECONDS="$fuzz_seconds"
   cmake --build build/fuzz -j "$jobs" --target fapcast_fuzz_targets
   ctest --test-dir build/fuzz --output-on-failure -L fuzz

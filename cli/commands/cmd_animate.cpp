@@ -38,7 +38,7 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
           options.label_set = label_set_from_name(args->phone_set);
           if (!options.label_set)
             throw cli::UsageError("animate: --phone-set '" + args->phone_set +
-                                  "' is none of arpabet, timit, ipa, sampa, emu-ae");
+                                  "' is none of arpabet, timit, ipa, sampa, emu-ae, mocha");
         }
         const Audio recorded = read_wav(args->wav);
         const Audio audio = downmix_to_mono(recorded);
@@ -68,7 +68,7 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
                   "TIMIT .phn, BAS .par, Gentle .json (spec/corpus.md)")->required();
   cmd->add_option("--tier", args->tier, "The alignment's phone tier (default: found by name, then by its labels)");
   cmd->add_option("--phone-set", args->phone_set,
-                  "The labels' symbol set: arpabet, timit, ipa, sampa, emu-ae (default: the set that reads them)");
+                  "The labels' symbol set: arpabet, timit, ipa, sampa, emu-ae, mocha (default: the set that reads them)");
 }};
 
 }  // namespace

@@ -254,6 +254,7 @@ std::string label_set_article(LabelSet set) {
     case LabelSet::ipa: return "an IPA";
     case LabelSet::sampa: return "a SAMPA";
     case LabelSet::emu_ae: return "an EMU ae";
+    case LabelSet::mocha: return "a MOCHA-TIMIT";
   }
   return "a";
 }

@@ -55,6 +55,22 @@ constexpr auto kEmuAe = std::to_array<Row>({
     {"dH", Phone::D}, {"NH", Phone::NG}, {"Om", Phone::AO}, {"On", Phone::AO}, {"Or", Phone::AO}, {"Ow", Phone::AO},
 });
 
+// MOCHA-TIMIT's labels (its southern British speakers; the symbols of the lexical sets they
+// stand for): @ = schwa, @@ = nurse, a = trap, aa = bath/start, uh = strut, o = lot (rounded in
+// southern British English, so AO, not AA), oo = thought, ou = goat, i = kit, ii = fleece, iy =
+// the happY vowel, u = foot, uu = goose, e@ i@ u@ = square near cure; consonants as ARPAbet in
+// lower case ("y" = yes). "breath" is a noise (mapped in map_label).
+constexpr auto kMocha = std::to_array<Row>({
+    {"@", Phone::AH}, {"@@", Phone::ER}, {"a", Phone::AE}, {"aa", Phone::AA}, {"uh", Phone::AH}, {"o", Phone::AO},
+    {"oo", Phone::AO}, {"ou", Phone::OW}, {"i", Phone::IH}, {"ii", Phone::IY}, {"iy", Phone::IY}, {"u", Phone::UH},
+    {"uu", Phone::UW}, {"e", Phone::EH}, {"ei", Phone::EY}, {"ai", Phone::AY}, {"au", Phone::AW}, {"oi", Phone::OY},
+    {"e@", Phone::EH}, {"i@", Phone::IY}, {"u@", Phone::UH},
+    {"p", Phone::P}, {"b", Phone::B}, {"t", Phone::T}, {"d", Phone::D}, {"k", Phone::K}, {"g", Phone::G},
+    {"f", Phone::F}, {"v", Phone::V}, {"th", Phone::TH}, {"dh", Phone::DH}, {"s", Phone::S}, {"z", Phone::Z},
+    {"sh", Phone::SH}, {"zh", Phone::ZH}, {"h", Phone::HH}, {"ch", Phone::CH}, {"jh", Phone::JH}, {"m", Phone::M},
+    {"n", Phone::N}, {"ng", Phone::NG}, {"l", Phone::L}, {"r", Phone::R}, {"w", Phone::W}, {"y", Phone::Y},
+});
+
 template <std::size_t N>
 std::optional<MappedLabel> from_table(const std::array<Row, N>& table, std::string_view label) {
   for (const Row& r : table) {
@@ -83,6 +99,7 @@ std::string_view label_set_name(LabelSet set) {
     case LabelSet::ipa: return "ipa";
     case LabelSet::sampa: return "sampa";
     case LabelSet::emu_ae: return "emu-ae";
+    case LabelSet::mocha: return "mocha";
   }
   return "?";
 }
@@ -124,7 +141,7 @@ std::optional<MappedLabel> map_label(LabelSet set, std::string_view label) {
         return MappedLabel{LabelKind::phone, {p.phone}, LabelJoin::none};
       }
       case LabelSet::timit: {
-        // TIMIT's labels, and the ARPAbet that TIMIT-trained aligners and MOCHA mix with them.
+        // TIMIT's labels, and the ARPAbet that TIMIT-trained aligners mix with them.
         TimitPhone t{Phone::SIL, false};
         try {
           t = phone_from_timit(label, "label");
@@ -141,6 +158,9 @@ std::optional<MappedLabel> map_label(LabelSet set, std::string_view label) {
       }
       case LabelSet::sampa: return from_table(kSampa, label);
       case LabelSet::emu_ae: return from_table(kEmuAe, label);
+      case LabelSet::mocha:
+        if (label == "breath") return MappedLabel{LabelKind::noise, {}, LabelJoin::none};
+        return from_table(kMocha, label);
     }
   } catch (const std::invalid_argument&) {
     return std::nullopt;

@@ -203,6 +203,14 @@ void AnimateRealAlignments() {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("alignment-no-phones: tier \"Utterance\" has no phone"), std::string::npos) << r.err;
 
+  // MOCHA-TIMIT's own label file and recording (fsew0_001), read in its own label set.
+  const std::string mocha = std::string(FAPCAST_TEST_DATA) + "/mocha/fsew0_001";
+  r = run_command(fapcast("animate " + mocha + ".wav " + mocha + ".lab --voice " + voice() + " -o " + out("mocha.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("labels: mocha (14 phones)"), std::string::npos) << r.err;
+  EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("mocha.fap")).frames.size()),
+            frames_for(read_wav(mocha + ".wav"), 25));
+
   // praatIO's stereo recording of "bobby ripped the ledger" with its phone grid, whose one typo
   // ("PT" for the P T of "ripped") is written out here as T.
   std::string grid = read_file(speech / "praatio/bobby_phones.TextGrid");

@@ -89,3 +89,18 @@ TEST(LabelSets, EmuAeAspirationAndCompounds) {
 
 }  // namespace
 }  // namespace fapcast
+
+TEST(LabelSets, MochaTimitByLexicalSet) {
+  EXPECT_EQ(one(LabelSet::mocha, "@"), Phone::AH);
+  EXPECT_EQ(one(LabelSet::mocha, "@@"), Phone::ER);
+  EXPECT_EQ(one(LabelSet::mocha, "uh"), Phone::AH);  // strut, not ARPAbet's UH (foot)
+  EXPECT_EQ(one(LabelSet::mocha, "u"), Phone::UH);
+  EXPECT_EQ(one(LabelSet::mocha, "ii"), Phone::IY);
+  EXPECT_EQ(one(LabelSet::mocha, "i"), Phone::IH);
+  EXPECT_EQ(one(LabelSet::mocha, "o"), Phone::AO);  // lot is rounded in southern British English
+  EXPECT_EQ(one(LabelSet::mocha, "y"), Phone::Y);
+  EXPECT_EQ(one(LabelSet::mocha, "dh"), Phone::DH);
+  EXPECT_EQ(map_label(LabelSet::mocha, "breath")->kind, LabelKind::noise);
+  EXPECT_FALSE(map_label(LabelSet::mocha, "AH0"));  // ARPAbet is not MOCHA's
+  EXPECT_FALSE(map_label(LabelSet::arpabet, "@"));
+}

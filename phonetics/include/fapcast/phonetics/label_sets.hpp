@@ -17,10 +17,11 @@ enum class LabelSet {
   ipa,      // IPA (MFA's IPA sets, Praat's IPA chart, espeak-ng --ipa)
   sampa,    // SAMPA / X-SAMPA as BAS WebMAUS writes it (English and German inventories)
   emu_ae,   // the EMU demo database "ae" (Australian English SAMPA with compound labels)
+  mocha,    // MOCHA-TIMIT's labels (southern British English: @ @@ ii i uh oo ou ..., breath)
 };
 inline constexpr LabelSet kLabelSets[] = {LabelSet::arpabet, LabelSet::timit, LabelSet::ipa, LabelSet::sampa,
-                                          LabelSet::emu_ae};
-std::string_view label_set_name(LabelSet set);  // "arpabet", "timit", "ipa", "sampa", "emu-ae"
+                                          LabelSet::emu_ae, LabelSet::mocha};
+std::string_view label_set_name(LabelSet set);  // "arpabet", "timit", "ipa", "sampa", "emu-ae", "mocha"
 std::optional<LabelSet> label_set_from_name(std::string_view name);
 
 enum class LabelKind { phone, silence, noise };

@@ -87,9 +87,6 @@ TEST(LabelSets, EmuAeAspirationAndCompounds) {
   EXPECT_FALSE(map_label(LabelSet::emu_ae, "3`"));
 }
 
-}  // namespace
-}  // namespace fapcast
-
 TEST(LabelSets, MochaTimitByLexicalSet) {
   EXPECT_EQ(one(LabelSet::mocha, "@"), Phone::AH);
   EXPECT_EQ(one(LabelSet::mocha, "@@"), Phone::ER);
@@ -104,3 +101,6 @@ TEST(LabelSets, MochaTimitByLexicalSet) {
   EXPECT_FALSE(map_label(LabelSet::mocha, "AH0"));  // ARPAbet is not MOCHA's
   EXPECT_FALSE(map_label(LabelSet::arpabet, "@"));
 }
+
+}  // namespace
+}  // namespace fapcast

@@ -7,6 +7,7 @@
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/transport/track_file.hpp"
 #include "fapcast/transport/track_resample.hpp"
+#include "fap_output.hpp"
 
 #include "file_extension.hpp"
 
@@ -42,12 +43,12 @@ FapSequence fap_track(const SynthesizedTrack& track, const FeaturePointBasis& ba
                                : resample_track(voice_rate, options.rate, ResampleMode::kLinear);
   // The 60 fps grid ends on the first instant at or after the audio's end; at another rate that
   // can leave one frame shown after the sound has ended.
-  const auto shown = static_cast<std::size_t>(frames_shown(end_sample, options.rate, track.timeline.sample_rate_hz));
+  const auto shown = static_cast<std::size_t>(frames_shown(end_sample, options.rate, track.timeline.sample_rate));
   if (out.frames.size() > shown) out.frames.resize(shown);
   return out;
 }
 
-std::int64_t frames_shown(std::int64_t end_sample, FrameRate rate, std::int64_t sample_rate) {
+std::int64_t frames_shown(std::int64_t end_sample, FrameRate rate, SampleRate sample_rate) {
   return end_sample > 0 ? sample_to_frame(end_sample - 1, rate, sample_rate) + 1 : 0;
 }
 
@@ -68,13 +69,13 @@ bool is_animation_output(const std::filesystem::path& path) {
 
 bool is_mesh_output(const std::filesystem::path& path) { return lower_extension(path) == ".glb"; }
 
-void write_animation(const std::filesystem::path& path, const FapSequence& seq,
-                     std::int64_t sample_rate, const FeaturePointPositions& neutral) {
+void write_animation(const std::filesystem::path& path, const FapSequence& seq, const FapTextWriteOptions& fap,
+                     SampleRate sample_rate, const FeaturePointPositions& neutral) {
   if (lower_extension(path) == ".bvh") {
     write_file_atomically(path, write_bvh(fap_to_bvh(seq, fit_generic_face(neutral))));
     return;
   }
-  write_track_file(path, seq, sample_rate);
+  print_notes(path, write_track_file(path, seq, {.sample_rate = sample_rate, .fap = fap}));
 }
 
 }  // namespace fapcast::cli

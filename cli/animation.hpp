@@ -3,6 +3,7 @@
 // -> FAP frames through the codec -> the requested frame rate on the WAV timeline -> a file
 // chosen by extension. Wiring only: each step is a library function.
 #include "fapcast/codec/fap_frame.hpp"
+#include "fapcast/codec/fap_text.hpp"
 #include "fapcast/codec/feature_point_basis.hpp"
 #include "fapcast/synthesis/speech_expression.hpp"
 #include "fapcast/synthesis/synthesis.hpp"
@@ -26,7 +27,7 @@ ExpressionField expression_field(const ExpressionBlend& blend);
 
 // The frames at `rate` shown while audio of `end_sample` samples plays: every j with
 // frame_to_sample(j, rate, sample_rate) < end_sample.
-std::int64_t frames_shown(std::int64_t end_sample, FrameRate rate, std::int64_t sample_rate);
+std::int64_t frames_shown(std::int64_t end_sample, FrameRate rate, SampleRate sample_rate);
 
 // FAP frames of `track` at options.rate: frame j shows the 60 fps frames interpolated at
 // j / rate seconds (resample_track, linear), i.e. sample
@@ -44,7 +45,7 @@ bool is_mesh_output(const std::filesystem::path& path);
 
 // Writes `seq` atomically by extension; .json carries each frame's sample at `sample_rate`,
 // .bvh is rigged on the neutral face (fit_generic_face supplies pivots and the tongue tip).
-void write_animation(const std::filesystem::path& path, const FapSequence& seq,
-                     std::int64_t sample_rate, const FeaturePointPositions& neutral);
+void write_animation(const std::filesystem::path& path, const FapSequence& seq, const FapTextWriteOptions& fap,
+                     SampleRate sample_rate, const FeaturePointPositions& neutral);
 
 }  // namespace fapcast::cli

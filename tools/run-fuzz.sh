@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 name=${1:?usage: tools/run-fuzz.sh NAME [SECONDS]}
 seconds=${2:-300}
-bash tools/setup.sh
+bash tools/setup.sh --tests
 cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DFAPCAST_FUZZ=ON -DFAPCAST_TESTS=OFF >/dev/null
 cmake --build build/fuzz --target "$name"

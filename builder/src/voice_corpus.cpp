@@ -8,11 +8,13 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "fapcast/corpus/c3d.hpp"
 #include "fapcast/capture/head_pose.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/lab_file.hpp"
+#include "fapcast/corpus/label_tier.hpp"
 #include "fapcast/corpus/marker_csv.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/capture/marker_resample.hpp"
@@ -24,6 +26,9 @@
 namespace fapcast {
 namespace fs = std::filesystem;
 namespace {
+
+// The 60 fps capture grid as a clock: to_sample at it gives frame numbers.
+constexpr SampleRate kVoiceFrameClock{kVoiceFramesPerSecond};
 
 [[noreturn]] void refuse(const fs::path& file, const std::string& rule, const std::string& detail) {
   throw InputError({file.string(), std::nullopt, std::nullopt}, rule, detail);
@@ -311,7 +316,7 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
                                                            " (label it so, or map a label to it in manifest.json's marker_map)");
 
   const AlignedPhones aligned_phones = read_alignment(u.alignment);
-  const std::int64_t aligned = to_sample(aligned_phones.end_s, kVoiceFramesPerSecond);
+  const std::int64_t aligned = alignment_sample(aligned_phones.end_s, kVoiceFrameClock, u.alignment.string(), "its end");
   if (std::llabs(aligned - frames) > kMaxLengthMismatchFrames)
     refuse(u.alignment, "corpus-length", "the alignment ends at frame " + std::to_string(aligned) + " (" +
                                              std::to_string(aligned_phones.end_s) + " s), " + u.markers.filename().string() +
@@ -328,7 +333,7 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
       refuse(u.alignment, "corpus-alignment", "phones interval " + std::to_string(i + 1) + ": " + what);
     }
     const Phone p = *phone;
-    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(to_sample(t, kVoiceFramesPerSecond), 0, frames); };
+    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(to_sample(t, kVoiceFrameClock), 0, frames); };
     const std::int64_t first = clamp(iv.start_s);
     const std::int64_t end = clamp(iv.end_s);
     if (end <= first) continue;

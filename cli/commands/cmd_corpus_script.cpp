@@ -8,7 +8,7 @@
 
 namespace {
 
-const fapcast::cli::Registration reg{"50-corpus-script", [](CLI::App& app) {
+const fapcast::cli::Registration reg{"corpus script", [](CLI::App& app) {
   struct Args {
     std::string output;
     fapcast::cli::RecordingScriptInputs inputs;

@@ -36,7 +36,7 @@ FapJsonRead read_track(const std::string& path) {
   throw cli::UsageError("export: input '" + path + "' is neither .fap nor .json");
 }
 
-const cli::Registration reg{"60-export", [](CLI::App& app) {
+const cli::Registration reg{"export", [](CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "export", "Export a FAP track (.fap or .json) as BVH (head, jaw, tongue-tip and lip joints "
                 "on a generic adult face, cm) or as JSON for web players");
@@ -62,7 +62,7 @@ const cli::Registration reg{"60-export", [](CLI::App& app) {
     } else {
       FapJsonOptions options = track.options;
       options.generator = std::string("fapcast ") + FAPCAST_VERSION;
-      if (rate_opt->count() > 0) options.sample_rate = *sample_rate;
+      if (rate_opt->count() > 0) options.sample_rate = SampleRate{*sample_rate};
       bytes = write_fap_json(track.sequence, options);
     }
     write_file_atomically(*out, bytes);

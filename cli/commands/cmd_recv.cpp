@@ -5,6 +5,7 @@
 // and write what arrived. Argument parsing and the report only; receiving and decoding are
 // transport functions.
 #include "command.hpp"
+#include "fap_output.hpp"
 
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/transport/fba_track.hpp"
@@ -25,12 +26,13 @@ using namespace fapcast;
 struct RecvArgs {
   std::string url;
   std::string output;
+  std::string player;
   double timeout_seconds = 5;
   std::string source;
   std::string interface;
   std::int64_t ssrc = -1;
   int payload_type = kDefaultFbaPayloadType;
-  std::int64_t clock_rate = kDefaultSampleRate;
+  std::int64_t clock_rate = kDefaultSampleRate.hz;
   int reorder_ms = 40;
   double max_seconds = 3600;
 };
@@ -65,11 +67,11 @@ void run_recv(const RecvArgs& a) {
   ReceiverOptions options;
   options.payload_type = static_cast<std::uint8_t>(a.payload_type);
   if (a.ssrc >= 0) options.ssrc = static_cast<std::uint32_t>(a.ssrc);
-  options.clock_rate = a.clock_rate;
+  options.clock_rate = SampleRate{a.clock_rate};
   options.reorder_delay = std::chrono::milliseconds(a.reorder_ms);
   options.make_validator = make_fba_unit_validator;
   RtpStreamReceiver stream(options);
-  ReceivedTrack track(a.clock_rate, a.max_seconds);
+  ReceivedTrack track(SampleRate{a.clock_rate}, a.max_seconds);
 
   ReceiveLimits limits;
   limits.idle_timeout = std::chrono::milliseconds(static_cast<std::int64_t>(a.timeout_seconds * 1000));
@@ -114,18 +116,30 @@ void run_recv(const RecvArgs& a) {
             << " timestamp jumps, " << t.over_limit << " over --max-seconds, "
             << t.frame_number_mismatches << " frame-number mismatches (placed by timestamp), "
             << t.discontinuities << " confirmed discontinuities\n"
-            << "end:       " << end << "\n";
+            << "end:       " << end << "\n"
+            << "received:  ";
+  if (t.fapcast_units > 0) std::cout << t.fapcast_units << " units " << fba_profile_name(FbaProfile::kFapcast);
+  if (t.fapcast_units > 0 && t.standard_units > 0) std::cout << ", ";
+  if (t.standard_units > 0 || t.fapcast_units == 0) std::cout << t.standard_units << " units " << fba_profile_name(FbaProfile::kStandard);
+  if (t.fap_quant >= 0)
+    std::cout << ", fap_quant " << t.fap_quant << (t.fap_quant == 0 ? " (the values sent, losslessly)" : " (within half a step)");
+  std::cout << "\n";
   if (track.sequence().frames.empty())
     throw std::runtime_error(a.url + ": recv-no-frames: no decodable frames arrived (" + end + ")");
-  output.write(track_file_bytes(a.output, track.sequence(), a.clock_rate));
+  const TrackFileBytes out = track_file_bytes(
+      a.output, track.sequence(),
+      {.sample_rate = SampleRate{a.clock_rate}, .fap = cli::fap_write_options(a.player)});
+  output.write(out.bytes);
   output.commit();
+  cli::print_notes(a.output, out.notes);
 }
 
-const cli::Registration reg{"61-recv", [](CLI::App& app) {
+const cli::Registration reg{"recv", [](CLI::App& app) {
   auto args = std::make_shared<RecvArgs>();
   auto* cmd = app.add_subcommand("recv", "Receive a FAP track over RTP/UDP and write it to a file");
-  cmd->add_option("url", args->url, "Listen on udp://HOST:PORT (a multicast group joins it; RTCP on PORT+1)")->required();
+  cmd->add_option("URL", args->url, "Listen on udp://HOST:PORT (a multicast group joins it; RTCP on PORT+1)")->required();
   cmd->add_option("-o,--output", args->output, "Output track: .fap, .fba or .json")->required();
+  cli::add_player_option(cmd, args->player);
   cmd->add_option("--timeout", args->timeout_seconds, "Stop after this many seconds without an accepted packet")
       ->check(CLI::Range(0.01, 86400.0));
   cmd->add_option("--source", args->source, "Accept datagrams from this address only");

@@ -1,4 +1,4 @@
-// `fapcast say "TEXT" -o OUT.fap|OUT.glb [--wav OUT.wav] [--voice V] [--fps N] [--expression E] ...`:
+// `fapcast say "TEXT" -o OUT.fap|OUT.glb [--wav-out OUT.wav] [--voice V] [--fps N] [--expression E] ...`:
 // speaks the text with espeak-ng and animates it (spec/synthesis.md). Argument parsing only.
 #include "command.hpp"
 #include "synthesis_cli.hpp"
@@ -13,7 +13,7 @@
 namespace {
 using namespace fapcast;
 
-const cli::Registration reg{"20-say", [](CLI::App& app) {
+const cli::Registration reg{"say", [](CLI::App& app) {
   struct Args {
     std::string text;
     std::string wav;
@@ -27,14 +27,16 @@ const cli::Registration reg{"20-say", [](CLI::App& app) {
         if (speech.phones.empty()) throw std::runtime_error("say: TEXT: empty-text: nothing to say");
         // A .glb is a mesh for a player: its sound goes beside it unless told where.
         std::string wav = args->wav;
-        if (wav.empty() && cli::is_mesh_output(args->synthesis.output))
+        if (wav.empty() && (cli::is_mesh_output(args->synthesis.output) ||
+                            cli::is_rig_output(args->synthesis.output, args->synthesis.rig)))
           wav = std::filesystem::path(args->synthesis.output).replace_extension(".wav").string();
         if (!wav.empty()) write_wav(wav, speech.audio);
-        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate_hz,
+        args->synthesis.words = speech.words;
+        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate,
                                   static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");
       });
   cmd->add_option("TEXT", args->text, "The text (UTF-8)")->required();
-  cmd->add_option("--wav", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");
+  cmd->add_option("--wav-out", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");
 }};
 
 }  // namespace

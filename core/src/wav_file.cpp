@@ -94,7 +94,7 @@ Audio read_wav(const std::filesystem::path& path, std::int64_t max_instants) {
   if (info.samplerate < 1) fail(path, "wav-rate", "sample rate must be positive");
   check_wav_data_complete(path);
   Audio audio;
-  audio.sample_rate_hz = info.samplerate;
+  audio.sample_rate = SampleRate{info.samplerate};
   audio.channels = info.channels;
   constexpr sf_count_t kChunkInstants = 4096;
   std::vector<std::int16_t> chunk(static_cast<std::size_t>(kChunkInstants) * info.channels);
@@ -118,13 +118,13 @@ Audio read_mono_wav(const std::filesystem::path& path, std::int64_t max_instants
 }
 
 std::string wav_bytes(const Audio& audio) {
-  if (audio.sample_rate_hz < 1 || audio.sample_rate_hz > 0x7fffffff)
-    throw std::invalid_argument("WAV: sample rate " + std::to_string(audio.sample_rate_hz) + " Hz out of range");
+  if (audio.sample_rate.hz < 1 || audio.sample_rate.hz > 0x7fffffff)
+    throw std::invalid_argument("WAV: sample rate " + std::to_string(audio.sample_rate.hz) + " Hz out of range");
   if (audio.channels < 1) throw std::invalid_argument("WAV: channel count must be positive");
   SF_VIRTUAL_IO io{memory_length, memory_seek, memory_read, memory_write, memory_tell};
   MemoryFile memory;
   SF_INFO info{};
-  info.samplerate = static_cast<int>(audio.sample_rate_hz);
+  info.samplerate = static_cast<int>(audio.sample_rate.hz);
   info.channels = audio.channels;
   info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_16;
   {

@@ -96,14 +96,7 @@ std::string write_marker_csv(const MarkerFrames<Millimetres>& markers) {
     }
     out += "," + label + ".x," + label + ".y," + label + ".z";
   }
-  out += "\n";
-  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
-    out += std::to_string(markers.first_frame + f) + "," +
-           shortest_decimal(static_cast<double>(f) / markers.frame_rate_hz);
-    if (markers.marker_count() > 0) out += "," + detail::marker_cells(markers, f, ',');
-    out += "\n";
-  }
-  return out;
+  return out + "\n" + detail::marker_row_lines(markers, ',');
 }
 
 }  // namespace fapcast

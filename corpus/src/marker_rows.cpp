@@ -52,13 +52,17 @@ MarkerFrames<Millimetres> MarkerRows::finish(std::vector<std::string> labels, do
   return out;
 }
 
-std::string marker_cells(const MarkerFrames<Millimetres>& markers, Eigen::Index frame, char separator) {
+std::string marker_row_lines(const MarkerFrames<Millimetres>& markers, char separator) {
   std::string out;
-  for (Eigen::Index m = 0; m < markers.marker_count(); ++m) {
-    for (int k = 0; k < 3; ++k) {
-      if (m + k > 0) out += separator;
-      if (markers.present(m, frame)) out += shortest_decimal(markers.positions(3 * m + k, frame));
-    }
+  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
+    out += std::to_string(markers.first_frame + f) + separator +
+           shortest_decimal(static_cast<double>(f) / markers.frame_rate_hz);
+    for (Eigen::Index m = 0; m < markers.marker_count(); ++m)
+      for (int k = 0; k < 3; ++k) {
+        out += separator;
+        if (markers.present(m, f)) out += shortest_decimal(markers.positions(3 * m + k, f));
+      }
+    out += "\n";
   }
   return out;
 }

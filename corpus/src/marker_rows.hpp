@@ -32,7 +32,8 @@ class MarkerRows {
   std::vector<double> values_;  // grows one frame at a time: never sized from a header count; NaN = missing
 };
 
-// The 3M cells of frame `frame` joined by `separator`: shortest decimals, empty where missing.
-std::string marker_cells(const MarkerFrames<Millimetres>& markers, Eigen::Index frame, char separator);
+// One line per frame: its number (first_frame + k), its time in seconds and its 3M cells,
+// joined by `separator`: shortest decimals, empty cells where a sample is missing.
+std::string marker_row_lines(const MarkerFrames<Millimetres>& markers, char separator);
 
 }  // namespace fapcast::detail

@@ -119,14 +119,7 @@ std::string write_trc(const MarkerFrames<Millimetres>& markers, std::string_view
     const std::string n = std::to_string(m);
     out += "\tX" + n + "\tY" + n + "\tZ" + n;
   }
-  out += "\n\n";
-  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
-    out += std::to_string(markers.first_frame + f) + "\t" +
-           shortest_decimal(static_cast<double>(f) / markers.frame_rate_hz);
-    if (markers.marker_count() > 0) out += "\t" + detail::marker_cells(markers, f, '\t');
-    out += "\n";
-  }
-  return out;
+  return out + "\n\n" + detail::marker_row_lines(markers, '\t');
 }
 
 }  // namespace fapcast

@@ -126,10 +126,11 @@ std::vector<std::size_t> validate_text(std::string_view text) {
   return offsets;
 }
 
-Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
+Closure find_closure(std::span<const std::int16_t> samples, SampleRate sample_rate,
                      std::int64_t region_begin, std::int64_t event_sample, std::int64_t region_end) {
-  const std::int64_t window = std::max(1, sample_rate_hz / 100);  // 10 ms
-  const std::int64_t hop = std::max(1, sample_rate_hz / 400);     // 2.5 ms
+  const std::int64_t rate = sample_rate.hz;
+  const std::int64_t window = std::max<std::int64_t>(1, rate / 100);  // 10 ms
+  const std::int64_t hop = std::max<std::int64_t>(1, rate / 400);     // 2.5 ms
   const auto size = static_cast<std::int64_t>(samples.size());
   region_begin = std::clamp<std::int64_t>(region_begin, 0, size);
   region_end = std::clamp<std::int64_t>(region_end, region_begin, size);
@@ -146,11 +147,11 @@ Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
   for (std::int64_t c = region_begin; c < event_sample; c += hop) reference = std::max(reference, rms_at(c));
   if (reference < kSilenceRms) {
     // After silence the lips may close at any time; assume a typical 50 ms closure.
-    return {std::max(region_begin, event_sample - sample_rate_hz / 20), event_sample};
+    return {std::max(region_begin, event_sample - rate / 20), event_sample};
   }
   const double threshold = 0.2 * reference;
-  const std::int64_t first = std::max(region_begin, event_sample - sample_rate_hz / 100);
-  const std::int64_t last = std::min(region_end, event_sample + sample_rate_hz / 25);
+  const std::int64_t first = std::max(region_begin, event_sample - rate / 100);
+  const std::int64_t last = std::min(region_end, event_sample + rate / 25);
   std::int64_t anchor = -1;
   for (std::int64_t c = first; c < last; c += hop) {
     if (rms_at(c) < threshold) { anchor = c; break; }
@@ -176,7 +177,7 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
   Collector collector;
   {
     std::lock_guard lock(espeak_mutex());
-    speech.audio.sample_rate_hz = ensure_espeak();
+    speech.audio.sample_rate = SampleRate{ensure_espeak()};
     if (std::all_of(text.begin(), text.end(), [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; })) {
       return speech;
     }
@@ -246,7 +247,7 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
     SpokenPhone& p = kept[i];
     if (!has_closure(p.timed.phone)) continue;
     TimedPhone& previous = kept[i - 1].timed;
-    const Closure c = find_closure(speech.audio.samples, speech.audio.sample_rate_hz,
+    const Closure c = find_closure(speech.audio.samples, speech.audio.sample_rate,
                                    previous.start_sample + 1, p.event.event_sample, p.timed.end_sample);
     const std::int64_t onset = std::clamp(c.onset_sample, previous.start_sample + 1, p.timed.end_sample - 1);
     p.timed.start_sample = onset;

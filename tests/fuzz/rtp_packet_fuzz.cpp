@@ -18,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.reorder_capacity = 8;
   options.make_validator = make_fba_unit_validator;
   RtpStreamReceiver receiver(options);
-  ReceivedTrack track(48000, 4.0);
+  ReceivedTrack track(SampleRate{48000}, 4.0);
   std::vector<ReceivedUnit> units;
   RtpStreamReceiver::Clock::time_point now{};
   std::size_t at = 0;

@@ -276,7 +276,7 @@ TEST(Loopback, AudioAndSenderReportsShareOneClock) {
   if (sockets.empty()) GTEST_SKIP() << "could not bind four consecutive loopback ports";
   const auto base = sockets[0].local_endpoint();
   Audio audio;
-  audio.sample_rate_hz = 48000;
+  audio.sample_rate = SampleRate{48000};
   audio.channels = 2;
   for (int i = 0; i < 48000 * 2 / 5; ++i) audio.samples.push_back(static_cast<std::int16_t>(i * 37));  // 0.2 s
   const auto units = test::synthetic_units(12, 6, 800);  // 60 fps over 0.2 s

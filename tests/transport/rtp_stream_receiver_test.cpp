@@ -25,7 +25,7 @@ Bytes packet(std::uint16_t seq, bool intra, std::uint32_t ssrc = kSsrc, std::uin
   h.timestamp = 1000u + 800u * seq;
   h.ssrc = ssrc;
   Bytes payload;
-  pack_fba_payload(intra, Bytes{static_cast<std::uint8_t>(seq), static_cast<std::uint8_t>(seq >> 8)}, payload);
+  pack_fba_payload(intra, false, Bytes{static_cast<std::uint8_t>(seq), static_cast<std::uint8_t>(seq >> 8)}, payload);
   Bytes out;
   EXPECT_FALSE(pack_rtp(h, payload, out));
   return out;

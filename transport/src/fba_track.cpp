@@ -12,15 +12,15 @@ __extension__ typedef __int128 Int128;
 // The frame whose start is nearest `samples` after the first frame: the sender rounded each
 // frame's start to a whole sample, so a difference of two starts may be one sample off the
 // exact multiple; rounding to the nearest frame absorbs that.
-std::int64_t nearest_frame(std::int64_t samples, FrameRate rate, std::int64_t clock_rate) {
+std::int64_t nearest_frame(std::int64_t samples, FrameRate rate, SampleRate clock_rate) {
   if (samples < 0) return -1;
-  const Int128 num = 2 * static_cast<Int128>(samples) * rate.numerator + static_cast<Int128>(clock_rate) * rate.denominator;
-  const Int128 den = 2 * static_cast<Int128>(clock_rate) * rate.denominator;
+  const Int128 num = 2 * static_cast<Int128>(samples) * rate.numerator + static_cast<Int128>(clock_rate.hz) * rate.denominator;
+  const Int128 den = 2 * static_cast<Int128>(clock_rate.hz) * rate.denominator;
   return static_cast<std::int64_t>(num / den);
 }
 }  // namespace
 
-std::error_code encode_track_units(const FapSequence& seq, std::int64_t clock_rate,
+std::error_code encode_track_units(const FapSequence& seq, SampleRate clock_rate,
                                    const FbaEncoderOptions& options,
                                    std::vector<MediaUnit>& out, std::int64_t* frame_index) {
   FbaFrameEncoder encoder(options, seq.rate);
@@ -31,14 +31,16 @@ std::error_code encode_track_units(const FapSequence& seq, std::int64_t clock_ra
       if (frame_index) *frame_index = static_cast<std::int64_t>(k);
       return ec;
     }
-    out.push_back({frame_to_sample(static_cast<std::int64_t>(k), seq.rate, clock_rate),
-                   std::move(au.bytes), au.intra});
+    out.push_back({frame_to_sample(static_cast<std::int64_t>(k), seq.rate, clock_rate), std::move(au.bytes), au.intra,
+                   options.profile == FbaProfile::kFapcast});
     au = {};
   }
   return {};
 }
 
 bool FbaUnitValidator::decodes(const ReceivedUnit& unit) {
+  const FbaProfile profile = unit.fapcast ? FbaProfile::kFapcast : FbaProfile::kStandard;
+  if (profile != decoder_.profile()) decoder_.reset(profile);
   if (unit.bytes.empty() || (decoder_.needs_intra() && !unit.intra)) return false;
   if (decoder_.decode(unit.bytes, frame_)) {
     decoder_.reset();
@@ -51,8 +53,8 @@ std::unique_ptr<UnitValidator> make_fba_unit_validator() {
   return std::make_unique<FbaUnitValidator>();
 }
 
-ReceivedTrack::ReceivedTrack(std::int64_t clock_rate, double max_seconds)
-    : clock_rate_(std::max<std::int64_t>(1, clock_rate)), max_seconds_(std::max(0.0, max_seconds)) {}
+ReceivedTrack::ReceivedTrack(SampleRate clock_rate, double max_seconds)
+    : clock_rate_{std::max<std::int64_t>(1, clock_rate.hz)}, max_seconds_(std::max(0.0, max_seconds)) {}
 
 std::int64_t ReceivedTrack::frames_in(std::int64_t samples) const {
   return nearest_frame(samples, seq_.rate, clock_rate_);
@@ -80,13 +82,17 @@ void ReceivedTrack::append(const FapFrame& frame, std::int64_t index) {
 }
 
 std::error_code ReceivedTrack::add(const ReceivedUnit& unit) {
-  if (unit.after_loss) decoder_.reset();  // prediction across a gap would be wrong
+  const FbaProfile profile = unit.fapcast ? FbaProfile::kFapcast : FbaProfile::kStandard;
+  // Prediction across a gap would be wrong; a unit of the other profile starts afresh too.
+  if (unit.after_loss || profile != decoder_.profile()) decoder_.reset(profile);
   FapFrame frame;
   if (const auto ec = decoder_.decode(unit.bytes, frame)) {
     ++stats_.decode_errors;
     return ec;
   }
   ++stats_.decoded;
+  ++(unit.fapcast ? stats_.fapcast_units : stats_.standard_units);
+  if (unit.intra) stats_.fap_quant = decoder_.fap_quant();
   if (!anchored_) {
     // The first decoded unit is an intra one (the decoder refuses P units before it), and its
     // frame_number is the sender's index of this frame: the frames before it were lost.

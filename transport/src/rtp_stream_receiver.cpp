@@ -50,7 +50,7 @@ std::ostream& operator<<(std::ostream& out, const ReceiverStats& s) {
 RtpStreamReceiver::RtpStreamReceiver(ReceiverOptions options) : options_(std::move(options)) {
   if (options_.reorder_capacity == 0) options_.reorder_capacity = 1;
   if (options_.reorder_capacity > kHistory / 2) options_.reorder_capacity = kHistory / 2;
-  if (options_.clock_rate < 1) options_.clock_rate = 1;
+  if (!options_.clock_rate.valid()) options_.clock_rate = SampleRate{1};
   options_.min_sequential = std::clamp(options_.min_sequential, 1,
                                        static_cast<int>(options_.reorder_capacity));
 }
@@ -66,7 +66,7 @@ bool RtpStreamReceiver::source_left(Clock::time_point now) const {
 }
 
 double RtpStreamReceiver::jitter_seconds() const {
-  return stats_.jitter / static_cast<double>(options_.clock_rate);
+  return stats_.jitter / static_cast<double>(options_.clock_rate.hz);
 }
 
 std::error_code RtpStreamReceiver::on_datagram(std::span<const std::uint8_t> datagram,
@@ -97,6 +97,7 @@ std::error_code RtpStreamReceiver::on_datagram(std::span<const std::uint8_t> dat
       return ec;
     }
     unit.intra = payload.intra;
+    unit.fapcast = payload.fapcast;
     unit.bytes.assign(payload.access_unit.begin(), payload.access_unit.end());
   } else {
     unit.intra = true;  // every unit of a stateless format is a resumption point

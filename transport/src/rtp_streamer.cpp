@@ -1,5 +1,7 @@
 #include "fapcast/transport/rtp_streamer.hpp"
 
+#include "wait_until.hpp"
+
 #include "fapcast/transport/fba_payload.hpp"
 #include "fapcast/transport/rtcp_compound.hpp"
 #include "fapcast/transport/l16.hpp"
@@ -48,7 +50,7 @@ std::error_code pack_animation_packet(const MediaUnit& unit, std::size_t index,
   h.ssrc = ids.ssrc;
   std::vector<std::uint8_t> payload;
   payload.reserve(unit.bytes.size() + 1);
-  pack_fba_payload(unit.intra, unit.bytes, payload);
+  pack_fba_payload(unit.intra, unit.fapcast, unit.bytes, payload);
   return pack_rtp(h, payload, out);
 }
 
@@ -75,13 +77,13 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
   using Clock = std::chrono::steady_clock;
   ec.clear();
   StreamReport report;
-  const std::int64_t clock = std::max<std::int64_t>(1, options_.clock_rate);
+  const std::int64_t clock = std::max<std::int64_t>(1, options_.clock_rate.hz);
   if (audio && !audio_rtp_) {
     audio_rtp_.emplace(io_, offset_port(destination_, 2), options_.socket);
     audio_rtcp_.emplace(io_, offset_port(destination_, 3), options_.socket);
   }
   const std::size_t audio_step =
-      audio ? l16_frames_per_packet(audio->sample_rate_hz, audio->channels) : 1;
+      audio ? l16_frames_per_packet(audio->sample_rate, audio->channels) : 1;
   const std::int64_t audio_instants = audio ? audio->instants() : 0;
   const std::int64_t rtcp_step =
       options_.rtcp_interval.count() > 0 ? clock * options_.rtcp_interval.count() / 1000 : 0;
@@ -90,7 +92,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
   // and reported as wallclock wall_start + s/clock, the same instant for both streams.
   const Clock::time_point start = Clock::now();
   const auto wall_start = std::chrono::system_clock::now();
-  const auto media_time = [clock](std::int64_t s) { return samples_to_duration(s, clock); };
+  const auto media_time = [clock](std::int64_t s) { return samples_to_duration(s, SampleRate{clock}); };
   asio::steady_timer timer(io_);
   std::vector<std::uint8_t> packet;
   std::size_t next_unit = 0;
@@ -130,17 +132,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
     if (!media_left) break;
     const std::int64_t report_at = rtcp_step > 0 ? next_report : kNever;
     const std::int64_t at = std::min({unit_at, audio_at, report_at});
-    if (options_.pace) {
-      const Clock::time_point deadline = start + media_time(at);
-      const Clock::time_point now = Clock::now();
-      if (now < deadline) {
-        timer.expires_at(deadline);
-        boost::system::error_code wait_error;
-        timer.wait(wait_error);
-      } else {
-        report.late_total += now - deadline;
-      }
-    }
+    if (options_.pace) report.late_total += detail::wait_until(timer, start + media_time(at));
     if (at == report_at) {
       send_reports(at, false);
       next_report += rtcp_step;

@@ -3,16 +3,10 @@
 // typically "phones" and "words" interval tiers.
 #include "fapcast/corpus/label_tier.hpp"
 
-#include <cstdint>
 #include <string_view>
 #include <vector>
 
 namespace fapcast {
-
-// The most intervals and points an alignment file may hold, over all its tiers (rule
-// alignment-too-many-intervals): a day of speech at 10 phones a second plus its words is under
-// 2 million; 1.3 x 10^7 intervals took 1.97 GB to read.
-inline constexpr std::int64_t kMaxAlignmentIntervals = 2'000'000;
 
 struct Alignment {
   double start_s = 0;  // the span every tier lies in, seconds

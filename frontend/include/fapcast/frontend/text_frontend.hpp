@@ -90,7 +90,7 @@ struct Closure {
 // windows every 2.5 ms) that starts at most 10 ms before and at most 40 ms after the event.
 // With no quiet stretch the closure is the event itself. After silence (nothing to drop from)
 // the onset is 50 ms before the event, bounded by region_begin.
-Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
+Closure find_closure(std::span<const std::int16_t> samples, SampleRate sample_rate,
                      std::int64_t region_begin, std::int64_t event_sample, std::int64_t region_end);
 
 }  // namespace fapcast

@@ -2,6 +2,7 @@
 // The bridge between FAP tracks and RTP media units: a track becomes one FBA access unit per
 // frame placed on the WAV timeline (sender), and received units become a track again
 // (receiver), frames placed by their RTP timestamps so that loss leaves holes, not a shift.
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/fba/fba_stream.hpp"
 #include "fapcast/transport/media_unit.hpp"
@@ -17,7 +18,7 @@ namespace fapcast {
 
 // Encodes every frame of `seq` as one access unit at sample frame_to_sample(k, seq.rate,
 // clock_rate). Returns the encoder's error for the first frame it refuses (and `frame_index`).
-std::error_code encode_track_units(const FapSequence& seq, std::int64_t clock_rate,
+std::error_code encode_track_units(const FapSequence& seq, SampleRate clock_rate,
                                    const FbaEncoderOptions& options,
                                    std::vector<MediaUnit>& out, std::int64_t* frame_index = nullptr);
 
@@ -50,6 +51,9 @@ struct ReceivedTrackStats {
   std::uint64_t frame_number_mismatches = 0;  // intra units whose frame_number disagrees with
                                               // their timestamp (the timestamp wins)
   std::int64_t first_sender_frame = 0;  // the sender's index of output frame 0
+  std::uint64_t standard_units = 0;   // decoded units of the standard syntax ...
+  std::uint64_t fapcast_units = 0;    // ... and of the fapcast profile (the payload header's F bit)
+  int fap_quant = -1;                 // of the last intra unit decoded (-1: none)
 };
 
 // Rebuilds a track from units in sequence order, on the sender's timeline: the first decoded
@@ -64,7 +68,7 @@ class ReceivedTrack {
   // a sender restart, a hostile timestamp).
   static constexpr std::int64_t kMaxFilledGapSeconds = 10;
 
-  ReceivedTrack(std::int64_t clock_rate, double max_seconds);
+  ReceivedTrack(SampleRate clock_rate, double max_seconds);
 
   // Decodes one unit and places its frame. Errors come from the FBA decoder.
   std::error_code add(const ReceivedUnit& unit);
@@ -88,7 +92,7 @@ class ReceivedTrack {
   std::int64_t max_gap() const;
   void append(const FapFrame& frame, std::int64_t index);  // holds the gap before `index`
 
-  std::int64_t clock_rate_;
+  SampleRate clock_rate_;
   double max_seconds_;
   std::int64_t max_frames_ = 0;
   FbaFrameDecoder decoder_;

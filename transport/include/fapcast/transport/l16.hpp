@@ -1,6 +1,7 @@
 #pragma once
 // L16 audio payload (RFC 3551 section 4.5.11): 16-bit signed samples, network byte order,
 // channels interleaved per sampling instant.
+#include "fapcast/core/sample_rate.hpp"
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -8,8 +9,8 @@
 namespace fapcast {
 
 // Sampling instants per L16 packet: 10 ms of audio, fewer when 10 ms of all channels would not
-// fit in one datagram (always >= 1). `channels` 1..255, `sample_rate` >= 1.
-std::size_t l16_frames_per_packet(std::int64_t sample_rate, int channels);
+// fit in one datagram (always >= 1). `channels` 1..255, `sample_rate` valid.
+std::size_t l16_frames_per_packet(SampleRate sample_rate, int channels);
 
 // Appends interleaved host-order samples in network byte order.
 void pack_l16(std::span<const std::int16_t> interleaved, std::vector<std::uint8_t>& out);

@@ -9,6 +9,7 @@
 // RFC 3550 statistics: loss (A.3) and interarrival jitter (A.8). Memory is bounded whatever
 // arrives: at most `reorder_capacity` packets are held, per source on probation too, and at most
 // kMaxCandidates sources are on probation at once.
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/transport/rtcp_sender_report.hpp"
 #include "fapcast/transport/rtp_packet.hpp"
 
@@ -32,6 +33,7 @@ struct ReceivedUnit {
   std::uint32_t timestamp = 0;
   bool marker = false;
   bool intra = false;
+  bool fapcast = false;                 // FBA: the payload header's F bit (the fapcast profile)
   bool after_loss = false;              // the first unit delivered after a gap (or the first)
   std::vector<std::uint8_t> bytes;      // the access unit (FBA) or payload (other formats)
 };
@@ -50,7 +52,7 @@ class UnitValidator {
 struct ReceiverOptions {
   std::uint8_t payload_type = kDefaultFbaPayloadType;  // others are refused
   std::optional<std::uint32_t> ssrc;  // accept this source only; unset: the first one validated
-  std::int64_t clock_rate = 48'000;   // RTP timestamp units per second (jitter is in these)
+  SampleRate clock_rate{48'000};      // RTP timestamp units per second (jitter is in these)
   bool fba_payload = true;            // packets carry the one-byte FBA payload header
   std::size_t reorder_capacity = 64;  // packets held waiting for an earlier one (>= 1)
   std::chrono::milliseconds reorder_delay{40};  // longest a packet waits for an earlier one

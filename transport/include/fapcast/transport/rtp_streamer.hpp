@@ -3,6 +3,7 @@
 // two RTP streams with RTCP sender reports, paced in real time against steady_clock with
 // absolute deadlines (so no error accumulates), or as fast as possible.
 // Ports: animation RTP at P, its RTCP at P+1, audio RTP at P+2, its RTCP at P+3 (RFC 3550 11).
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/transport/asio.hpp"
 #include "fapcast/transport/media_unit.hpp"
 #include "fapcast/transport/rtcp_sender_report.hpp"
@@ -35,7 +36,7 @@ std::string default_cname();
 
 struct StreamOptions {
   bool pace = true;                          // real time; false: as fast as the socket takes it
-  std::int64_t clock_rate = 48'000;          // RTP clock of both streams (the audio rate)
+  SampleRate clock_rate{48'000};            // RTP clock of both streams (the audio rate)
   std::uint8_t animation_payload_type = kDefaultFbaPayloadType;
   std::uint8_t audio_payload_type = kDefaultL16PayloadType;
   RtpStreamIds animation_ids = RtpStreamIds::random();

@@ -53,7 +53,7 @@ struct SentStream {
     FbaEncoderOptions o;
     o.fap_quant = 0;
     o.intra_period = iperiod;
-    EXPECT_FALSE(encode_track_units(track, 48000, o, units));
+    EXPECT_FALSE(encode_track_units(track, SampleRate{48000}, o, units));
     for (std::size_t i = 0; i < units.size(); ++i) {
       Bytes p;
       EXPECT_FALSE(pack_animation_packet(units[i], i, ids, 96, p));
@@ -75,7 +75,7 @@ struct Feed {
   std::vector<ReceivedUnit> out;
   Clock::time_point now = Clock::time_point{} + std::chrono::hours(1);
   explicit Feed(ReceiverOptions o = fba_options(), double max_seconds = 3600)
-      : rx(std::move(o)), track(48000, max_seconds) {}
+      : rx(std::move(o)), track(SampleRate{48000}, max_seconds) {}
   std::error_code offer(const Bytes& p) {
     now += 1ms;
     const auto ec = rx.on_datagram(p, now, out);
@@ -139,8 +139,9 @@ TEST(HostileReceiver, AValidatedSourceIsNeverDisplaced) {
   Feed f;
   for (std::size_t i = 0; i < real.packets.size(); ++i) {
     EXPECT_FALSE(f.offer(real.packets[i]));
-    if (i >= 10 && i < 50)
+    if (i >= 10 && i < 50) {
       EXPECT_EQ(f.offer(intruder.packets[i - 10]), make_error_code(RtpErrc::kForeignSsrc));
+    }
   }
   EXPECT_EQ(f.finish().frames, real.track.frames);
   EXPECT_EQ(f.rx.stats().foreign_ssrc, 40u);
@@ -180,7 +181,9 @@ TEST(HostileReceiver, ProbationPutsSwappedFirstPacketsBackInOrder) {
   Feed f;
   EXPECT_EQ(f.offer(s.packets[1]), make_error_code(RtpErrc::kUndecodable));  // P before intra
   for (std::size_t i = 0; i < s.packets.size(); ++i)
-    if (i != 1) EXPECT_FALSE(f.offer(s.packets[i]));
+    if (i != 1) {
+      EXPECT_FALSE(f.offer(s.packets[i]));
+    }
   EXPECT_EQ(f.finish().frames, s.track.frames);
   EXPECT_EQ(f.rx.stats().lost, 0u);
 }
@@ -204,7 +207,9 @@ TEST(HostileReceiver, OneTimestampJumpDiscardsOneFrameNotTheRest) {
   const auto& got = f.finish(108);
   ASSERT_EQ(got.frames.size(), 108u) << f.rx.stats();
   for (std::size_t k = 0; k < 108; ++k)
-    if (k != 51) EXPECT_EQ(got.frames[k], s.track.frames[k]) << k;
+    if (k != 51) {
+      EXPECT_EQ(got.frames[k], s.track.frames[k]) << k;
+    }
   EXPECT_EQ(got.frames[51], got.frames[50]);  // held
   EXPECT_EQ(f.track.stats().timestamp_jumps, 1u);
   EXPECT_EQ(f.track.stats().held_frames, 1u);
@@ -354,14 +359,14 @@ TEST_P(ThirtyPercentLoss, FramesOutEqualFramesSentAndStayInSync) {
   eo.fap_quant = 0;
   eo.intra_period = 25;
   std::vector<MediaUnit> units;
-  ASSERT_FALSE(encode_track_units(sent, 48000, eo, units));
+  ASSERT_FALSE(encode_track_units(sent, SampleRate{48000}, eo, units));
 
   ReceiverOptions ro = fba_options();
   ro.reorder_delay = 60ms;
   asio::io_context rx_io;
   UdpReceiver receiver(rx_io, test::loopback());
   RtpStreamReceiver stream(ro);
-  ReceivedTrack got(48000, 3600);
+  ReceivedTrack got(SampleRate{48000}, 3600);
   LossyPair shim(receiver.local_endpoint(), 0.30, 0.10, 0.20, seed, c.drop_first);
   ASSERT_TRUE(shim.rtcp) << "no free port pair for the shim";
   ReceiveReport report;

@@ -1,6 +1,7 @@
 // RTP over real UDP sockets on loopback: exact delivery, recovery from loss, reordering and
 // duplication, multicast, audio with sender reports, hostile datagrams, and a tshark capture.
 #include "fapcast/transport/l16.hpp"
+#include "fapcast/transport/rtcp_compound.hpp"
 #include "fapcast/transport/rtcp_sender_report.hpp"
 #include "fapcast/transport/rtp_streamer.hpp"
 #include "fapcast/transport/udp_receiver.hpp"
@@ -324,11 +325,21 @@ TEST(Loopback, AudioAndSenderReportsShareOneClock) {
     EXPECT_EQ(a.ssrc, animation_ssrc);
     EXPECT_EQ(b.ssrc, audio_ssrc);
     EXPECT_EQ(a.ntp, b.ntp);
-    // Compound packets: SR then SDES with the same CNAME on both streams.
+    // Compound packets: SR then SDES with the same CNAME on both streams (the SDES items after
+    // its SSRC, up to its length); the last one ends with each stream's own BYE.
     ASSERT_GT(got[1][k].size(), 36u);
     EXPECT_EQ(got[1][k][29], 202);
-    EXPECT_EQ(std::vector<std::uint8_t>(got[1][k].begin() + 36, got[1][k].end()),
-              std::vector<std::uint8_t>(got[3][k].begin() + 36, got[3][k].end()));
+    const auto sdes_end = [](const std::vector<std::uint8_t>& d) {
+      return std::min<std::size_t>(d.size(), 28 + 4 * (((std::size_t{d[30]} << 8) | d[31]) + 1));
+    };
+    EXPECT_EQ(std::vector<std::uint8_t>(got[1][k].begin() + 36, got[1][k].begin() + sdes_end(got[1][k])),
+              std::vector<std::uint8_t>(got[3][k].begin() + 36, got[3][k].begin() + sdes_end(got[3][k])));
+    RtcpCompound ca, cb;
+    ASSERT_FALSE(parse_rtcp_compound(got[1][k], ca));
+    ASSERT_FALSE(parse_rtcp_compound(got[3][k], cb));
+    const bool last = k + 1 == got[1].size();
+    EXPECT_EQ(ca.bye_sources, last ? std::vector<std::uint32_t>{animation_ssrc} : std::vector<std::uint32_t>{});
+    EXPECT_EQ(cb.bye_sources, last ? std::vector<std::uint32_t>{audio_ssrc} : std::vector<std::uint32_t>{});
     const std::uint32_t pos_a = a.rtp_timestamp - 4'294'960'000u;
     const std::uint32_t pos_b = b.rtp_timestamp - 7u;
     EXPECT_EQ(pos_a, pos_b);  // the same instant on both media clocks

@@ -161,8 +161,10 @@ ReceiveReport UdpReceiver::run(RtpStreamReceiver& stream, const ReceiveLimits& l
             (void)stream.on_rtcp({rtcp_buffer.data(), n}, Clock::now());
           });
     }
+    // One handler at most, then re-arm: with both sockets waiting, run_for would sit out the
+    // whole period after each datagram and the kernel's buffer would overflow under a burst.
     io_.restart();
-    io_.run_for(kPollPeriod);
+    io_.run_one_for(kPollPeriod);
     const Clock::time_point now = Clock::now();
     stream.poll(now, units);
     drain();

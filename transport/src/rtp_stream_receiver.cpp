@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <iterator>
+#include <tuple>
 
 namespace fapcast {
 namespace {
@@ -33,6 +34,7 @@ struct RtpStreamReceiver::Candidate {
   std::map<std::uint64_t, Held> packets;  // at most reorder_capacity
   std::unique_ptr<UnitValidator> validator;
   Clock::time_point last_arrival{};
+  bool decoded = false;  // one of its packets decoded (the start of a run): evicted last
 };
 
 std::ostream& operator<<(std::ostream& out, const ReceiverStats& s) {
@@ -152,9 +154,12 @@ std::error_code RtpStreamReceiver::on_probation(const RtpHeader& h, ReceivedUnit
                          [&](const Candidate& c) { return c.ssrc == h.ssrc; });
   if (it == candidates_.end()) {
     if (candidates_.size() >= kMaxCandidates) {
+      // Room for the newcomer: the least recent source none of whose packets decoded (junk
+      // under random SSRCs), else the least recent one.
       const auto oldest = std::min_element(
-          candidates_.begin(), candidates_.end(),
-          [](const Candidate& a, const Candidate& b) { return a.last_arrival < b.last_arrival; });
+          candidates_.begin(), candidates_.end(), [](const Candidate& a, const Candidate& b) {
+            return std::tie(a.decoded, a.last_arrival) < std::tie(b.decoded, b.last_arrival);
+          });
       stats_.probation_discarded += oldest->packets.size();
       candidates_.erase(oldest);
     }
@@ -203,6 +208,7 @@ std::error_code RtpStreamReceiver::on_probation(const RtpHeader& h, ReceivedUnit
     if (!c.validator || c.validator->decodes(p->second.unit)) {
       if (run == 0) run_start = p->first;
       if (p == at) packet_decodes = true;
+      c.decoded = true;
       if (++run >= options_.min_sequential) {
         validate(c, run_start, arrival, out);
         return {};

@@ -88,7 +88,7 @@ struct ReceiverStats {
 class RtpStreamReceiver {
  public:
   using Clock = std::chrono::steady_clock;
-  static constexpr std::size_t kMaxCandidates = 4;  // sources on probation at once
+  static constexpr std::size_t kMaxCandidates = 16;  // sources on probation at once
 
   explicit RtpStreamReceiver(ReceiverOptions options = {});
   ~RtpStreamReceiver();

@@ -81,7 +81,8 @@ void run_recv(const RecvArgs& a) {
   const ReceiveReport r =
       receiver.run(stream, limits, [&](ReceivedUnit&& u) { (void)track.add(u); });
   const auto& sr = stream.last_sender_report();
-  track.finish(sr ? std::optional<std::uint32_t>(sr->packet_count) : std::nullopt);
+  track.finish(sr ? std::optional<std::uint32_t>(sr->packet_count) : std::nullopt,
+               stream.anchor_sender_report());
 
   const auto& s = stream.stats();
   const auto& t = track.stats();

@@ -48,9 +48,11 @@ struct SentStream {
   std::vector<MediaUnit> units;
   std::vector<Bytes> packets;
   RtpStreamIds ids;
-  SentStream(int n, FrameRate rate, int iperiod, RtpStreamIds ids_ = {0x5eed0001, 65500, 4'294'960'000u})
+  SentStream(int n, FrameRate rate, int iperiod, RtpStreamIds ids_ = {0x5eed0001, 65500, 4'294'960'000u},
+             FbaProfile profile = FbaProfile::kStandard)
       : track(moving_track(n, rate)), ids(ids_) {
     FbaEncoderOptions o;
+    o.profile = profile;
     o.fap_quant = 0;
     o.intra_period = iperiod;
     EXPECT_FALSE(encode_track_units(track, SampleRate{48000}, o, units));
@@ -89,7 +91,7 @@ struct Feed {
   const FapSequence& finish(std::optional<std::uint32_t> sender_packets = std::nullopt) {
     rx.flush(out);
     drain();
-    track.finish(sender_packets);
+    track.finish(sender_packets, rx.anchor_sender_report());
     return track.sequence();
   }
 };
@@ -239,11 +241,30 @@ TEST(HostileReceiver, AConfirmedJumpContinuesTheTrack) {
 }
 
 // Attack 5: a lost first intra frame shifted the whole track one intra period early against the
-// audio. The first decoded intra frame's frame_number anchors it: frame k stays frame k.
+// audio. The fapcast profile's first decoded intra frame carries its frame_number: frame k stays
+// frame k.
 TEST(HostileReceiver, ALostStartKeepsEveryFrameInItsPlace) {
-  const SentStream s(100, {25, 1}, 25);
+  const SentStream s(100, {25, 1}, 25, {0x5eed0001, 65500, 4'294'960'000u}, FbaProfile::kFapcast);
   Feed f;
   for (std::size_t i = 3; i < s.packets.size(); ++i) (void)f.offer(s.packets[i]);  // 0..2 lost
+  const auto& got = f.finish(100);
+  ASSERT_EQ(got.frames.size(), 100u);
+  for (std::size_t k = 25; k < 100; ++k) EXPECT_EQ(got.frames[k], s.track.frames[k]) << k;
+  for (std::size_t k = 0; k < 25; ++k) EXPECT_EQ(got.frames[k], s.track.frames[25]) << k;
+  EXPECT_EQ(f.track.stats().leading_frames, 25u);
+  EXPECT_EQ(f.track.stats().first_sender_frame, 0);
+}
+
+// A standard unit has no frame_number: a sender report made during the stream (packet count 38
+// at 1.5 s, the frames that started before it) places the first decoded frame instead.
+TEST(HostileReceiver, ALostStandardStartIsPlacedByASenderReport) {
+  const SentStream s(100, {25, 1}, 25);
+  Feed f;
+  for (std::size_t i = 3; i < 40; ++i) (void)f.offer(s.packets[i]);  // 0..2 lost
+  Bytes sr;
+  pack_sender_report({s.ids.ssrc, {}, s.ids.first_timestamp + 72000, 38, 0}, sr);
+  EXPECT_FALSE(f.rx.on_rtcp(sr, f.now));
+  for (std::size_t i = 40; i < s.packets.size(); ++i) (void)f.offer(s.packets[i]);
   const auto& got = f.finish(100);
   ASSERT_EQ(got.frames.size(), 100u);
   for (std::size_t k = 25; k < 100; ++k) EXPECT_EQ(got.frames[k], s.track.frames[k]) << k;
@@ -396,7 +417,8 @@ TEST_P(ThirtyPercentLoss, FramesOutEqualFramesSentAndStayInSync) {
   shim.rtp->join();
   shim.rtcp->join();
   const auto& last = stream.last_sender_report();
-  got.finish(last ? std::optional<std::uint32_t>(last->packet_count) : std::nullopt);
+  got.finish(last ? std::optional<std::uint32_t>(last->packet_count) : std::nullopt,
+             stream.anchor_sender_report());
   const FapSequence& out = got.sequence();
   const ReceiverStats& s = stream.stats();
   std::cerr << "[loss30] " << c.name << ": sent " << units.size() << " frames, dropped "
@@ -420,7 +442,7 @@ TEST_P(ThirtyPercentLoss, FramesOutEqualFramesSentAndStayInSync) {
     std::int64_t j = static_cast<std::int64_t>(k) - 1;
     while (j >= 0 && out.frames[k] != sent.frames[static_cast<std::size_t>(j)]) --j;
     if (j < 0) {  // a lost start holds the first decoded frame
-      ASSERT_LT(k, 25u * 2) << "frame " << k << " matches no earlier sent frame";
+      ASSERT_LT(k, got.stats().leading_frames) << "frame " << k << " matches no earlier sent frame";
       continue;
     }
     worst_offset = std::max<std::int64_t>(worst_offset, static_cast<std::int64_t>(k) - j);

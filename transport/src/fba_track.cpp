@@ -103,6 +103,8 @@ std::error_code ReceivedTrack::add(const ReceivedUnit& unit) {
     const std::int64_t lead = number <= max_gap() ? number : 0;  // a late joiner starts at its join
     stats_.first_sender_frame = number - lead;
     anchored_ = true;
+    first_timestamp_ = unit.timestamp;
+    numbered_ = decoder_.last_frame_number() >= 0;
     last_timestamp_ = unit.timestamp;
     position_ = 0;
     anchor_index_ = lead;
@@ -156,10 +158,52 @@ std::error_code ReceivedTrack::add(const ReceivedUnit& unit) {
   return {};
 }
 
-void ReceivedTrack::finish(std::optional<std::uint32_t> sender_packets) {
+std::optional<std::int64_t> ReceivedTrack::sender_frame_of_first(const SenderReport& during) const {
+  // The report was sent at instant s_r with packet_count = c: the sender's frames 0..c-1 started
+  // before s_r, frame c at or after it (one frame per packet, no skipped frames). The first
+  // decoded unit lies d = its timestamp - the report's samples from it: its frame k is the one
+  // whose start minus d falls in (start of c - 1, start of c].
+  const std::int64_t c = during.packet_count;
+  const std::int64_t d = static_cast<std::int32_t>(first_timestamp_ - during.rtp_timestamp);
+  const auto fits = [&](std::int64_t k) {
+    if (k < 0) return false;
+    const std::int64_t at = frame_to_sample(k, seq_.rate, clock_rate_) - d;
+    return at <= frame_to_sample(c, seq_.rate, clock_rate_) &&
+           (c == 0 || at > frame_to_sample(c - 1, seq_.rate, clock_rate_));
+  };
+  const std::int64_t estimate = c + static_cast<std::int64_t>(std::floor(
+      static_cast<double>(d) * seq_.rate.fps() / static_cast<double>(clock_rate_.hz)));
+  for (const std::int64_t k : {estimate, estimate + 1, estimate - 1, estimate + 2})
+    if (fits(k)) return k;
+  return std::nullopt;
+}
+
+void ReceivedTrack::finish(std::optional<std::uint32_t> sender_packets,
+                           const std::optional<SenderReport>& during) {
   if (jump_) {
     ++stats_.timestamp_jumps;
     jump_.reset();
+  }
+  // A standard unit carries no frame_number: a sender report made during the stream says which
+  // sender frame the first decoded one is, so that a lost start is held, not cut (audio sync).
+  if (anchored_ && during && !numbered_ && stats_.first_sender_frame == 0 && stats_.discontinuities == 0) {
+    const std::optional<std::int64_t> k = sender_frame_of_first(*during);
+    const std::int64_t first_index = anchor_index_;  // no discontinuity: still the first unit's
+    if (!k) {
+      ++stats_.report_mismatches;
+    } else if (*k > first_index && *k - first_index <= max_gap()) {
+      const std::int64_t lead = *k - first_index;
+      seq_.frames.insert(seq_.frames.begin(), static_cast<std::size_t>(lead), seq_.frames.front());
+      stats_.leading_frames += static_cast<std::uint64_t>(lead);
+      anchor_index_ += lead;
+      last_index_ += lead;
+      while (static_cast<std::int64_t>(seq_.frames.size()) > max_frames_) {
+        seq_.frames.pop_back();
+        ++stats_.over_limit;
+      }
+    } else if (*k < first_index) {
+      ++stats_.report_mismatches;
+    }
   }
   if (!anchored_ || !sender_packets || stats_.discontinuities > 0) return;
   const std::int64_t target = static_cast<std::int64_t>(*sender_packets) - stats_.first_sender_frame;

@@ -229,6 +229,7 @@ void RtpStreamReceiver::validate(Candidate& c, std::uint64_t run_start, Clock::t
   ++stats_.validations;
   bye_at_.reset();
   last_report_.reset();
+  anchor_report_.reset();
   received_history_.reset();
   probation_.reset();
   highest_ = c.highest;
@@ -266,7 +267,12 @@ std::error_code RtpStreamReceiver::on_rtcp(std::span<const std::uint8_t> datagra
   }
   bool ours = false;
   if (ssrc_ && rtcp.sender_report && rtcp.sender_report->ssrc == *ssrc_) {
-    last_report_ = rtcp.sender_report;
+    // Reports may arrive out of order: the latest is the one with the highest count.
+    if (!last_report_ || rtcp.sender_report->packet_count >= last_report_->packet_count)
+      last_report_ = rtcp.sender_report;
+    const bool closing = std::find(rtcp.bye_sources.begin(), rtcp.bye_sources.end(), *ssrc_) !=
+                         rtcp.bye_sources.end();
+    if (!anchor_report_ && !closing) anchor_report_ = rtcp.sender_report;
     ++stats_.sender_reports;
     ours = true;
   }

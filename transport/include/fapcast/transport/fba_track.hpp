@@ -51,14 +51,16 @@ struct ReceivedTrackStats {
   std::uint64_t frame_number_mismatches = 0;  // intra units whose frame_number disagrees with
                                               // their timestamp (the timestamp wins)
   std::int64_t first_sender_frame = 0;  // the sender's index of output frame 0
+  std::uint64_t report_mismatches = 0;  // a sender report that no frame index fits (not used)
   std::uint64_t standard_units = 0;   // decoded units of the standard syntax ...
   std::uint64_t fapcast_units = 0;    // ... and of the fapcast profile (the payload header's F bit)
   int fap_quant = -1;                 // of the last intra unit decoded (-1: none)
 };
 
 // Rebuilds a track from units in sequence order, on the sender's timeline: the first decoded
-// (intra) unit's frame_number says which sender frame it is (spec/fba.md §4), so output frame k is
-// sender frame k even when the first frames were lost (the frames before it hold it); a later unit
+// (intra) unit's frame_number (fapcast profile, spec/fba.md §9), or for a standard stream a sender
+// report made during it (finish()), says which sender frame it is, so output frame k is sender
+// frame k even when the first frames were lost (the frames before it hold it); a later unit
 // lands at the frame whose start is nearest its timestamp's offset from that anchor, never where
 // its arrival order would put it; frames in between hold the previous frame. Memory is bounded by
 // the frames of `max_seconds` at the stream's stated frame rate, whatever the timestamps say.
@@ -74,7 +76,10 @@ class ReceivedTrack {
   std::error_code add(const ReceivedUnit& unit);
   // End of stream: a sender that sent `sender_packets` packets (its final RTCP sender report;
   // one frame per packet) sent that many frames, so lost last frames are held up to its count.
-  void finish(std::optional<std::uint32_t> sender_packets);
+  // `during`: a sender report made during the stream (RtpStreamReceiver::anchor_sender_report),
+  // which places a standard stream's first decoded frame on the sender's timeline.
+  void finish(std::optional<std::uint32_t> sender_packets,
+              const std::optional<SenderReport>& during = std::nullopt);
 
   // The track has the frames of max_seconds: further units are dropped.
   bool full() const;
@@ -90,6 +95,8 @@ class ReceivedTrack {
   };
   std::int64_t frames_in(std::int64_t samples) const;  // nearest frame count, -1 when negative
   std::int64_t max_gap() const;
+  // The sender's index of the first decoded frame by a report made during the stream.
+  std::optional<std::int64_t> sender_frame_of_first(const SenderReport& during) const;
   void append(const FapFrame& frame, std::int64_t index);  // holds the gap before `index`
 
   SampleRate clock_rate_;
@@ -104,6 +111,8 @@ class ReceivedTrack {
   std::int64_t anchor_index_ = 0;  // output index of the anchor unit
   std::int64_t last_index_ = -1;   // output index of the last placed frame
   std::optional<Pending> jump_;    // a unit that jumped, waiting for the next one to confirm it
+  std::uint32_t first_timestamp_ = 0;  // of the first decoded unit
+  bool numbered_ = false;              // its frame_number placed it (fapcast profile)
 };
 
 }  // namespace fapcast

@@ -117,6 +117,9 @@ class RtpStreamReceiver {
   bool source_left(Clock::time_point now) const;
   // The validated source's latest sender report.
   const std::optional<SenderReport>& last_sender_report() const { return last_report_; }
+  // The validated source's first report made during the stream (not in a compound with its BYE):
+  // its packet count says how many frames the sender sent before its RTP timestamp.
+  const std::optional<SenderReport>& anchor_sender_report() const { return anchor_report_; }
   // Packets waiting in the reorder buffer (never more than options.reorder_capacity).
   std::size_t held_packets() const { return held_.size(); }
   // The jitter in seconds.
@@ -147,7 +150,8 @@ class RtpStreamReceiver {
   std::optional<std::uint64_t> first_sequence_;
   std::vector<Candidate> candidates_;  // sources on probation (none once one is validated)
   std::optional<Clock::time_point> bye_at_;
-  std::optional<SenderReport> last_report_;
+  std::optional<SenderReport> last_report_;    // the one with the highest packet count
+  std::optional<SenderReport> anchor_report_;
   std::uint64_t highest_ = 0;        // highest extended sequence accepted
   std::uint64_t next_ = 0;           // next extended sequence to release
   std::optional<std::uint16_t> probation_;  // a jump is confirmed by its successor

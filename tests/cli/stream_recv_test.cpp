@@ -105,7 +105,7 @@ TEST(StreamRecvCli, BadUsageAndBadInput) {
   EXPECT_EQ(missing.exit_code, 1);
   EXPECT_NE(missing.err.find("/nonexistent/a.fap"), std::string::npos) << missing.err;
   const auto bad_url = run_command(fapcast("stream " + std::string(FAPCAST_TEST_DATA) + "/xface/joy.fap -o 127.0.0.1:9"));
-  EXPECT_EQ(bad_url.exit_code, 1);
+  EXPECT_EQ(bad_url.exit_code, 2);  // a URL that is not udp://HOST:PORT is a usage mistake
   EXPECT_NE(bad_url.err.find("udp-url"), std::string::npos) << bad_url.err;
   const auto silent = run_command(fapcast("recv udp://127.0.0.1:0 -o /tmp/never.fap --timeout 0.2"));
   EXPECT_EQ(silent.exit_code, 1);

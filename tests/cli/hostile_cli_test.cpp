@@ -1,0 +1,128 @@
+// Issue #17's bad inputs through the executable: each ended in exit 0 (or did its work first),
+// and each now exits 1 with the file and the rule, or 2 for a usage mistake.
+#include "cli/fapcast_command.hpp"
+#include "support/run_command.hpp"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fapcast::test {
+namespace {
+
+const std::string kData = FAPCAST_TEST_DATA;
+const std::string kJoy = kData + "/xface/joy.fap";
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// A 16-bit mono PCM WAV of `frames` silent sampling instants at `rate`.
+void write_silent_wav(const std::string& path, std::uint32_t rate, std::uint32_t frames) {
+  std::ofstream out(path, std::ios::binary);
+  const auto u32 = [&](std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) out.put(static_cast<char>((v >> (8 * i)) & 0xff));
+  };
+  const auto u16 = [&](std::uint16_t v) {
+    out.put(static_cast<char>(v & 0xff));
+    out.put(static_cast<char>(v >> 8));
+  };
+  out.write("RIFF", 4);
+  u32(36 + 2 * frames);
+  out.write("WAVEfmt ", 8);
+  u32(16);
+  u16(1);  // PCM
+  u16(1);  // mono
+  u32(rate);
+  u32(rate * 2);
+  u16(2);
+  u16(16);
+  out.write("data", 4);
+  u32(2 * frames);
+  for (std::uint32_t i = 0; i < frames; ++i) u16(0);
+}
+
+// Attack 6: `recv -o /nonexistent/o.fap` listened for the whole session and failed at the end.
+TEST(HostileCli, RecvChecksItsOutputBeforeListening) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = run_command(fapcast("recv udp://127.0.0.1:0 -o /nonexistent/dir/o.fap --timeout 5"));
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(has(r.err, "/nonexistent/dir/o.fap")) << r.err;
+  EXPECT_FALSE(has(r.err, "listening")) << r.err;
+  EXPECT_LT(seconds, 4.0) << "it waited for the --timeout before failing";
+}
+
+// Attack 8: `fap info` on a truncated .fba printed a summary with warnings and exited 0.
+TEST(HostileCli, FapInfoRefusesATruncatedFba) {
+  const std::string path = kData + "/fba/bad/bad.001.truncated.fba";
+  const auto r = run_command(fapcast("fap info " + path));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_TRUE(has(r.err, path)) << r.err;
+  EXPECT_TRUE(has(r.err, "frames lost")) << r.err;
+}
+
+// Attack 12: a corrupt .fba whose first start code is damaged was "not a text file".
+TEST(HostileCli, FapInfoReportsACorruptFbaAsAnFba) {
+  const std::string path = kData + "/fba/bad/bad.004.bad-start-code.fba";
+  const auto r = run_command(fapcast("fap info " + path));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_TRUE(has(r.err, path)) << r.err;
+  EXPECT_FALSE(has(r.err, "not a text file")) << r.err;
+}
+
+// Attack 8: output that never reached a full standard output was a success.
+TEST(HostileCli, AFullStandardOutputIsAFailedRun) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  const auto r = run_command(fapcast("fap info " + kJoy) + " > /dev/full");
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(has(r.err, "standard output")) << r.err;
+}
+
+// Attack 12: a URL that is not udp://HOST:PORT is a usage mistake (2), on both ends.
+TEST(HostileCli, ABadUrlIsUsage) {
+  const auto stream = run_command(fapcast("stream " + kJoy + " -o 127.0.0.1:9"));
+  EXPECT_EQ(stream.exit_code, 2) << stream.err;
+  EXPECT_TRUE(has(stream.err, "udp-url")) << stream.err;
+  const auto recv = run_command(fapcast("recv 127.0.0.1:9 -o " + make_temp_dir("hostile_cli") + "/o.fap"));
+  EXPECT_EQ(recv.exit_code, 2) << recv.err;
+  EXPECT_TRUE(has(recv.err, "udp-url")) << recv.err;
+}
+
+// Attack 8: `stream --wav` with a cut-off WAV read it as a shorter one and exited 0.
+TEST(HostileCli, StreamRefusesATruncatedWav) {
+  const std::string dir = make_temp_dir("hostile_cli");
+  const std::string wav = dir + "/cut.wav";
+  write_silent_wav(wav, 48000, 48000 * 10);
+  std::filesystem::resize_file(wav, 44 + 2 * 48000);  // the header still claims 10 s
+  const auto r = run_command(fapcast("stream " + kJoy + " --wav " + wav + " -o udp://127.0.0.1:9 --no-pace"));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(has(r.err, wav)) << r.err;
+  EXPECT_TRUE(has(r.err, "wav-truncated")) << r.err;
+}
+
+// Attack 8: audio far shorter than the animation was streamed as if it were its timeline.
+TEST(HostileCli, StreamRefusesAudioShorterThanTheAnimation) {
+  const std::string dir = make_temp_dir("hostile_cli");
+  const std::string wav = dir + "/short.wav";
+  write_silent_wav(wav, 48000, 4800);  // 0.1 s
+  const auto r = run_command(fapcast("stream " + kJoy + " --wav " + wav + " -o udp://127.0.0.1:9 --no-pace"));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(has(r.err, "stream-audio-short")) << r.err;
+}
+
+// Attack 8: `corpus script` with an empty lexicon wrote 204 nonsense items and exited 0.
+TEST(HostileCli, CorpusScriptRefusesAnEmptyLexicon) {
+  const std::string dir = make_temp_dir("hostile_cli");
+  std::ofstream(dir + "/empty.out").flush();
+  const auto r = run_command(fapcast("corpus script --cmudict " + dir + "/empty.out --word-counts " + kData +
+                                     "/lexicon/mini-word-counts.tsv -o " + dir + "/script.tsv"));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_TRUE(has(r.err, "lexicon-empty")) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/script.tsv"));
+}
+
+}  // namespace
+}  // namespace fapcast::test

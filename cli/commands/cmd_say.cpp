@@ -3,11 +3,13 @@
 #include "command.hpp"
 #include "synthesis_cli.hpp"
 
+#include "fapcast/core/file_io.hpp"
 #include "fapcast/core/wav_file.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace {
@@ -30,10 +32,25 @@ const cli::Registration reg{"say", [](CLI::App& app) {
         if (wav.empty() && (cli::is_mesh_output(args->synthesis.output) ||
                             cli::is_rig_output(args->synthesis.output, args->synthesis.rig)))
           wav = std::filesystem::path(args->synthesis.output).replace_extension(".wav").string();
-        if (!wav.empty()) write_wav(wav, speech.audio);
+        // The track and its WAV appear together or not at all: the WAV is written first but
+        // committed only after the track was, and the track is removed again if that fails.
+        std::optional<AtomicFile> wav_file;
+        if (!wav.empty()) {
+          wav_file.emplace(wav);
+          wav_file->write(wav_bytes(speech.audio));
+        }
         args->synthesis.words = speech.words;
         cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate,
                                   static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");
+        if (wav_file) {
+          try {
+            wav_file->commit();
+          } catch (...) {
+            std::error_code ignored;
+            std::filesystem::remove(args->synthesis.output, ignored);
+            throw;
+          }
+        }
       });
   cmd->add_option("TEXT", args->text, "The text (UTF-8)")->required();
   cmd->add_option("--wav-out", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");

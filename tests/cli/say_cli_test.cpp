@@ -437,6 +437,18 @@ void AdaptedVoiceSpeaks() {
   EXPECT_FALSE(fs::exists(out("bad.fapv")));
 }
 
+// Issue #17, attack 10: a failed `say -o x.glb` left the WAV without its .glb. Both appear or
+// neither: here the .glb cannot be renamed into place (a directory is in the way).
+void AFailedGlbLeavesNoWav() {
+  fs::create_directories(out("blocked.glb") + "/in-the-way");
+  const auto r = run_command(fapcast("say \"Hi.\" --voice " + voice() + " -o " + out("blocked.glb")));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("blocked.glb"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("blocked.wav")));
+  for (const auto& e : fs::directory_iterator(fs::path(out(""))))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+}
+
 TEST_F(SayCli, SayAndAnimateEndToEnd) {
   {
     SCOPED_TRACE("SayWritesTheTrackInSyncWithTheWav");
@@ -469,6 +481,10 @@ TEST_F(SayCli, SayAndAnimateEndToEnd) {
   {
     SCOPED_TRACE("AdaptedVoiceSpeaks");
     AdaptedVoiceSpeaks();
+  }
+  {
+    SCOPED_TRACE("AFailedGlbLeavesNoWav");
+    AFailedGlbLeavesNoWav();
   }
 }
 

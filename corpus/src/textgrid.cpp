@@ -5,6 +5,7 @@
 
 #include "segment_rows.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -215,6 +216,24 @@ std::int64_t token_count(const Token& t, const std::string& what, const std::str
   return n;  // never used to allocate: items are appended as they are read
 }
 
+// The tiers, intervals and points a file claims, all tiers together, against the bound of every
+// alignment reader (detail::kMaxSegments; rule alignment-too-many-intervals), checked at each
+// count before its items are read.
+class ClaimedItems {
+ public:
+  void add(std::int64_t n, const InputLocation& at) {
+    constexpr auto kMax = static_cast<std::int64_t>(detail::kMaxSegments);
+    total_ += std::min(n, kMax + 1);
+    if (n > kMax || total_ > kMax)
+      throw InputError(at, "alignment-too-many-intervals",
+                       "the file claims " + std::to_string(n > kMax ? n : total_) +
+                           " tiers, intervals and points, more than " + std::to_string(kMax));
+  }
+
+ private:
+  std::int64_t total_ = 0;
+};
+
 class Parser {
  public:
   Parser(std::string_view text, const std::string& source) : tokens_(text, source), source_(source) {}
@@ -330,21 +349,13 @@ class Parser {
     throw InputError({source_, line, std::nullopt}, rule, detail);
   }
 
-  // Tiers, intervals and points claimed so far, all tiers together, against the bound.
-  void claim(std::int64_t n) {
-    claimed_ += n;
-    constexpr auto kMax = static_cast<std::int64_t>(detail::kMaxSegments);
-    if (n > kMax || claimed_ > kMax)
-      fail(count_line_, "alignment-too-many-intervals",
-           "the file claims " + std::to_string(claimed_) + " tiers, intervals and points, more than " +
-               std::to_string(kMax));
-  }
+  void claim(std::int64_t n) { claimed_.add(n, {source_, count_line_, std::nullopt}); }
   [[noreturn]] void fail(std::uint64_t line, const Problem& p) { fail(line, p.rule, p.detail); }
 
   Tokenizer tokens_;
   const std::string& source_;
   std::optional<Token> pending_;
-  std::int64_t claimed_ = 0;
+  ClaimedItems claimed_;
   std::uint64_t count_line_ = 0;
   bool long_form_ = true;
 };
@@ -369,7 +380,10 @@ class ChronologicalParser {
     const Token end = value(TokenKind::number, "the TextGrid's xmax");
     grid.end_s = to_double(end);
     if (auto p = check_span(grid.start_s, grid.end_s, "the TextGrid")) fail(end.line, *p);
-    const std::int64_t n = count("the number of tiers");
+    const Token tier_count = value(TokenKind::number, "the number of tiers");
+    const std::int64_t n = token_count(tier_count, "the number of tiers", source_);
+    ClaimedItems claimed;
+    claimed.add(n, {source_, tier_count.line, std::nullopt});
     for (std::int64_t i = 0; i < n; ++i) {
       const std::string which = "tier " + std::to_string(i + 1);
       LabelTier t;
@@ -391,6 +405,7 @@ class ChronologicalParser {
                                                (lead.kind == TokenKind::number ? "\"" + excerpt(lead.text) + "\""
                                                                                : kind_name(lead.kind)));
       }
+      claimed.add(1, {source_, lead.line, std::nullopt});  // this form states no counts
       LabelTier& t = grid.tiers[static_cast<std::size_t>(k - 1)];
       if (t.kind == TierKind::intervals) {
         Interval v;
@@ -434,7 +449,6 @@ class ChronologicalParser {
   }
   double to_double(const Token& t) { return token_number(t, source_); }
   double number(const std::string& what) { return to_double(value(TokenKind::number, what)); }
-  std::int64_t count(const std::string& what) { return token_count(value(TokenKind::number, what), what, source_); }
   [[noreturn]] void fail(std::uint64_t line, const std::string& rule, const std::string& detail) {
     throw InputError({source_, line, std::nullopt}, rule, detail);
   }
@@ -540,6 +554,7 @@ class BinaryParser {
     for (int i = 0; i < 4; ++i) v = v << 8 | static_cast<std::uint8_t>(b_[pos_++]);
     const auto n = static_cast<std::int32_t>(v);
     if (n < 0) fail(at, "textgrid-bad-count", what + " " + std::to_string(n) + " is negative");
+    claimed_.add(n, {source_, std::nullopt, at});
     return n;
   }
   double real(const std::string& what) {
@@ -609,6 +624,7 @@ class BinaryParser {
   std::string_view b_;
   const std::string& source_;
   std::size_t pos_ = 0;
+  ClaimedItems claimed_;
 };
 
 // ---- writing -------------------------------------------------------------------------------

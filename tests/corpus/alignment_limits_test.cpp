@@ -4,6 +4,7 @@
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/lab_file.hpp"
 #include "fapcast/corpus/textgrid.hpp"
+#include "corpus/corpus_test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -39,6 +40,21 @@ TEST(AlignmentLimits, ATextGridClaimingTooManyIntervalsIsRefusedAtTheCount) {
   // Two tiers, each under the bound, together over it.
   const std::string both = rule_of([] { (void)read_textgrid(textgrid_claiming("1500000", "1500000"), "two.TextGrid"); });
   EXPECT_TRUE(both.starts_with("alignment-too-many-intervals | two.TextGrid:")) << both;
+}
+
+TEST(AlignmentLimits, TheChronologicalAndBinaryFormsAreBoundedToo) {
+  const std::string chronological = "\"Praat chronological TextGrid text file\"\n0 1\n3000000\n";
+  const std::string c = rule_of([&] { (void)read_textgrid(chronological, "c.TextGrid"); });
+  EXPECT_TRUE(c.starts_with("alignment-too-many-intervals | c.TextGrid:3:")) << c;
+  // A real binary TextGrid (one tier) whose tier count, at byte 38, is made 2^31 - 1.
+  std::string binary = test::file_bytes(std::filesystem::path(FAPCAST_TEST_DATA) /
+                                        "alignment/textgrid/praat-binary/bobby_phones.binary.TextGrid");
+  ASSERT_GT(binary.size(), 42u);
+  ASSERT_EQ(binary.substr(38, 4), std::string("\0\0\0\1", 4));
+  EXPECT_EQ(rule_of([&] { (void)read_textgrid(binary, "b.TextGrid"); }), "no error");
+  binary.replace(38, 4, "\x7f\xff\xff\xff");
+  const std::string b = rule_of([&] { (void)read_textgrid(binary, "b.TextGrid"); });
+  EXPECT_TRUE(b.starts_with("alignment-too-many-intervals | b.TextGrid: byte 38:")) << b;
 }
 
 TEST(AlignmentLimits, ALabWithTooManySegmentsIsRefused) {

@@ -240,6 +240,16 @@ TEST(HostileReceiver, AConfirmedJumpContinuesTheTrack) {
   EXPECT_EQ(f.track.stats().timestamp_jumps, 0u);
 }
 
+// The sender's 100 frames with the first intra period lost: frames 25.. in place, 0..24 hold 25.
+void expect_start_held_from_frame_25(Feed& f, const SentStream& s) {
+  const auto& got = f.finish(100);
+  ASSERT_EQ(got.frames.size(), 100u);
+  for (std::size_t k = 25; k < 100; ++k) EXPECT_EQ(got.frames[k], s.track.frames[k]) << k;
+  for (std::size_t k = 0; k < 25; ++k) EXPECT_EQ(got.frames[k], s.track.frames[25]) << k;
+  EXPECT_EQ(f.track.stats().leading_frames, 25u);
+  EXPECT_EQ(f.track.stats().first_sender_frame, 0);
+}
+
 // Attack 5: a lost first intra frame shifted the whole track one intra period early against the
 // audio. The fapcast profile's first decoded intra frame carries its frame_number: frame k stays
 // frame k.
@@ -247,12 +257,7 @@ TEST(HostileReceiver, ALostStartKeepsEveryFrameInItsPlace) {
   const SentStream s(100, {25, 1}, 25, {0x5eed0001, 65500, 4'294'960'000u}, FbaProfile::kFapcast);
   Feed f;
   for (std::size_t i = 3; i < s.packets.size(); ++i) (void)f.offer(s.packets[i]);  // 0..2 lost
-  const auto& got = f.finish(100);
-  ASSERT_EQ(got.frames.size(), 100u);
-  for (std::size_t k = 25; k < 100; ++k) EXPECT_EQ(got.frames[k], s.track.frames[k]) << k;
-  for (std::size_t k = 0; k < 25; ++k) EXPECT_EQ(got.frames[k], s.track.frames[25]) << k;
-  EXPECT_EQ(f.track.stats().leading_frames, 25u);
-  EXPECT_EQ(f.track.stats().first_sender_frame, 0);
+  expect_start_held_from_frame_25(f, s);
 }
 
 // A standard unit has no frame_number: a sender report made during the stream (packet count 38
@@ -265,12 +270,7 @@ TEST(HostileReceiver, ALostStandardStartIsPlacedByASenderReport) {
   pack_sender_report({s.ids.ssrc, {}, s.ids.first_timestamp + 72000, 38, 0}, sr);
   EXPECT_FALSE(f.rx.on_rtcp(sr, f.now));
   for (std::size_t i = 40; i < s.packets.size(); ++i) (void)f.offer(s.packets[i]);
-  const auto& got = f.finish(100);
-  ASSERT_EQ(got.frames.size(), 100u);
-  for (std::size_t k = 25; k < 100; ++k) EXPECT_EQ(got.frames[k], s.track.frames[k]) << k;
-  for (std::size_t k = 0; k < 25; ++k) EXPECT_EQ(got.frames[k], s.track.frames[25]) << k;
-  EXPECT_EQ(f.track.stats().leading_frames, 25u);
-  EXPECT_EQ(f.track.stats().first_sender_frame, 0);
+  expect_start_held_from_frame_25(f, s);
 }
 
 // Lost last frames are held up to the sender's count from its final sender report.

@@ -207,7 +207,7 @@ struct PathReader {
     std::size_t word = 0;
     bool started = false;
     for (const auto& s : path) {
-      AlignedSegment g;
+      SpeechSegment g;
       g.start_sample = to_sample(s.start_frame);
       g.end_sample = to_sample(s.end_frame);
       g.score_per_frame = s.score_per_frame;
@@ -220,16 +220,16 @@ struct PathReader {
         started = true;
         g.word = static_cast<int>(word);
         if (s.word.front() == '~') {
-          g.kind = SegmentKind::phone;
+          g.kind = SpeechSegmentKind::phone;
           g.phone = parse_arpabet(s.word.substr(1, at - 1), "pocketsphinx path").phone;
         } else {
-          g.kind = SegmentKind::unmatched;
+          g.kind = SpeechSegmentKind::unmatched;
         }
       } else {
-        g.kind = is_noise(s.word) ? SegmentKind::noise : SegmentKind::silence;
+        g.kind = is_noise(s.word) ? SpeechSegmentKind::noise : SpeechSegmentKind::silence;
       }
       // one segment per pause, per unmatched stretch
-      if (!a.segments.empty() && g.kind != SegmentKind::phone && a.segments.back().kind == g.kind &&
+      if (!a.segments.empty() && g.kind != SpeechSegmentKind::phone && a.segments.back().kind == g.kind &&
           a.segments.back().word == g.word) {
         a.segments.back().end_sample = g.end_sample;
         continue;
@@ -256,7 +256,7 @@ void finish_words(SpeechAlignment& a) {
       if (first) word.start_sample = s.start_sample;
       first = false;
       word.end_sample = s.end_sample;
-      if (s.kind == SegmentKind::phone) {
+      if (s.kind == SpeechSegmentKind::phone) {
         const double f = static_cast<double>(s.end_sample - s.start_sample);
         sum += s.score_per_frame * f;
         frames += f;
@@ -333,7 +333,7 @@ SpeechAlignment SpeechAligner::align(const Audio& speech, const Transcript& tran
     std::vector<bool> matched(transcript.words.size(), false), garbage(transcript.words.size(), false);
     for (const auto& g : d.segments) {
       if (g.word < 0) continue;
-      (g.kind == SegmentKind::phone ? matched : garbage)[static_cast<std::size_t>(g.word)] = true;
+      (g.kind == SpeechSegmentKind::phone ? matched : garbage)[static_cast<std::size_t>(g.word)] = true;
     }
     if (std::none_of(matched.begin(), matched.end(), [](bool m) { return m; }))
       throw InputError({source, std::nullopt, std::nullopt}, "no-speech", "no word of the transcript was found in the recording (silence, noise, another recording?)");
@@ -341,7 +341,7 @@ SpeechAlignment SpeechAligner::align(const Audio& speech, const Transcript& tran
       if (matched[w] && !garbage[w]) continue;
       std::int64_t at = 0;  // where the recording leaves the transcript: the garbage, or the end of the last word found
       for (const auto& g : d.segments)
-        if (g.word == static_cast<int>(w) && g.kind == SegmentKind::unmatched) { at = g.start_sample; break; }
+        if (g.word == static_cast<int>(w) && g.kind == SpeechSegmentKind::unmatched) { at = g.start_sample; break; }
         else if (g.word >= 0 && g.word < static_cast<int>(w)) at = g.end_sample;
       const auto& tw = transcript.words[w];
       throw InputError({source, std::nullopt, std::nullopt}, "transcript-mismatch",
@@ -362,10 +362,10 @@ SpeechAlignment SpeechAligner::align(const Audio& speech, const Transcript& tran
       if (edges.size() == transcript.words.size()) snap_word_edges(a, edges, rate / 200);
     }
   finish_words(a);
-  if (std::any_of(a.words.begin(), a.words.end(), [](const AlignedWord& w) { return w.low_confidence; })) diagnose();
+  if (std::any_of(a.words.begin(), a.words.end(), [](const SpeechWord& w) { return w.low_confidence; })) diagnose();
   double sum = 0, frames = 0;
   for (const auto& g : a.segments)
-    if (g.kind == SegmentKind::phone) {
+    if (g.kind == SpeechSegmentKind::phone) {
       sum += g.score_per_frame * static_cast<double>(g.end_sample - g.start_sample);
       frames += static_cast<double>(g.end_sample - g.start_sample);
     }

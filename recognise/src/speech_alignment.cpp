@@ -9,7 +9,7 @@ namespace fapcast {
 std::vector<TimedPhone> timed_phones(const SpeechAlignment& a) {
   std::vector<TimedPhone> out;
   for (const auto& s : a.segments) {
-    const Phone p = s.kind == SegmentKind::phone ? s.phone : Phone::SIL;
+    const Phone p = s.kind == SpeechSegmentKind::phone ? s.phone : Phone::SIL;
     if (!out.empty() && p == Phone::SIL && out.back().phone == Phone::SIL) {
       out.back().end_sample = s.end_sample;
       continue;
@@ -21,12 +21,12 @@ std::vector<TimedPhone> timed_phones(const SpeechAlignment& a) {
 
 namespace {
 
-std::string phone_label(const AlignedSegment& s) {
+std::string phone_label(const SpeechSegment& s) {
   switch (s.kind) {
-    case SegmentKind::phone: return std::string(arpabet(s.phone));
-    case SegmentKind::noise: return "spn";
-    case SegmentKind::unmatched: return "unk";
-    case SegmentKind::silence: break;
+    case SpeechSegmentKind::phone: return std::string(arpabet(s.phone));
+    case SpeechSegmentKind::noise: return "spn";
+    case SpeechSegmentKind::unmatched: return "unk";
+    case SpeechSegmentKind::silence: break;
   }
   return "";
 }

@@ -328,7 +328,7 @@ SpeechAlignment SpeechAligner::align(const Audio& speech, const Transcript& tran
     Decoder& wd = impl_->word_decoder();
     const PathReader wr{wd, rate, samples};
     const auto path = wd.decode(phone_grammar(entries, true), s16.samples);
-    if (!path) throw InputError({source, std::nullopt, std::nullopt}, "no-speech", "nothing in the recording sounds like its transcript (silence or noise?)");
+    if (!path) throw InputError({source, std::nullopt, std::nullopt}, "no-speech", "no path through the transcript fits the recording, even with words left out (another recording's text, silence or noise?)");
     SpeechAlignment d = wr.read(*path, transcript);
     std::vector<bool> matched(transcript.words.size(), false), garbage(transcript.words.size(), false);
     for (const auto& g : d.segments) {

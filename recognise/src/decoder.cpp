@@ -4,6 +4,7 @@
 #include <sphinxbase/ckd_alloc.h>
 #include <sphinxbase/err.h>
 #include <sphinxbase/fsg_model.h>
+#include <sphinxbase/glist.h>
 #include <sphinxbase/logmath.h>
 
 #include <algorithm>
@@ -153,6 +154,8 @@ std::optional<std::vector<DecodedSegment>> Decoder::decode(const Grammar& g, std
     else
       fsg_model_trans_add(fsg, a.from, a.to, logp, fsg_model_word_add(fsg, a.word.c_str()));
   }
+  // chains of null arcs (a word left out, then the next) are followed only once closed over
+  glist_free(fsg_model_null_trans_closure(fsg, nullptr));
   for (int s : g.pause_states) {
     fsg_model_add_silence(fsg, "<sil>", s, static_cast<float>(g.silence_probability));
     if (g.noise_probability > 0) fsg_model_add_silence(fsg, "[NOISE]", s, static_cast<float>(g.noise_probability));

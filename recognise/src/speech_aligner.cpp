@@ -169,6 +169,9 @@ Grammar phone_grammar(const std::vector<WordEntry>& entries, bool garbage) {
       g.arcs.push_back({i, loop, "", kGarbageEnter});
       for (Phone ph : phone_set()) g.arcs.push_back({loop, loop, tagged('#', ph, static_cast<std::size_t>(i)), kGarbagePhone});
       g.arcs.push_back({loop, i + 1, "", 1.0});
+      // the recording stops before word i (at 0: has none of them): one null arc to the end, not a chain of skipped
+      // words (each skip costs kGarbageEnter, so a chain falls out of the beam)
+      g.arcs.push_back({i, n, "", kGarbageEnter});
     }
   }
   g.states = next;

@@ -4,6 +4,7 @@
 // (spec/recognise.md). Argument parsing only.
 #include "command.hpp"
 #include "file_extension.hpp"
+#include "speech_transcript.hpp"
 #include "synthesis_cli.hpp"
 
 #include "fapcast/corpus/alignment_file.hpp"
@@ -11,9 +12,8 @@
 #include "fapcast/core/downmix.hpp"
 #include "fapcast/core/wav_file.hpp"
 #include "fapcast/core/file_io.hpp"
-#include "fapcast/core/text_input.hpp"
 #include "fapcast/corpus/textgrid.hpp"
-#include "fapcast/recognise/speech_aligner.hpp"
+#include "fapcast/recognise/speech_alignment.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -30,22 +30,7 @@ template <typename Args>
 void animate_from_transcript(const Args& args) {
   if (!args.alignment_out.empty() && cli::lower_extension(args.alignment_out) != ".textgrid")
     throw cli::UsageError("animate: --alignment-out writes a .TextGrid, not '" + args.alignment_out + "'");
-  const std::string source = args.transcript.empty() ? "--text" : args.transcript;
-  const std::string text =
-      args.transcript.empty() ? args.text : decode_text(read_file(args.transcript), args.transcript, "transcript");
-  const Transcript transcript = parse_transcript(text, source);
-  const Audio recorded = read_wav(args.wav);
-  SpeechAligner aligner;
-  const SpeechAlignment found = aligner.align(recorded, transcript, args.wav);
-  if (!args.synthesis.quiet) {
-    if (recorded.channels > 1)
-      std::cerr << "fapcast: note: " << args.wav << ": " << recorded.channels << " channels downmixed to mono\n";
-    for (const SpeechWord& w : found.words)
-      if (w.low_confidence)
-        std::cerr << "fapcast: warning: " << args.wav << ": " << static_cast<double>(w.start_sample) / static_cast<double>(found.sample_rate.hz)
-                  << " s: the word '" << w.text << "' (byte " << w.byte_offset << " of " << source
-                  << ") matches the recording poorly (score " << w.score_per_frame << " per frame)\n";
-  }
+  const SpeechAlignment found = cli::align_recording(args.wav, args.transcript, args.synthesis.quiet);
   if (!args.alignment_out.empty()) write_file_atomically(args.alignment_out, write_textgrid(to_alignment(found)));
   const std::vector<TimedPhone> phones = timed_phones(found);
   cli::synthesize_to_file(args.synthesis, phones, found.sample_rate, found.samples, args.wav, "fapcast animate");
@@ -57,8 +42,7 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
     std::string align;
     std::string tier;
     std::string phone_set;
-    std::string transcript;
-    std::string text;
+    cli::TranscriptArgs transcript;
     std::string alignment_out;
     cli::SynthesisArgs synthesis;
   };
@@ -66,7 +50,7 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
   auto* cmd = cli::add_synthesis_command(
       app, "animate", "Animate recorded speech from its WAV and phone alignment (TextGrid, .lab, .phn, .mlf, .par, Gentle .json)",
       args->synthesis, [args] {
-        const int sources = !args->align.empty() + !args->transcript.empty() + !args->text.empty();
+        const int sources = !args->align.empty() + !args->transcript.file.empty() + !args->transcript.text.empty();
         if (sources != 1)
           throw cli::UsageError("animate: give the speech's ALIGNMENT, or its --transcript FILE, or its --text TEXT "
                                 "(exactly one)");
@@ -112,9 +96,7 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
   cmd->add_option("ALIGNMENT", args->align,
                   "Its phone alignment: Praat TextGrid (text, binary, chronological), HTK .lab/.mlf, ESPS/Festival .lab, "
                   "TIMIT .phn, BAS .par, Gentle .json (spec/corpus.md); or none, with --transcript or --text");
-  cmd->add_option("--transcript", args->transcript,
-                  "What the speech says, as a UTF-8 text file: its phones are found by forced alignment (spec/recognise.md)");
-  cmd->add_option("--text", args->text, "What the speech says, as text (instead of --transcript FILE)");
+  cli::add_transcript_options(*cmd, args->transcript);
   cmd->add_option("--alignment-out", args->alignment_out,
                   "With --transcript or --text: also write the alignment found (phones and words tiers) as a TextGrid");
   cmd->add_option("--tier", args->tier, "The alignment's phone tier (default: found by name, then by its labels)");

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -86,12 +87,13 @@ bool is_silence(const std::string& w) { return w == "<sil>" || w == "<s>" || w =
 
 struct SpeechAligner::Impl {
   AlignerSettings settings;
-  std::optional<Decoder> phones;  // 200 fps, GMM every 2nd frame: the alignment
+  std::optional<Decoder> phones;  // the alignment (200 fps, GMM every 2nd frame, by default)
   std::optional<Decoder> words;   // 100 fps: the diagnosis of a mismatch (garbage loops)
 
   Decoder& phone_decoder() {
     if (!phones) {
-      phones.emplace(DecoderSettings{.frames_per_second = 200, .gmm_every = 2});
+      const int fps = settings.frames_per_second;
+      phones.emplace(DecoderSettings{.frames_per_second = fps, .gmm_every = fps == 200 ? 2 : 1});
       phones->add_words(phone_words());
     }
     return *phones;
@@ -313,6 +315,8 @@ void check_length(const Audio& speech, const std::string& source) {
 }  // namespace
 
 SpeechAligner::SpeechAligner(const AlignerSettings& settings) : impl_(std::make_unique<Impl>()) {
+  if (settings.frames_per_second != 100 && settings.frames_per_second != 200)
+    throw std::invalid_argument("SpeechAligner: frames_per_second must be 100 or 200");
   impl_->settings = settings;
 }
 

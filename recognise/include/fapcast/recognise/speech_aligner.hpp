@@ -14,6 +14,9 @@ struct AlignerSettings {
   // A second pass over whole dictionary words places the word edges with full cross-word
   // triphones: +2.3 points of boundaries within 25 ms, half the speed (spec/recognise.md).
   bool word_edges = false;
+  // Feature frames per second of the phone pass: 200 (5 ms frames, Gaussian scores every second
+  // frame: the default) or 100 (the model's own rate, every frame scored). Else invalid_argument.
+  int frames_per_second = 200;
 };
 
 class SpeechAligner {

@@ -85,6 +85,21 @@ TEST(SpeechAlignment, AllEmuUtterancesTogether) {
   EXPECT_GE(all.within(0.050), 0.93);
 }
 
+// MOCHA-TIMIT fsew0_001 (southern British English, female; its own .lab labels, read in the
+// MOCHA label set): "This was easy for us."
+TEST(SpeechAlignment, MochaUtteranceBoundariesAgreeWithItsLabels) {
+  const std::string mocha = std::string(FAPCAST_TEST_DATA) + "/mocha/fsew0_001";
+  SpeechAligner aligner;
+  const Audio audio = read_wav(mocha + ".wav");
+  const SpeechAlignment found = aligner.align(audio, parse_transcript("This was easy for us.", "--text"), "fsew0_001.wav");
+  const BoundaryAgreement a = boundary_agreement(reference_phones(mocha + ".lab", audio), timed_phones(found), audio.sample_rate);
+  std::printf("fsew0_001: %zu boundaries, within 10/20/25/50 ms: %.1f / %.1f / %.1f / %.1f %%\n", a.errors_s.size(),
+              100 * a.within(0.010), 100 * a.within(0.020), 100 * a.within(0.025), 100 * a.within(0.050));
+  ASSERT_GE(a.errors_s.size(), 12u);
+  EXPECT_GE(a.within(0.025), 0.70);
+  EXPECT_GE(a.within(0.050), 0.80);
+}
+
 // Another utterance's transcript: the recording does not say it, and the aligner says so (which
 // rule depends on where the search fails: no path, a diagnosed divergence, or poor scores).
 TEST(SpeechAlignment, AnotherUtterancesTranscriptIsRefused) {

@@ -4,6 +4,7 @@
 // with scores every second frame, and the default with the word-edge pass (spec/recognise.md).
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/core/wav_file.hpp"
+#include "fapcast/recognise/resample.hpp"
 #include "fapcast/recognise/speech_aligner.hpp"
 
 #include <benchmark/benchmark.h>
@@ -48,6 +49,19 @@ void BM_Align200FpsOnePass(benchmark::State& state) { align_all(state, {}); }
 void BM_Align100FpsOnePass(benchmark::State& state) { align_all(state, {.frames_per_second = 100}); }
 void BM_Align200FpsWordEdges(benchmark::State& state) { align_all(state, {.word_edges = true}); }
 
+// What share of the alignment's time is the resampling to 16 kHz (libsamplerate's medium sinc),
+// on the same recordings.
+void BM_ResampleTo16k(benchmark::State& state) {
+  double seconds = 0;
+  for (const Take& t : takes())
+    seconds += static_cast<double>(t.audio.instants()) / static_cast<double>(t.audio.sample_rate.hz);
+  for (auto _ : state)
+    for (const Take& t : takes()) benchmark::DoNotOptimize(resample_mono(t.audio, SampleRate{16000}));
+  state.counters["x_real_time"] =
+      benchmark::Counter(seconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_ResampleTo16k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Align200FpsOnePass)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Align100FpsOnePass)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Align200FpsWordEdges)->Unit(benchmark::kMillisecond);

@@ -30,6 +30,10 @@ run_packages=(
   libespeak-ng-dev      # the text front-end (speech and phone timing of `say`)
   espeak-ng             # its voices and phoneme data (espeak-ng-data) and the espeak-ng command
   festlex-cmu           # syllabified CMU lexicon: the recording script of the default voice
+  libpocketsphinx-dev   # forced alignment of recorded speech (`animate SPEECH.wav --transcript`)
+  libsphinxbase-dev     # its feature, grammar and log-math library
+  pocketsphinx-en-us    # its US English acoustic model and pronouncing dictionary
+  libsamplerate0-dev    # recorded speech resampled to the model's 16 kHz
 )
 
 # tests/viewer's npm packages (three.js, @pixiv/three-vrm, three-vrm-animation, node-osc), exactly as

@@ -48,7 +48,7 @@ TEST(Cli, HelpListsTheCommandsInPipelineOrder) {
   const auto r = run_command(fapcast("--help"));
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(listed_commands(r.out),
-            (std::vector<std::string>{"corpus", "voice", "say", "animate", "eval", "adapt", "expressions", "fap",
+            (std::vector<std::string>{"corpus", "align", "voice", "say", "animate", "eval", "adapt", "expressions", "fap",
                                       "encode", "decode", "export", "render", "stream", "recv"}))
       << r.out;
   EXPECT_EQ(listed_commands(run_command(fapcast("corpus --help")).out),

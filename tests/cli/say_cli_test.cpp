@@ -222,6 +222,38 @@ void AnimateRealAlignments() {
   EXPECT_NE(r.err.find("bobby_16bit_16khz_2ch.wav: 2 channels downmixed to mono"), std::string::npos) << r.err;
 }
 
+// Recorded speech with its transcript only: the forced aligner finds the phones (spec/recognise.md);
+// --alignment-out writes what it found as a TextGrid that reads back with the two tiers.
+void AnimateFromTranscript() {
+  const std::string emu = std::string(FAPCAST_TEST_DATA) + "/speech/emu-ae/msajc003";
+  auto r = run_command(fapcast("animate " + emu + ".wav --transcript " + emu + ".txt --voice " + voice() + " -o " +
+                               out("emu-aligned.fap") + " --alignment-out " + out("emu-aligned.TextGrid")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Audio audio = read_wav(emu + ".wav");
+  EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("emu-aligned.fap")).frames.size()), frames_for(audio, 25));
+  AlignmentFileOptions options;
+  options.sample_rate = audio.sample_rate;
+  const AlignmentFile found = read_alignment_file(read_file(out("emu-aligned.TextGrid")), "emu-aligned.TextGrid", options);
+  EXPECT_EQ(found.tier, "phones");
+  const LabelTier* words = found.alignment.find("words");
+  ASSERT_NE(words, nullptr);
+  std::string said;
+  for (const Interval& i : words->intervals)
+    if (!i.label.empty()) said += (said.empty() ? "" : " ") + i.label;
+  EXPECT_EQ(said, "amongst her friends she was considered beautiful");
+  // The same words as --text: the same animation.
+  r = run_command(fapcast("animate " + emu + ".wav --text \"amongst her friends she was considered beautiful\" --voice " +
+                          voice() + " -o " + out("emu-text.fap")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_file(out("emu-text.fap")), read_file(out("emu-aligned.fap")));
+  // Another recording's words: refused, naming the recording (exit 1), nothing written.
+  r = run_command(fapcast("animate " + emu + ".wav --text \"it is futile to offer any further resistance\" --voice " +
+                          voice() + " -o " + out("emu-wrong.fap")));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("msajc003.wav: no-speech: "), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out("emu-wrong.fap")));
+}
+
 void BadInputExitsOneAndNamesIt() {
   auto expect_error = [](const std::string& args, const std::string& what) {
     const auto r = run_command(fapcast(args));
@@ -467,6 +499,10 @@ TEST_F(SayCli, SayAndAnimateEndToEnd) {
     AnimateRealAlignments();
   }
   {
+    SCOPED_TRACE("AnimateFromTranscript");
+    AnimateFromTranscript();
+  }
+  {
     SCOPED_TRACE("BadInputExitsOneAndNamesIt");
     BadInputExitsOneAndNamesIt();
   }
@@ -495,6 +531,12 @@ TEST(SayCliUsage, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 500")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --duration-weight -1")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("animate a.wav -o x.fap")).exit_code, 2);  // no alignment
+  // The phones come from one place: an alignment, a transcript file or a text.
+  EXPECT_EQ(run_command(fapcast("animate a.wav a.TextGrid --transcript a.txt -o x.fap")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("animate a.wav --transcript a.txt --text \"hi\" -o x.fap")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("animate a.wav a.TextGrid --alignment-out b.TextGrid -o x.fap")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("animate a.wav --text \"hi\" --alignment-out b.lab -o x.fap")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("animate a.wav --text \"hi\" --tier phones -o x.fap")).exit_code, 2);
   // One meaning per option name: --wav is an input WAV (stream's); say writes its speech with --wav-out.
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --wav x.wav")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("animate --wav a.wav --align a.TextGrid -o x.fap")).exit_code, 2);

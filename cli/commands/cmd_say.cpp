@@ -31,6 +31,7 @@ const cli::Registration reg{"say", [](CLI::App& app) {
                             cli::is_rig_output(args->synthesis.output, args->synthesis.rig)))
           wav = std::filesystem::path(args->synthesis.output).replace_extension(".wav").string();
         if (!wav.empty()) write_wav(wav, speech.audio);
+        args->synthesis.cues.sound_file = wav;
         args->synthesis.words = speech.words;
         cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate,
                                   static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");

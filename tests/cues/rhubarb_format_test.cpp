@@ -1,9 +1,10 @@
 // The three result files checked field by field against Rhubarb Lip Sync's README ("Output
-// formats"): JSON read back with nlohmann-json, XML with expat, TSV line by line; times with two
+// formats"): JSON read back with nlohmann-json, XML with expat (support/xml_elements.hpp), TSV
+// line by line; times with two
 // decimals, rising, within the duration; shapes among the drawn ones; the TSV's closing line.
 #include "fapcast/cues/rhubarb_format.hpp"
+#include "support/xml_elements.hpp"
 
-#include <expat.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -98,59 +99,18 @@ TEST(RhubarbFormat, JsonHasTheMetadataAndTheCues) {
   EXPECT_NE(text.find("    \"duration\": 0.47\n"), std::string::npos) << text;
 }
 
-// The elements, attributes and text expat reads.
-struct XmlNode {
-  std::string path;  // "rhubarbResult/mouthCues/mouthCue"
-  std::map<std::string, std::string> attributes;
-  std::string text;
-};
-
-struct XmlRead {
-  std::vector<XmlNode> nodes;
-  std::vector<std::size_t> open;
-  std::string declared_encoding;
-};
-
-std::vector<XmlNode> read_xml(const std::string& text, std::string& encoding) {
-  XmlRead read;
-  XML_Parser parser = XML_ParserCreate(nullptr);
-  XML_SetUserData(parser, &read);
-  XML_SetXmlDeclHandler(parser, [](void* data, const XML_Char*, const XML_Char* enc, int) {
-    static_cast<XmlRead*>(data)->declared_encoding = enc ? enc : "";
-  });
-  XML_SetElementHandler(
-      parser,
-      [](void* data, const XML_Char* name, const XML_Char** attributes) {
-        auto& r = *static_cast<XmlRead*>(data);
-        XmlNode node;
-        node.path = (r.open.empty() ? std::string() : r.nodes[r.open.back()].path + "/") + name;
-        for (const XML_Char** a = attributes; *a != nullptr; a += 2) node.attributes[a[0]] = a[1];
-        r.open.push_back(r.nodes.size());
-        r.nodes.push_back(node);
-      },
-      [](void* data, const XML_Char*) { static_cast<XmlRead*>(data)->open.pop_back(); });
-  XML_SetCharacterDataHandler(parser, [](void* data, const XML_Char* s, int n) {
-    auto& r = *static_cast<XmlRead*>(data);
-    if (!r.open.empty()) r.nodes[r.open.back()].text.append(s, static_cast<std::size_t>(n));
-  });
-  const bool ok = XML_Parse(parser, text.data(), static_cast<int>(text.size()), 1) == XML_STATUS_OK;
-  EXPECT_TRUE(ok) << XML_ErrorString(XML_GetErrorCode(parser)) << " at line " << XML_GetCurrentLineNumber(parser);
-  XML_ParserFree(parser);
-  encoding = read.declared_encoding;
-  return read.nodes;
-}
-
 std::string trimmed(const std::string& s) {
   const auto a = s.find_first_not_of(" \n"), b = s.find_last_not_of(" \n");
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
 
 TEST(RhubarbFormat, XmlHasTheMetadataAndTheCues) {
-  std::string encoding;
-  const auto nodes = read_xml(write_rhubarb(hi(), RhubarbFormat::kXml), encoding);
-  EXPECT_EQ(encoding, "utf-8");
+  const test::XmlDocument doc = test::read_xml_elements(write_rhubarb(hi(), RhubarbFormat::kXml));
+  ASSERT_EQ(doc.error, "");
+  EXPECT_EQ(doc.encoding, "utf-8");
+  const auto& nodes = doc.elements;
   std::vector<std::string> paths;
-  for (const XmlNode& n : nodes) paths.push_back(n.path);
+  for (const test::XmlElement& n : nodes) paths.push_back(n.path);
   const std::vector<std::string> expected{"rhubarbResult", "rhubarbResult/metadata", "rhubarbResult/metadata/soundFile",
                                           "rhubarbResult/metadata/duration", "rhubarbResult/mouthCues",
                                           "rhubarbResult/mouthCues/mouthCue", "rhubarbResult/mouthCues/mouthCue",
@@ -162,7 +122,7 @@ TEST(RhubarbFormat, XmlHasTheMetadataAndTheCues) {
   std::string previous_end = "0.00";
   const std::string letters = "XDCBX";
   for (std::size_t i = 5; i < nodes.size(); ++i) {
-    const XmlNode& cue = nodes[i];
+    const test::XmlElement& cue = nodes[i];
     ASSERT_EQ(cue.attributes.size(), 2u);
     const std::string start = cue.attributes.at("start"), end = cue.attributes.at("end");
     EXPECT_TRUE(is_time(start) && is_time(end)) << start << " " << end;
@@ -189,8 +149,9 @@ TEST(RhubarbFormat, MouthCuesOfPhonesWriteValidFiles) {
   EXPECT_EQ(j.at("mouthCues").front().at("value"), "X");  // the pause before HH
   EXPECT_EQ(j.at("mouthCues").back().at("value"), "X");   // and after "there"
   EXPECT_DOUBLE_EQ(j.at("mouthCues").back().at("end").get<double>(), 1.00);
-  std::string encoding;
-  EXPECT_EQ(read_xml(write_rhubarb(r, RhubarbFormat::kXml), encoding).size(), 5 + r.cues.size());
+  const test::XmlDocument doc = test::read_xml_elements(write_rhubarb(r, RhubarbFormat::kXml));
+  EXPECT_EQ(doc.error, "");
+  EXPECT_EQ(doc.elements.size(), 5 + r.cues.size());
   const std::string tsv = write_rhubarb(r, RhubarbFormat::kTsv);
   EXPECT_EQ(static_cast<std::size_t>(std::count(tsv.begin(), tsv.end(), '\n')), r.cues.size() + 1);
 }

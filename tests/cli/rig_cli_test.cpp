@@ -6,6 +6,7 @@
 #include "cli/fapcast_command.hpp"
 #include "support/bad_inputs.hpp"
 #include "support/run_command.hpp"
+#include "fapcast/core/file_io.hpp"
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -90,6 +91,22 @@ std::vector<VisemeRun> viseme_runs(const nlohmann::json& th) {
   return runs;
 }
 bool is_vowel(const std::string& v) { return v == "aa" || v == "E" || v == "I" || v == "O" || v == "U"; }
+
+// Mouth cues written beside an animation (spec/mouth-cues.md): the same file as with --cues-out
+// alone, the voice's synthesis running too.
+TEST_F(RigCli, MouthCuesBesideTheAnimation) {
+  const auto both = run_command(say("-o " + q(out("cues.fap")) + " --cues-out " + q(out("both.json"))));
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  EXPECT_NE(both.out.find(" mouth cues in " + out("both.json")), std::string::npos) << both.out;
+  EXPECT_TRUE(fs::exists(out("cues.fap")));
+  const auto alone = run_command(fapcast("say " + q(kText) + " --cues-out " + q(out("alone.json"))));  // no voice
+  ASSERT_EQ(alone.exit_code, 0) << alone.err;
+  const std::string cues = read_file(out("both.json"));
+  EXPECT_EQ(cues, read_file(out("alone.json")));
+  const nlohmann::json j = nlohmann::json::parse(cues);
+  EXPECT_GT(j.at("mouthCues").size(), 20u);  // a sentence of some 40 phones
+  EXPECT_DOUBLE_EQ(j.at("mouthCues").back().at("end").get<double>(), j.at("metadata").at("duration").get<double>());
+}
 
 TEST_F(RigCli, ArkitLiveLinkCsvMeetsTheAccuracyTargets) {
   const auto r = run_command(say("-o " + q(out("say.csv"))));

@@ -57,8 +57,7 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
                   "Animation file by extension, written atomically: .fap, .fba, .json, .bvh (FAPs) or .glb "
                   "(glTF mesh: the voice's PCA components as morph targets, its 60 fps PCA frames as weights); "
                   "with a rig (spec/rigs.md): .csv (Live Link Face, ARKit), .json with --rig (TalkingHead), "
-                  ".vrma (VRM animation), .glb with --avatar")
-      ->required();
+                  ".vrma (VRM animation), .glb with --avatar; not needed with --cues-out alone");
   cmd->add_option("--voice", args.voice, "Voice file (default: the reference voice, built on first use)");
   CLI::Option* fps = cmd->add_option("--fps", args.fps, "Output frames per second (25, 30, 60; any 1..120); not .glb")
                          ->check(CLI::Range(1, 120))
@@ -84,9 +83,20 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
                   "Avatar rig: arkit (52 blendshapes), oculus (15 visemes), vrm (aa ih ou ee oh), vrm0 (A I U E O)");
   cmd->add_option("--avatar", args.rig.avatar, "A .glb avatar whose morph targets (ARKit or Oculus names) -o X.glb animates");
   cmd->add_option("--vmc", args.rig.vmc, "Also stream the rig live over VMC (OSC over UDP) to udp://HOST:PORT, in real time");
+  add_cue_options(*cmd, args.cues);
   cmd->add_flag("-q,--quiet", args.quiet, "No progress on standard error");
   cmd->callback([&args, fps, name, run = std::move(run)] {
     if (!args.expression_text.empty()) args.expression = parse_expression_blend(args.expression_text);
+    check_cue_args(name, args.cues);
+    if (args.output.empty()) {
+      if (args.cues.output.empty()) throw UsageError(name + ": -o OUT is required (or --cues-out FILE for mouth cues alone)");
+      if (!args.voice.empty() || fps->count() > 0 || args.viseme || args.expression || !args.obj_frames.empty() ||
+          !args.player.empty() || !args.rig.rig_text.empty() || !args.rig.avatar.empty() || !args.rig.vmc.empty())
+        throw UsageError(name + ": --voice, --fps, --viseme, --expression, --obj-frames-out, --player, --rig, --avatar "
+                         "and --vmc shape the animation: give it with -o OUT");
+      run();
+      return;
+    }
     if (!is_animation_output(args.output) && !is_rig_output(args.output, args.rig))
       throw UsageError(name + ": output '" + args.output + "' must end in .fap, .fba, .json, .bvh, .glb, .csv or .vrma");
     args.fps_given = fps->count() > 0;
@@ -137,6 +147,12 @@ MorphAnimation mesh_animation(const SynthesisArgs& args, const SpeechBasis& basi
 void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> phones,
                         SampleRate sample_rate, std::int64_t audio_samples,
                         const std::string& source, const std::string& name) {
+  const std::string cue_summary = write_cue_output(args.cues, phones, sample_rate, audio_samples);
+  if (args.output.empty()) {
+    std::cout << args.cues.output << ": " << static_cast<double>(audio_samples) / static_cast<double>(sample_rate.hz)
+              << " s, " << phones.size() << " phones" << cue_summary << "\n";
+    return;
+  }
   const Voice voice = open_voice_or_default(args.voice, args.quiet);
   const std::string voice_name = args.voice.empty() ? std::string("the default voice") : args.voice;
   check_voice_phone_set(voice, voice_name);
@@ -185,7 +201,7 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
   if (args.expression) std::cout << ", expression " << expression_blend_text(*args.expression);
   if (rig_summary.empty() && !args.rig.vmc.empty())
     rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, false, args.words);
-  std::cout << rig_summary;
+  std::cout << rig_summary << cue_summary;
   if (track.substituted > 0) std::cout << "; " << track.substituted << " phones borrowed a nearby viseme class";
   if (track.timeline.dropped > 0) std::cout << "; " << track.timeline.dropped << " phones shorter than a frame dropped";
   std::cout << "\n";

@@ -3,6 +3,7 @@
 // (output, voice, rate, search parameters, expression), and the common run: timed phones in, an
 // animation file out.
 #include "animation.hpp"
+#include "cue_output.hpp"
 #include "rig_output.hpp"
 
 #include "fapcast/synthesis/speech_expression.hpp"
@@ -20,7 +21,7 @@ namespace fapcast::cli {
 
 struct SynthesisArgs {
   std::string voice;  // empty: the default voice
-  std::string output;
+  std::string output;  // empty only with cues.output: the cues alone
   int fps = 25;
   bool fps_given = false;
   SynthesisOptions options;  // the library's defaults unless an option says otherwise
@@ -31,6 +32,7 @@ struct SynthesisArgs {
   std::string expression_text;                     // as given: "joy:40[,surprise:20]"
   std::optional<ExpressionBlend> expression;  // parsed before `run` is called
   RigArgs rig;                     // --rig, --avatar, --vmc (spec/rigs.md)
+  CueArgs cues;                    // --cues-out, --cues-format, --extended-shapes (spec/mouth-cues.md)
   std::vector<TimedWord> words;  // the words spoken and their spans (say), for the TalkingHead JSON
 };
 
@@ -50,8 +52,9 @@ std::string synthesis_options_text(const SynthesisOptions& options);
 CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const std::string& description,
                                 SynthesisArgs& args, std::function<void()> run);
 
-// Synthesises `phones` (at `sample_rate`, audio of `audio_samples`) on the voice and writes
-// args.output (FAPs, or a .glb of the PCA frames); prints a one-line summary. `source` names the
+// Writes the mouth cues of `phones` when asked (args.cues), then synthesises them (at
+// `sample_rate`, audio of `audio_samples`) on the voice and writes args.output (FAPs, or a .glb of
+// the PCA frames) unless only cues were asked for; prints a one-line summary. `source` names the
 // phones in errors.
 void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> phones,
                         SampleRate sample_rate, std::int64_t audio_samples,

@@ -56,6 +56,7 @@ test_packages=(
   libgtest-dev          # GoogleTest suites
   libgmock-dev          # GTest::gmock, which the suites link
   libbenchmark-dev      # Google Benchmark programs (tests/bench, FAPCAST_BENCH=ON)
+  libexpat1-dev         # reads back the mouth cues' XML (tests/cues)
   python3               # the layer check (tools/check-layers.py, CTest layers.check)
   nodejs                # runs three.js's GLTFLoader on fapcast's .glb (tests/viewer)
   libjs-three           # three.js r111 and its GLTFLoader (tests/viewer)

@@ -50,6 +50,7 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
   auto* cmd = cli::add_synthesis_command(
       app, "animate", "Animate recorded speech from its WAV and phone alignment (TextGrid, .lab, .phn, .mlf, .par, Gentle .json)",
       args->synthesis, [args] {
+        args->synthesis.cues.sound_file = args->wav;
         const int sources = !args->align.empty() + !args->transcript.file.empty() + !args->transcript.text.empty();
         if (sources != 1)
           throw cli::UsageError("animate: give the speech's ALIGNMENT, or its --transcript FILE, or its --text TEXT "

@@ -39,6 +39,7 @@ const cli::Registration reg{"say", [](CLI::App& app) {
           wav_file.emplace(wav);
           wav_file->write(wav_bytes(speech.audio));
         }
+        args->synthesis.cues.sound_file = wav;
         args->synthesis.words = speech.words;
         cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate,
                                   static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");

@@ -117,9 +117,19 @@ TEST_F(RigCli, ArkitLiveLinkCsvMeetsTheAccuracyTargets) {
   EXPECT_TRUE(fs::exists(out("say.wav")));  // the sound beside it
 }
 
+// Also the mouth cues beside the rig (spec/mouth-cues.md): the same cues as --cues-out alone.
 TEST_F(RigCli, OculusVisemesAgreeWithThePhones) {
-  const auto r = run_command(say("--rig oculus -o " + q(out("oculus.json"))));
+  const auto r = run_command(say("--rig oculus -o " + q(out("oculus.json")) + " --cues-out " + q(out("both.json"))));
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(" mouth cues in " + out("both.json")), std::string::npos) << r.out;
+  const auto alone = run_command(fapcast("say " + q(kText) + " --cues-out " + q(out("alone.json"))));  // no voice
+  ASSERT_EQ(alone.exit_code, 0) << alone.err;
+  const nlohmann::json mouth = nlohmann::json::parse(slurp(out("both.json")));
+  EXPECT_EQ(mouth.at("mouthCues"), nlohmann::json::parse(slurp(out("alone.json"))).at("mouthCues"));
+  EXPECT_EQ(mouth.at("metadata").at("soundFile"), out("oculus.wav"));  // the WAV written beside the rig track
+  EXPECT_GT(mouth.at("mouthCues").size(), 20u);  // a sentence of some 40 phones
+  EXPECT_DOUBLE_EQ(mouth.at("mouthCues").back().at("end").get<double>(),
+                   mouth.at("metadata").at("duration").get<double>());
   const auto th = nlohmann::json::parse(slurp(out("oculus.json")));
   const auto& vs = th["anim"]["vs"];
   const std::size_t frames = th["anim"]["dt"].size();

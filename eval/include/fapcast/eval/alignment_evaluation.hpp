@@ -12,6 +12,8 @@
 #include "fapcast/eval/boundary_agreement.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace fapcast {
 
 // The `frame_s` frames over the reference's extent (centres at its start + (k + 0.5) frame_s) and
@@ -33,11 +35,14 @@ struct ReferenceRecording {
   std::string wav;         // paths
   std::string labels;      // read by read_alignment_file (the format found by its rules)
   std::string transcript;  // a UTF-8 text file
+  bool machine = false;    // the labels come from another aligner, not a person
 };
 
-// The references under `data_dir` (the repository's tests/data): EMU ae msajc x 7 (hand labels),
-// MOCHA-TIMIT fsew0_001 (hand labels), CMU ARCTIC slt a0009 (HTS forced alignment: a machine
-// reference, reported apart).
+// The references under `data_dir` (the repository's tests/data), hand-labelled: EMU ae msajc x 7,
+// MOCHA-TIMIT fsew0_001, Praat's examples (praatIO's mary, Parselmouth's north wind; praatIO's bobby has a label no
+// phone set reads, "PT");
+// machine-labelled, reported apart: CMU ARCTIC slt a0009 (HTS forced alignment) and MFA's
+// michael (Montreal Forced Aligner).
 std::vector<ReferenceRecording> reference_recordings(const std::string& data_dir);
 
 struct AlignmentScore {
@@ -49,8 +54,15 @@ struct AlignmentScore {
 };
 
 // Aligns (with the transcript) and recognises (without) every recording, and scores both against
-// its labels; one score per set in the order of `recordings`, then "all" when there are two sets
-// or more. Throws InputError for unreadable files; a recording the aligner refuses is an error.
+// its labels; one score per set in the order of `recordings`, then "all hand-labelled" when two
+// sets or more are. Throws InputError for unreadable files; a recording the aligner refuses is an error.
 std::vector<AlignmentScore> evaluate_alignment(std::span<const ReferenceRecording> recordings);
+
+// The scores as a text table (one row per set: recordings, seconds, boundaries and their share
+// within 10/20/25/50 ms, frames and their share in class), headed by `command` (what reproduces it).
+std::string format_alignment_table(std::span<const AlignmentScore> scores, const std::string& command);
+// The same as JSON: {"command", "sets": [{"set", "recordings", "seconds", "boundaries",
+// "within_ms": {"10", "20", "25", "50"}, "frames", "frames_in_class", "frame_share"}]}; shares 0..1.
+nlohmann::json alignment_json(std::span<const AlignmentScore> scores, const std::string& command);
 
 }  // namespace fapcast

@@ -18,17 +18,15 @@ using namespace fapcast;
 
 const cli::Registration reg{"eval align", [](CLI::App& app) {
   struct Args {
-    std::string data;
-    std::vector<std::string> recordings;
+    std::string data;                     // DATA
+    std::vector<std::string> recordings;  // --recording, repeatable
     std::string json;
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = cli::command_group(app, "eval", "Evaluate retargeting and synthesis by the paper's measures")
-                  ->add_subcommand("align",
-                                   "Score forced alignment (with the transcript: boundaries within 10/20/25/50 ms) "
-                                   "and recognition (without: frames in the right viseme class) against reference "
-                                   "labels of real recordings");
+  auto* cmd = cli::command_group(app, "eval", cli::kEvalGroupHelp)->add_subcommand("align",
+      "Score forced alignment (with the transcript: boundaries within 10/20/25/50 ms) and recognition (without: "
+      "frames in the right viseme class) against reference labels of real recordings");
   cmd->add_option("DATA", args->data, "The folder of the vendored references: the repository's tests/data")->required();
   cmd->add_option("--recording", args->recordings,
                   "Score only this recording (msajc003 ... msajc057, fsew0_001, a0009); repeatable");

@@ -113,6 +113,7 @@ std::vector<DecodedSegment> Decoder::recognise_words(std::span<const std::int16_
     cmd_ln_set_float_r(c, "-beam", 1e-40);
     cmd_ln_set_float_r(c, "-pbeam", 1e-40);
     cmd_ln_set_float_r(c, "-wbeam", 1e-25);
+    const int fwdflat = cmd_ln_boolean_r(c, "-fwdflat");
     cmd_ln_set_boolean_r(c, "-fwdflat", FALSE);
     const long maxhmmpf = cmd_ln_int32_r(c, "-maxhmmpf"), pl_window = cmd_ln_int32_r(c, "-pl_window");
     cmd_ln_set_int32_r(c, "-maxhmmpf", 1500);
@@ -124,6 +125,7 @@ std::vector<DecodedSegment> Decoder::recognise_words(std::span<const std::int16_
     cmd_ln_set_float_r(c, "-wbeam", impl_->settings.word_beam);
     cmd_ln_set_int32_r(c, "-maxhmmpf", maxhmmpf);
     cmd_ln_set_int32_r(c, "-pl_window", pl_window);
+    cmd_ln_set_boolean_r(c, "-fwdflat", fwdflat);
     if (set < 0) throw std::runtime_error("pocketsphinx: cannot read the language model " + lm);
     impl_->language_model = true;
   }

@@ -30,6 +30,10 @@ struct Registration {
 // registers first, found by the others.
 CLI::App* command_group(CLI::App& top, const std::string& name, const std::string& description);
 
+// The help line of the "eval" group (every `eval` command passes it).
+inline constexpr const char* kEvalGroupHelp =
+    "Evaluate retargeting and synthesis by the paper's measures, and the aligner against reference labels";
+
 // The registered commands in pipeline order (kCommandOrder). Throws std::logic_error naming a
 // registered command the order does not list, or one registered twice.
 std::vector<AddCommand> registered_commands();

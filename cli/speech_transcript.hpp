@@ -1,6 +1,7 @@
 #pragma once
-// What `align` and `animate` share for recorded speech with its transcript: the --transcript FILE
-// and --text TEXT options, and the forced alignment of the WAV with them (spec/recognise.md).
+// What `align` and `animate` share for recorded speech: the --transcript FILE and --text TEXT
+// options, and the forced alignment of the WAV with them, or its recognition without them
+// (spec/recognise.md).
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -17,9 +18,10 @@ struct TranscriptArgs {
 
 void add_transcript_options(CLI::App& command, TranscriptArgs& args);
 
-// Aligns the WAV at `wav` with the transcript of `args` (exactly one of its two must be given:
-// else UsageError); notes and warnings (downmixed channels, low-confidence words) on standard
-// error unless `quiet`.
+// Aligns the WAV at `wav` with the transcript of `args` (at most one of its two may be given:
+// else UsageError), or recognises what it says when neither is; notes and warnings (downmixed
+// channels, the words recognised and their confidence, low-confidence words) on standard error
+// unless `quiet`.
 SpeechAlignment align_recording(const std::string& wav, const TranscriptArgs& args, bool quiet);
 
 }  // namespace fapcast::cli

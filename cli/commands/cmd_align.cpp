@@ -1,5 +1,6 @@
-// `fapcast align SPEECH.wav --transcript FILE | --text TEXT -o OUT.TextGrid [-q]`: the phones and
-// words of recorded speech found by forced alignment, as a TextGrid (spec/recognise.md).
+// `fapcast align SPEECH.wav [--transcript FILE | --text TEXT] -o OUT.TextGrid [-q]`: the phones and
+// words of recorded speech found by forced alignment to its transcript, or by recognition without
+// one, as a TextGrid (spec/recognise.md).
 // Argument parsing only.
 #include "command.hpp"
 #include "file_extension.hpp"
@@ -23,7 +24,7 @@ const cli::Registration reg{"align", [](CLI::App& app) {
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = app.add_subcommand("align", "Find the phones and words of recorded speech from its transcript (a TextGrid)");
+  auto* cmd = app.add_subcommand("align", "Find the phones and words of recorded speech, from its transcript or by recognition (a TextGrid)");
   cmd->add_option("SPEECH", args->wav, "The speech (WAV, any rate 8-192 kHz; two or more channels are downmixed)")
       ->required();
   cli::add_transcript_options(*cmd, args->transcript);

@@ -1,7 +1,7 @@
 // `fapcast animate SPEECH.wav ALIGNMENT -o OUT.fap [--voice V] [--tier T] [--phone-set S] ...`: animates
 // recorded speech from its phone alignment (spec/synthesis.md); or, with `--transcript FILE` or
-// `--text TEXT` instead of the alignment, from the phones the forced aligner finds in it
-// (spec/recognise.md). Argument parsing only.
+// `--text TEXT` instead of the alignment, from the phones the forced aligner finds in it, or with
+// neither, from the phones of the words recognised in it (spec/recognise.md). Argument parsing only.
 #include "command.hpp"
 #include "file_extension.hpp"
 #include "speech_transcript.hpp"
@@ -52,11 +52,12 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
       args->synthesis, [args] {
         args->synthesis.cues.sound_file = args->wav;
         const int sources = !args->align.empty() + !args->transcript.file.empty() + !args->transcript.text.empty();
-        if (sources != 1)
+        if (sources > 1)
           throw cli::UsageError("animate: give the speech's ALIGNMENT, or its --transcript FILE, or its --text TEXT "
-                                "(exactly one)");
+                                "(at most one; with none, what it says is recognised)");
         if (!args->align.empty() && !args->alignment_out.empty())
-          throw cli::UsageError("animate: --alignment-out writes the alignment found from --transcript or --text");
+          throw cli::UsageError("animate: --alignment-out writes the alignment found (from --transcript, --text or "
+                                "recognition), not an ALIGNMENT given");
         if (args->align.empty()) {
           if (!args->tier.empty() || !args->phone_set.empty())
             throw cli::UsageError("animate: --tier and --phone-set read an ALIGNMENT file");
@@ -96,10 +97,11 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
       ->required();
   cmd->add_option("ALIGNMENT", args->align,
                   "Its phone alignment: Praat TextGrid (text, binary, chronological), HTK .lab/.mlf, ESPS/Festival .lab, "
-                  "TIMIT .phn, BAS .par, Gentle .json (spec/corpus.md); or none, with --transcript or --text");
+                  "TIMIT .phn, BAS .par, Gentle .json (spec/corpus.md); or none: found with --transcript or --text, "
+                  "else by recognising what the speech says");
   cli::add_transcript_options(*cmd, args->transcript);
   cmd->add_option("--alignment-out", args->alignment_out,
-                  "With --transcript or --text: also write the alignment found (phones and words tiers) as a TextGrid");
+                  "Without ALIGNMENT: also write the alignment found (phones and words tiers) as a TextGrid");
   cmd->add_option("--tier", args->tier, "The alignment's phone tier (default: found by name, then by its labels)");
   cmd->add_option("--phone-set", args->phone_set,
                   "The labels' symbol set: arpabet, timit, ipa, sampa, emu-ae, mocha (default: the set that reads them)");

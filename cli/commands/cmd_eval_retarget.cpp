@@ -20,7 +20,7 @@ const fapcast::cli::Registration reg{"eval retarget", [](CLI::App& app) {
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = fapcast::cli::command_group(app, "eval", "Evaluate retargeting and synthesis by the paper's measures")
+  auto* cmd = fapcast::cli::command_group(app, "eval", fapcast::cli::kEvalGroupHelp)
                   ->add_subcommand("retarget",
                                    "Lip height, width and protrusion of the source markers against the voice's "
                                    "retargeted target face over a corpus: mean normalised error and correlation");

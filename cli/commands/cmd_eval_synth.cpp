@@ -46,7 +46,7 @@ const cli::Registration reg{"eval synth", [](CLI::App& app) {
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = cli::command_group(app, "eval", "Evaluate retargeting and synthesis by the paper's measures")
+  auto* cmd = cli::command_group(app, "eval", cli::kEvalGroupHelp)
                   ->add_subcommand("synth",
                                    "Held-out SYNTHETIC sentences recorded by the voice's reference actor, "
                                    "synthesised from their own timing by the variable-length search, diviseme "

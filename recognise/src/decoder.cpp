@@ -48,6 +48,7 @@ struct Decoder::Impl {
   ps_decoder_t* ps = nullptr;
   double nats_per_unit = 0;  // one unit of a segment score (log base 1.0001, shifted 10 bits)
   std::int64_t shift = 160;  // samples per frame
+  bool language_model = false;  // the "words" search (recognise_words) exists
 
   ~Impl() {
     if (ps) ps_free(ps);
@@ -102,6 +103,35 @@ Decoder::Decoder(const DecoderSettings& settings) : impl_(std::make_unique<Impl>
   impl_->ps = ps_init(impl_->config);
   if (!impl_->ps) throw std::runtime_error("pocketsphinx: cannot open the model in " + hmm);
   impl_->nats_per_unit = std::log(logmath_get_base(ps_get_logmath(impl_->ps))) * (1 << 10);
+}
+
+std::vector<DecodedSegment> Decoder::recognise_words(std::span<const std::int16_t> samples) {
+  if (!impl_->language_model) {
+    // a search reads the configuration when it is created: the recognition's settings are set
+    // for the 3-gram search alone, then the grammar searches' restored
+    cmd_ln_t* c = impl_->config;
+    cmd_ln_set_float_r(c, "-beam", 1e-40);
+    cmd_ln_set_float_r(c, "-pbeam", 1e-40);
+    cmd_ln_set_float_r(c, "-wbeam", 1e-25);
+    const int fwdflat = cmd_ln_boolean_r(c, "-fwdflat");
+    cmd_ln_set_boolean_r(c, "-fwdflat", FALSE);
+    const long maxhmmpf = cmd_ln_int32_r(c, "-maxhmmpf"), pl_window = cmd_ln_int32_r(c, "-pl_window");
+    cmd_ln_set_int32_r(c, "-maxhmmpf", 1500);
+    cmd_ln_set_int32_r(c, "-pl_window", 10);
+    const std::string lm = model_file("en-us.lm.bin");
+    const int set = ps_set_lm_file(impl_->ps, "words", lm.c_str());
+    cmd_ln_set_float_r(c, "-beam", impl_->settings.beam);
+    cmd_ln_set_float_r(c, "-pbeam", impl_->settings.phone_beam);
+    cmd_ln_set_float_r(c, "-wbeam", impl_->settings.word_beam);
+    cmd_ln_set_int32_r(c, "-maxhmmpf", maxhmmpf);
+    cmd_ln_set_int32_r(c, "-pl_window", pl_window);
+    cmd_ln_set_boolean_r(c, "-fwdflat", fwdflat);
+    if (set < 0) throw std::runtime_error("pocketsphinx: cannot read the language model " + lm);
+    impl_->language_model = true;
+  }
+  ps_set_search(impl_->ps, "words");
+  impl_->run(samples);
+  return impl_->best_path().value_or(std::vector<DecodedSegment>{});
 }
 
 Decoder::~Decoder() = default;

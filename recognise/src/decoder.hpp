@@ -81,6 +81,12 @@ class Decoder {
   std::optional<std::vector<DecodedSegment>> decode(const Grammar& grammar,
                                                     std::span<const std::int16_t> samples);
 
+  // The words of `samples` (16 kHz mono) by recognition with the model's US English word 3-gram
+  // (en-us.lm.bin, loaded on first use) and fast beams: 1e-40 / 1e-40 / 1e-25, no flat-lexicon
+  // pass, at most 1500 HMMs per frame, phone lookahead 10 frames (spec/recognise.md,
+  // "Recognition"). Words, silences and fillers in order; empty when nothing was found.
+  std::vector<DecodedSegment> recognise_words(std::span<const std::int16_t> samples);
+
   // The 16 kHz sample where frame `frame`'s segment begins: halfway between the centres of
   // frames frame-1 and frame (each frame's 410-sample window starts frame * shift samples in).
   std::int64_t frame_start_sample(int frame) const;

@@ -385,4 +385,55 @@ SpeechAlignment SpeechAligner::align(const Audio& speech, const Transcript& tran
   return a;
 }
 
+SpeechAlignment SpeechAligner::recognise(const Audio& speech, const std::string& source) {
+  check_length(speech, source);
+  const Audio s16 = resample_mono(speech, SampleRate{kDecoderSampleRateHz});
+  const std::int64_t rate = speech.sample_rate.hz, samples = speech.instants();
+  Decoder& wd = impl_->word_decoder();
+  const PathReader wr{wd, rate, samples};
+  const std::vector<DecodedSegment> heard = wd.recognise_words(s16.samples);
+  // the words heard, as a transcript of dictionary keys ("was(2)" is the word "was")
+  Transcript t;
+  std::vector<double> scores;  // the recogniser's, per word
+  for (const auto& s : heard) {
+    if (is_silence(s.word) || is_noise(s.word)) continue;
+    scores.push_back(s.score_per_frame);
+    const std::string word = s.word.substr(0, s.word.find('('));
+    if (!t.text.empty()) t.text += ' ';
+    t.words.push_back({word, word, t.text.size()});
+    t.text += word;
+  }
+  if (t.words.empty())
+    throw InputError({source, std::nullopt, std::nullopt}, "no-speech",
+                     "no word was heard in the recording (silence or noise?)");
+  const auto edges = word_edges(heard, wr);
+  const std::vector<WordEntry> entries = impl_->entries(t);
+  Decoder& pd = impl_->phone_decoder();
+  const PathReader reader{pd, rate, samples};
+  SpeechAlignment a;
+  if (const auto path = pd.decode(phone_grammar(entries, false), s16.samples)) {
+    a = reader.read(*path, t);
+    snap_word_edges(a, edges, rate / 200);
+  } else {  // no phone path through the words heard: each word's first pronunciation spread over it
+    a.sample_rate = speech.sample_rate;
+    a.samples = samples;
+    std::int64_t at = 0;
+    for (std::size_t w = 0; w < edges.size(); ++w) {
+      const auto [start, end] = edges[w];
+      a.words.push_back({t.words[w].text, 0});
+      if (start > at) a.segments.push_back({SpeechSegmentKind::silence, Phone::SIL, at, start});
+      const auto& v = entries[w].variants.front();
+      const auto n = static_cast<std::int64_t>(v.size());
+      for (std::int64_t k = 0; k < n; ++k)
+        a.segments.push_back({SpeechSegmentKind::phone, v[static_cast<std::size_t>(k)], start + (end - start) * k / n,
+                              start + (end - start) * (k + 1) / n, static_cast<int>(w), scores[w]});
+      at = end;
+    }
+    if (at < samples) a.segments.push_back({SpeechSegmentKind::silence, Phone::SIL, at, samples});
+  }
+  for (auto& w : a.words) w.byte_offset = 0;
+  finish_words(a);
+  return a;
+}
+
 }  // namespace fapcast

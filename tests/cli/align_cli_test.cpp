@@ -8,6 +8,7 @@
 #include "fapcast/corpus/alignment_file.hpp"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <string>
@@ -51,8 +52,54 @@ TEST(AlignCli, ATranscriptTheRecordingDoesNotSayIsRefused) {
   fs::remove_all(dir);
 }
 
+// Without a transcript the words are recognised: MOCHA fsew0_001 says "This was easy for us.";
+// the words heard and their confidence are noted on standard error, the TextGrid has both tiers.
+TEST(AlignCli, WithoutATranscriptTheWordsAreRecognised) {
+  const std::string dir = make_temp_dir("align-cli");
+  const std::string wav = std::string(FAPCAST_TEST_DATA) + "/mocha/fsew0_001.wav", grid = dir + "/fsew0_001.TextGrid";
+  const auto r = run_command(fapcast("align " + wav + " -o " + grid));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("fsew0_001.wav: no transcript: recognised "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" per frame, "), std::string::npos) << r.err;
+  AlignmentFileOptions options;
+  options.sample_rate = read_wav(wav).sample_rate;
+  const AlignmentFile found = read_alignment_file(read_file(grid), grid, options);
+  EXPECT_EQ(found.tier, "phones");
+  std::string said;
+  for (const Interval& i : found.alignment.find("words")->intervals)
+    if (!i.label.empty()) said += (said.empty() ? "" : " ") + i.label;
+  EXPECT_NE(said.find("was easy"), std::string::npos) << said;
+  EXPECT_NE(r.err.find(said), std::string::npos) << r.err;
+  fs::remove_all(dir);
+}
+
+// `eval align` on one reference recording: the table on standard output, the same figures as JSON.
+TEST(AlignCli, EvalAlignScoresOneRecordingWithAndWithoutItsTranscript) {
+  const std::string dir = make_temp_dir("align-cli");
+  const auto r = run_command(fapcast("eval align " + std::string(FAPCAST_TEST_DATA) + " --recording fsew0_001 -q --json-out " +
+                                     dir + "/align.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("within 10 / 20 / 25 / 50 ms"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("MOCHA-TIMIT"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("EMU ae"), std::string::npos) << r.out;
+  const auto json = nlohmann::json::parse(read_file(dir + "/align.json"));
+  EXPECT_NE(json.at("command").get<std::string>().find("--recording fsew0_001"), std::string::npos);
+  ASSERT_EQ(json.at("sets").size(), 1u);  // one set: no "all" row
+  const auto& set = json.at("sets")[0];
+  EXPECT_EQ(set.at("set"), "MOCHA-TIMIT");
+  EXPECT_EQ(set.at("recordings"), 1);
+  EXPECT_GE(set.at("boundaries").get<int>(), 12);
+  const double w10 = set.at("within_ms").at("10"), w25 = set.at("within_ms").at("25"), w50 = set.at("within_ms").at("50");
+  EXPECT_LE(w10, w25);
+  EXPECT_LE(w25, w50);
+  EXPECT_GE(w25, 0.70);
+  EXPECT_GE(set.at("frames").get<int>(), 200);  // 2.2 s at 10 ms
+  EXPECT_GE(set.at("frame_share").get<double>(), 0.70);
+  EXPECT_EQ(run_command(fapcast("eval align " + std::string(FAPCAST_TEST_DATA) + " --recording nope")).exit_code, 2);
+  fs::remove_all(dir);
+}
+
 TEST(AlignCli, MistakesExitTwo) {
-  EXPECT_EQ(run_command(fapcast("align a.wav -o a.TextGrid")).exit_code, 2);  // no transcript
   EXPECT_EQ(run_command(fapcast("align a.wav --text hi --transcript a.txt -o a.TextGrid")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("align a.wav --text hi -o a.lab")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("align a.wav --text hi")).exit_code, 2);  // no -o

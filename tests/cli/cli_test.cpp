@@ -55,7 +55,7 @@ TEST(Cli, HelpListsTheCommandsInPipelineOrder) {
             (std::vector<std::string>{"script", "record-reference"}));
   EXPECT_EQ(listed_commands(run_command(fapcast("voice --help")).out),
             (std::vector<std::string>{"build", "info", "default", "adapt"}));
-  EXPECT_EQ(listed_commands(run_command(fapcast("eval --help")).out), (std::vector<std::string>{"retarget", "synth"}));
+  EXPECT_EQ(listed_commands(run_command(fapcast("eval --help")).out), (std::vector<std::string>{"retarget", "synth", "align"}));
 }
 
 TEST(Cli, VersionPrintsTheProjectVersion) {

@@ -252,6 +252,18 @@ void AnimateFromTranscript() {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("msajc003.wav: no-speech: "), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out("emu-wrong.fap")));
+  // No transcript at all: the words are recognised, then aligned; the animation spans the recording
+  // and the words heard are noted with their confidence.
+  r = run_command(fapcast("animate " + emu + ".wav --voice " + voice() + " -o " + out("emu-heard.fap") +
+                          " --alignment-out " + out("emu-heard.TextGrid")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("msajc003.wav: no transcript: recognised "), std::string::npos) << r.err;
+  EXPECT_EQ(static_cast<std::int64_t>(read_track_file(out("emu-heard.fap")).frames.size()), frames_for(audio, 25));
+  const AlignmentFile heard = read_alignment_file(read_file(out("emu-heard.TextGrid")), "emu-heard.TextGrid", options);
+  std::string heard_words;
+  for (const Interval& i : heard.alignment.find("words")->intervals)
+    if (!i.label.empty()) heard_words += (heard_words.empty() ? "" : " ") + i.label;
+  EXPECT_NE(heard_words.find("considered beautiful"), std::string::npos) << heard_words;
 }
 
 void BadInputExitsOneAndNamesIt() {
@@ -530,7 +542,8 @@ TEST(SayCliUsage, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 0")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --fps 500")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --duration-weight -1")).exit_code, 2);
-  EXPECT_EQ(run_command(fapcast("animate a.wav -o x.fap")).exit_code, 2);  // no alignment
+  // no alignment and no transcript: what the speech says is recognised (a WAV that is not there: exit 1)
+  EXPECT_EQ(run_command(fapcast("animate a.wav -o x.fap")).exit_code, 1);
   // The phones come from one place: an alignment, a transcript file or a text.
   EXPECT_EQ(run_command(fapcast("animate a.wav a.TextGrid --transcript a.txt -o x.fap")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("animate a.wav --transcript a.txt --text \"hi\" -o x.fap")).exit_code, 2);

@@ -14,6 +14,7 @@
 #include "fapcast/core/wav_file.hpp"
 #include "fapcast/corpus/alignment_file.hpp"
 #include "fapcast/corpus/alignment_phones.hpp"
+#include "fapcast/eval/alignment_evaluation.hpp"
 #include "fapcast/eval/boundary_agreement.hpp"
 #include "fapcast/recognise/speech_aligner.hpp"
 
@@ -114,6 +115,32 @@ TEST(SpeechAlignment, AnotherUtterancesTranscriptIsRefused) {
     EXPECT_TRUE(e.rule() == "transcript-mismatch" || e.rule() == "no-speech" || e.rule() == "low-confidence")
         << e.what();
     EXPECT_EQ(e.where().source, "msajc003.wav");
+  }
+}
+
+// Recognition without the transcript (the en-us word 3-gram, then the forced alignment of the
+// words heard): scored by the share of 10 ms frames in the reference phone's viseme class.
+TEST(SpeechAlignment, RecognisedWithoutTranscriptFramesInTheRightVisemeClass) {
+  SpeechAligner aligner;
+  const Audio audio = read_wav(kEmu + "msajc003.wav");
+  const SpeechAlignment heard = aligner.recognise(audio, "msajc003.wav");
+  const FrameAgreement f =
+      viseme_frame_agreement(reference_phones(kEmu + "msajc003.lab", audio), timed_phones(heard), audio.sample_rate);
+  std::string words;
+  for (const SpeechWord& w : heard.words) words += w.text + " ";
+  std::printf("msajc003 recognised: %s(%zu frames, %.1f %% in class)\n", words.c_str(), f.frames, 100 * f.share());
+  ASSERT_GE(heard.words.size(), 4u);  // amongst her friends she was considered beautiful
+  EXPECT_GE(f.frames, 200u);
+  EXPECT_GE(f.share(), 0.65);
+  // contiguous segments over the whole recording, each word inside it
+  ASSERT_FALSE(heard.segments.empty());
+  EXPECT_EQ(heard.segments.front().start_sample, 0);
+  EXPECT_EQ(heard.segments.back().end_sample, audio.instants());
+  for (std::size_t i = 1; i < heard.segments.size(); ++i)
+    EXPECT_EQ(heard.segments[i - 1].end_sample, heard.segments[i].start_sample) << i;
+  for (const SpeechWord& w : heard.words) {
+    EXPECT_LT(w.start_sample, w.end_sample) << w.text;
+    EXPECT_EQ(w.byte_offset, 0u);
   }
 }
 

@@ -4,9 +4,11 @@
 // after any word: spec/recognise.md, "A recording that does not say its transcript").
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "fapcast/core/file_io.hpp"
@@ -82,6 +84,28 @@ TEST(BadRecordings, EachIsRefusedWithItsRuleAndMessage) {
     } catch (const InputError& e) {
       EXPECT_EQ(e.rule(), b.rule);
       EXPECT_EQ(std::string(e.what()), b.message);
+    }
+  }
+}
+
+// Without a transcript: silence, noise and a too-short recording are refused too (recognition
+// hears no word in the first two).
+TEST(BadRecordings, RecognitionRefusesSilenceNoiseAndTooShort) {
+  SpeechAligner aligner;
+  const std::vector<BadRecording> all = bad_recordings();
+  const std::vector<std::pair<std::string, std::string>> expected{
+      {"silence", "silence.wav: no-speech: no word was heard in the recording (silence or noise?)"},
+      {"noise", "noise.wav: no-speech: no word was heard in the recording (silence or noise?)"},
+      {"too-short", "too-short.wav: speech-empty: the recording is shorter than 0.1 s"}};
+  for (const auto& [name, message] : expected) {
+    SCOPED_TRACE(name);
+    const auto b = std::find_if(all.begin(), all.end(), [&](const BadRecording& r) { return r.name == name; });
+    ASSERT_NE(b, all.end());
+    try {
+      (void)aligner.recognise(b->audio, name + ".wav");
+      ADD_FAILURE() << "recognised";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), message);
     }
   }
 }

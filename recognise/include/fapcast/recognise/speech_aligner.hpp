@@ -1,6 +1,7 @@
 #pragma once
-// Forced alignment: a recording and its transcript -> timed phones and words, with pocketsphinx
-// and its en-us model (Debian pocketsphinx-en-us). spec/recognise.md says how and how well.
+// Forced alignment (a recording and its transcript -> timed phones and words) and recognition (a
+// recording alone -> the words heard, then aligned the same way), with pocketsphinx and its en-us
+// model (Debian pocketsphinx-en-us). spec/recognise.md says how and how well.
 #include <memory>
 #include <string>
 
@@ -38,6 +39,13 @@ class SpeechAligner {
   //  - "low-confidence" when every word was placed but the recording matches its phones poorly
   //    overall (a wrong sample rate in the WAV header, another language).
   SpeechAlignment align(const Audio& speech, const Transcript& transcript, const std::string& source);
+
+  // Recognises what `speech` says: the words the en-us word 3-gram finds (fast beams), then their
+  // phones by the forced alignment above, each word's edges kept where the recogniser put them.
+  // Words are dictionary words (byte_offset 0), each with its score and low_confidence mark.
+  // Throws InputError "speech-empty" and "sample-rate" as align does, and "no-speech" when no
+  // word is heard (silence, noise).
+  SpeechAlignment recognise(const Audio& speech, const std::string& source);
 
  private:
   struct Impl;

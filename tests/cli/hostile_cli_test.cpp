@@ -125,5 +125,55 @@ TEST(HostileCli, CorpusScriptRefusesAnEmptyLexicon) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/script.tsv"));
 }
 
+
+// Attack 6 for every command that writes a file: each did all its work (read, coded, built a
+// voice, synthesized speech) before it learnt that its output could not be written. Each now
+// fails first, naming the output; its inputs do not exist, so an error about them would show
+// that the command began its work first.
+struct UnwritableOutput {
+  const char* family;
+  std::string args;    // the command line after `fapcast`
+  std::string output;  // the path the message must name
+};
+
+std::string unwritable_name(const testing::TestParamInfo<UnwritableOutput>& info) { return info.param.family; }
+
+class HostileOutput : public testing::TestWithParam<UnwritableOutput> {};
+
+TEST_P(HostileOutput, AnUnwritableOutputFailsBeforeTheWork) {
+  const auto& p = GetParam();
+  const auto r = run_command(fapcast(p.args));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_TRUE(has(r.err, p.output)) << r.err;
+  EXPECT_FALSE(has(r.err, "/nonexistent/in")) << "it read its input first: " << r.err;
+}
+
+const std::string kNo = "/nonexistent/dir/";
+const std::string kIn = "/nonexistent/in";
+INSTANTIATE_TEST_SUITE_P(
+    HostileCli, HostileOutput,
+    testing::Values(
+        UnwritableOutput{"encode", "encode " + kIn + ".fap -o " + kNo + "x.fba", kNo + "x.fba"},
+        UnwritableOutput{"decode", "decode " + kIn + ".fba -o " + kNo + "x.fap", kNo + "x.fap"},
+        UnwritableOutput{"export", "export " + kIn + ".fap -o " + kNo + "x.bvh", kNo + "x.bvh"},
+        UnwritableOutput{"fap_convert", "fap convert " + kIn + ".fap -o " + kNo + "x.fap", kNo + "x.fap"},
+        UnwritableOutput{"voice_build", "voice build " + kIn + " -o " + kNo + "x.fapv", kNo + "x.fapv"},
+        UnwritableOutput{"voice_adapt",
+                         "voice adapt " + kIn + ".fapv " + kIn + "g.obj " + kIn + "s.obj -o " + kNo + "x.fapv",
+                         kNo + "x.fapv"},
+        UnwritableOutput{"corpus_script",
+                         "corpus script --cmudict " + kIn + ".out --word-counts " + kIn + ".tsv -o " + kNo + "x.tsv",
+                         kNo + "x.tsv"},
+        UnwritableOutput{"say", "say hello --voice " + kIn + ".fapv -o " + kNo + "x.fap", kNo + "x.fap"},
+        UnwritableOutput{"say_wav",
+                         "say hello --voice " + kIn + ".fapv -o " + testing::TempDir() + "hostile_say.glb --wav-out " +
+                             kNo + "x.wav",
+                         kNo + "x.wav"},
+        UnwritableOutput{"animate", "animate " + kIn + ".wav " + kIn + ".lab -o " + kNo + "x.glb", kNo + "x.glb"},
+        UnwritableOutput{"rig", "animate " + kIn + ".wav " + kIn + ".lab --rig arkit -o " + kNo + "x.csv",
+                         kNo + "x.csv"},
+        UnwritableOutput{"expressions", "expressions -o " + kNo + "x.glb", kNo + "x.glb"}),
+    unwritable_name);
+
 }  // namespace
 }  // namespace fapcast::test

@@ -24,13 +24,27 @@ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_COMPILER=clang++ -DFAPCAST_FUZZ=ON \
   -DFAPCAST_TESTS=OFF -DFAPCAST_WERROR=ON >/dev/null
 
+# voice_structured_fuzz also starts from a real-size voice: the default voice (`fapcast say` builds
+# it on first use) when it exists, copied to build/fuzz/real-voice; inputs up to 16 MiB.
+default_voice=${FAPCAST_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/fapcast}/reference-seed1.fapv
+
 # run_one NAME: runs it for $seconds and prints "NAME<TAB>seconds<TAB>execs<TAB>cov<TAB>ft<TAB>corpus<TAB>findings".
 run_one() {
   local target=$1 scratch=build/fuzz/tests/fuzz-scratch/$1 findings=build/fuzz/findings/$1 log rc=0
+  local extra=()
   mkdir -p "$scratch" "$findings"
+  if [ "$target" = voice_structured_fuzz ]; then
+    extra=(-max_len=16777216 -rss_limit_mb=4096)
+    if [ -f "$default_voice" ]; then
+      mkdir -p build/fuzz/real-voice
+      cp "$default_voice" build/fuzz/real-voice/
+      extra+=(build/fuzz/real-voice)
+    fi
+  fi
   log=build/fuzz/findings/$target.log
   nice -n 19 "build/fuzz/tests/$target" -max_total_time="$seconds" -seed=1 -rss_limit_mb=2048 -timeout=10 \
-    -print_final_stats=1 -artifact_prefix="$findings/" "$scratch" "tests/fuzz/corpus/$target" >"$log" 2>&1 || rc=$?
+    -print_final_stats=1 -artifact_prefix="$findings/" "${extra[@]:0:2}" "$scratch" "tests/fuzz/corpus/$target" \
+    "${extra[@]:2}" >"$log" 2>&1 || rc=$?
   local execs cov ft corpus found
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | cut -d' ' -f2)

@@ -7,7 +7,7 @@
 // tools/run-fuzz.sh adds the reference voice (about 15 MB) when the default voice exists.
 // Property: any bytes are refused with an InputError or give a voice whose parts can all be read.
 #include "fapcast/core/input_error.hpp"
-#include "fapcast/voice/voice.hpp"
+#include "fuzz/support/read_voice.hpp"
 #include "fapcast/voice/voice_file.hpp"
 
 #include <cstddef>
@@ -85,17 +85,6 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const auto aligned = aligned_copy(data, size);
-  try {
-    const Voice voice = Voice::over_bytes(as_bytes(aligned, size), "<fuzz>");
-    double sum = voice.pca_mean().sum() + voice.pca_components().sum() + voice.pca_variances().sum() +
-                 voice.frame_coefficients().sum();
-    for (const VoiceFeaturePoint& p : voice.feature_points()) sum += p.neutral_m.sum() + p.vertex;
-    for (const VoiceRigidMarker& r : voice.rigid_markers()) sum += r.source_reference_m.sum();
-    for (std::size_t j = 0; j < voice.graph().size(); ++j) sum += voice.graph().state(static_cast<StateId>(j)).frames.count;
-    if (const auto maps = voice.face_maps()) sum += maps->sum();
-    (void)sum;
-  } catch (const InputError&) {
-  }
+  fapcast::fuzz::read_every_part_of_voice(data, size);
   return 0;
 }

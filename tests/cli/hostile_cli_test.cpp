@@ -76,10 +76,17 @@ TEST(HostileCli, FapInfoReportsACorruptFbaAsAnFba) {
 // Attack 8: output that never reached a full standard output was a success.
 TEST(HostileCli, AFullStandardOutputIsAFailedRun) {
   if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
-  // In a subshell: run_command's own redirection of standard output would otherwise win.
-  const auto r = run_command("(" + fapcast("fap info " + kJoy) + " > /dev/full)");
-  EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_TRUE(has(r.err, "standard output")) << r.err;
+  // The three commands of the issue; the voice is the tiny one of the voice fuzz seeds.
+  const std::string lexicon = kData + "/lexicon/";
+  for (const std::string& args :
+       {"fap info " + kJoy, "voice info " + kData + "/../fuzz/corpus/voice_open_fuzz/tiny-with-fmap.fapv",
+        "corpus script --cmudict " + lexicon + "mini-cmudict.out --word-counts " + lexicon +
+            "mini-word-counts.tsv --common 2 --syllable-words 3"}) {
+    // In a subshell: run_command's own redirection of standard output would otherwise win.
+    const auto r = run_command("(" + fapcast(args) + " > /dev/full)");
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.err;
+    EXPECT_TRUE(has(r.err, "standard output")) << args << ": " << r.err;
+  }
 }
 
 // Attack 12: a URL that is not udp://HOST:PORT is a usage mistake (2), on both ends.

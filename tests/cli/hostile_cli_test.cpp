@@ -133,6 +133,17 @@ TEST(HostileCli, CorpusScriptRefusesAnEmptyLexicon) {
 }
 
 
+// Attack 7: `render` took a .glb whose key times imply 1.31 MHz (the glb fuzz input) with exit 0.
+TEST(HostileCli, RenderRefusesTheFuzzersGlb) {
+  const std::string glb = kData + "/gltf/fuzz-regressions/glb.001.gltf-frame-rate.glb";
+  const std::string out = make_temp_dir("hostile_cli") + "/frames";
+  const auto r = run_command(fapcast("render " + glb + " -o " + out));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(has(r.err, glb)) << r.err;
+  EXPECT_TRUE(has(r.err, "gltf-frame-rate")) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 // Attack 6 for every command that writes a file: each did all its work (read, coded, built a
 // voice, synthesized speech) before it learnt that its output could not be written. Each now
 // fails first, naming the output; its inputs do not exist, so an error about them would show

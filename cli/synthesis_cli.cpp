@@ -1,6 +1,7 @@
 #include "synthesis_cli.hpp"
 
 #include "command.hpp"
+#include "output_check.hpp"
 #include "fapcast/render/mesh_export.hpp"
 #include "fap_output.hpp"
 #include "file_extension.hpp"
@@ -118,6 +119,7 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
       throw UsageError(name + ": --obj-frames-out needs a .glb output");
     if (!args.player.empty() && lower_extension(args.output) != ".fap")
       throw UsageError(name + ": --player applies to a .fap output");
+    check_output_writable(args.output);  // before the voice is read and the speech synthesized
     run();
   });
   return cmd;

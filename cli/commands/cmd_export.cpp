@@ -2,6 +2,7 @@
 // JSON) as a BVH skeleton animation (spec/bvh.md) or as JSON for web players (spec/json.md).
 // The output format follows OUT's extension. Argument parsing only; the codec does the work.
 #include "command.hpp"
+#include "output_check.hpp"
 
 #include "fapcast/codec/bvh_export.hpp"
 #include "fapcast/codec/bvh_text.hpp"
@@ -55,6 +56,7 @@ const cli::Registration reg{"export", [](CLI::App& app) {
       throw cli::UsageError("export: output '" + *out + "' must end in .bvh or .json");
     if (ext == ".bvh" && rate_opt->count() > 0)
       throw cli::UsageError("export: --sample-rate applies to .json output only");
+    cli::check_output_writable(*out);
     FapJsonRead track = read_track(*in);
     std::string bytes;
     if (ext == ".bvh") {

@@ -2,6 +2,7 @@
 // inspect and convert .fap text files (spec/fap-text.md). Argument parsing and printing only;
 // reading, writing and statistics are codec functions.
 #include "command.hpp"
+#include "output_check.hpp"
 #include "fap_output.hpp"
 
 #include "fapcast/codec/fap_stats.hpp"
@@ -143,6 +144,7 @@ void info(const std::string& path, bool json) {
 }
 
 void convert(const std::string& in, const std::string& out, const std::string& dialect, const std::string& player) {
+  cli::check_output_writable(out);
   const FapTextRead r = read_fap_file(in);
   const auto d = dialect == "69" ? FapTextDialect::kMask69 : FapTextDialect::kStrict;
   const FapTextWriteOptions options = cli::fap_write_options(player, d);

@@ -3,6 +3,7 @@
 // stream (spec/fba.md). Argument parsing only; coding is encode_fba / decode_fba.
 #include "command.hpp"
 #include "fap_output.hpp"
+#include "output_check.hpp"
 
 #include "fapcast/codec/fap_text.hpp"
 #include "fapcast/core/file_io.hpp"
@@ -35,6 +36,7 @@ struct DecodeArgs {
 FbaProfile profile_of(const std::string& name) { return name == "fapcast" ? FbaProfile::kFapcast : FbaProfile::kStandard; }
 
 void encode(const EncodeArgs& a) {
+  cli::check_output_writable(a.out);
   const FapTextRead r = read_fap_text(read_file(a.in), a.in);
   for (const auto& w : r.info.warnings) std::cerr << "fapcast: warning: " << w << "\n";
   const FbaProfile profile = profile_of(a.profile);
@@ -64,6 +66,7 @@ void encode(const EncodeArgs& a) {
 }
 
 void decode(const DecodeArgs& a) {
+  cli::check_output_writable(a.out);
   const std::string bytes = read_file(a.in);
   FbaDecodeOptions options;
   options.standard_only = a.profile == "standard";

@@ -6,6 +6,7 @@
 // rasteriser (render/rasteriser) draws.
 #include "animation.hpp"
 #include "command.hpp"
+#include "output_check.hpp"
 #include "fapcast/render/mesh_export.hpp"
 #include "fapcast/render/rasteriser.hpp"
 
@@ -89,6 +90,7 @@ const cli::Registration expressions_reg{"expressions", [](CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--obj-frames-out", args->obj_frames, ".glb: also write every frame as OBJ (metres) into this folder");
   cmd->callback([args] {
+    if (cli::is_mesh_output(args->output)) cli::check_output_writable(args->output);  // before the face is loaded
     const FaceModel& face = ict_face_model();
     if (!cli::is_mesh_output(args->output)) {
       if (!args->obj_frames.empty()) throw cli::UsageError("expressions: --obj-frames-out needs a .glb output");

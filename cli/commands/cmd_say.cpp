@@ -1,6 +1,7 @@
 // `fapcast say "TEXT" -o OUT.fap|OUT.glb [--wav-out OUT.wav] [--voice V] [--fps N] [--expression E] ...`:
 // speaks the text with espeak-ng and animates it (spec/synthesis.md). Argument parsing only.
 #include "command.hpp"
+#include "output_check.hpp"
 #include "synthesis_cli.hpp"
 
 #include "fapcast/core/file_io.hpp"
@@ -25,13 +26,14 @@ const cli::Registration reg{"say", [](CLI::App& app) {
   auto* cmd = cli::add_synthesis_command(
       app, "say", "Speak English text (espeak-ng) and animate it: a FAP track or a glTF mesh in sync with the WAV",
       args->synthesis, [args] {
-        const Speech speech = speak(args->text);
-        if (speech.phones.empty()) throw std::runtime_error("say: TEXT: empty-text: nothing to say");
         // A .glb is a mesh for a player: its sound goes beside it unless told where.
         std::string wav = args->wav;
         if (wav.empty() && (cli::is_mesh_output(args->synthesis.output) ||
                             cli::is_rig_output(args->synthesis.output, args->synthesis.rig)))
           wav = std::filesystem::path(args->synthesis.output).replace_extension(".wav").string();
+        cli::check_output_writable(wav);  // the track's output was checked before this runs
+        const Speech speech = speak(args->text);
+        if (speech.phones.empty()) throw std::runtime_error("say: TEXT: empty-text: nothing to say");
         // The track and its WAV appear together or not at all: the WAV is written first but
         // committed only after the track was, and the track is removed again if that fails.
         std::optional<AtomicFile> wav_file;

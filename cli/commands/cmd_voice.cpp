@@ -1,6 +1,7 @@
 // `fapcast voice build`, `voice info`, `voice default` (spec/voice.md) and `voice adapt`
 // (spec/adaptation.md).
 #include "command.hpp"
+#include "output_check.hpp"
 #include "default_voice.hpp"
 
 #include "fapcast/core/synthetic_label.hpp"
@@ -62,6 +63,7 @@ const fapcast::cli::Registration build_reg{"voice build", [](CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Seed of EM-PCA's start (recorded in the provenance)")->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
   cmd->callback([args] {
+    fapcast::cli::check_output_writable(args->output);
     fapcast::VoiceBuildOptions options;
     options.pca = args->pca == "em" ? fapcast::PcaRoute::em : fapcast::PcaRoute::exact;
     options.seed = args->seed;
@@ -154,6 +156,7 @@ const fapcast::cli::Registration adapt_reg{"voice adapt", [](CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("-o,--output", args->output, "The adapted voice (.fapv, written atomically)")->required();
   cmd->callback([args] {
+    fapcast::cli::check_output_writable(args->output);
     const float metres = args->unit == "cm" ? 0.01f : args->unit == "mm" ? 0.001f : 1.0f;
     const auto generic = fapcast::read_obj_mesh(args->generic);
     const auto specific = fapcast::read_obj_mesh(args->specific);

@@ -76,10 +76,17 @@ TEST(HostileCli, FapInfoReportsACorruptFbaAsAnFba) {
 // Attack 8: output that never reached a full standard output was a success.
 TEST(HostileCli, AFullStandardOutputIsAFailedRun) {
   if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
-  // In a subshell: run_command's own redirection of standard output would otherwise win.
-  const auto r = run_command("(" + fapcast("fap info " + kJoy) + " > /dev/full)");
-  EXPECT_EQ(r.exit_code, 1) << r.err;
-  EXPECT_TRUE(has(r.err, "standard output")) << r.err;
+  // The three commands of the issue; the voice is the tiny one of the voice fuzz seeds.
+  const std::string lexicon = kData + "/lexicon/";
+  for (const std::string& args :
+       {"fap info " + kJoy, "voice info " + kData + "/../fuzz/corpus/voice_open_fuzz/tiny-with-fmap.fapv",
+        "corpus script --cmudict " + lexicon + "mini-cmudict.out --word-counts " + lexicon +
+            "mini-word-counts.tsv --common 2 --syllable-words 3"}) {
+    // In a subshell: run_command's own redirection of standard output would otherwise win.
+    const auto r = run_command("(" + fapcast(args) + " > /dev/full)");
+    EXPECT_EQ(r.exit_code, 1) << args << ": " << r.err;
+    EXPECT_TRUE(has(r.err, "standard output")) << args << ": " << r.err;
+  }
 }
 
 // Attack 12: a URL that is not udp://HOST:PORT is a usage mistake (2), on both ends.
@@ -124,6 +131,67 @@ TEST(HostileCli, CorpusScriptRefusesAnEmptyLexicon) {
   EXPECT_TRUE(has(r.err, "lexicon-empty")) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/script.tsv"));
 }
+
+
+// Attack 7: `render` took a .glb whose key times imply 1.31 MHz (the glb fuzz input) with exit 0.
+TEST(HostileCli, RenderRefusesTheFuzzersGlb) {
+  const std::string glb = kData + "/gltf/fuzz-regressions/glb.001.gltf-frame-rate.glb";
+  const std::string out = make_temp_dir("hostile_cli") + "/frames";
+  const auto r = run_command(fapcast("render " + glb + " -o " + out));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_TRUE(has(r.err, glb)) << r.err;
+  EXPECT_TRUE(has(r.err, "gltf-frame-rate")) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+// Attack 6 for every command that writes a file: each did all its work (read, coded, built a
+// voice, synthesized speech) before it learnt that its output could not be written. Each now
+// fails first, naming the output; its inputs do not exist, so an error about them would show
+// that the command began its work first.
+struct UnwritableOutput {
+  const char* family;
+  std::string args;    // the command line after `fapcast`
+  std::string output;  // the path the message must name
+};
+
+std::string unwritable_name(const testing::TestParamInfo<UnwritableOutput>& info) { return info.param.family; }
+
+class HostileOutput : public testing::TestWithParam<UnwritableOutput> {};
+
+TEST_P(HostileOutput, AnUnwritableOutputFailsBeforeTheWork) {
+  const auto& p = GetParam();
+  const auto r = run_command(fapcast(p.args));
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_TRUE(has(r.err, p.output)) << r.err;
+  EXPECT_FALSE(has(r.err, "/nonexistent/in")) << "it read its input first: " << r.err;
+}
+
+const std::string kNo = "/nonexistent/dir/";
+const std::string kIn = "/nonexistent/in";
+INSTANTIATE_TEST_SUITE_P(
+    HostileCli, HostileOutput,
+    testing::Values(
+        UnwritableOutput{"encode", "encode " + kIn + ".fap -o " + kNo + "x.fba", kNo + "x.fba"},
+        UnwritableOutput{"decode", "decode " + kIn + ".fba -o " + kNo + "x.fap", kNo + "x.fap"},
+        UnwritableOutput{"export", "export " + kIn + ".fap -o " + kNo + "x.bvh", kNo + "x.bvh"},
+        UnwritableOutput{"fap_convert", "fap convert " + kIn + ".fap -o " + kNo + "x.fap", kNo + "x.fap"},
+        UnwritableOutput{"voice_build", "voice build " + kIn + " -o " + kNo + "x.fapv", kNo + "x.fapv"},
+        UnwritableOutput{"voice_adapt",
+                         "voice adapt " + kIn + ".fapv " + kIn + "g.obj " + kIn + "s.obj -o " + kNo + "x.fapv",
+                         kNo + "x.fapv"},
+        UnwritableOutput{"corpus_script",
+                         "corpus script --cmudict " + kIn + ".out --word-counts " + kIn + ".tsv -o " + kNo + "x.tsv",
+                         kNo + "x.tsv"},
+        UnwritableOutput{"say", "say hello --voice " + kIn + ".fapv -o " + kNo + "x.fap", kNo + "x.fap"},
+        UnwritableOutput{"say_wav",
+                         "say hello --voice " + kIn + ".fapv -o " + testing::TempDir() + "hostile_say.glb --wav-out " +
+                             kNo + "x.wav",
+                         kNo + "x.wav"},
+        UnwritableOutput{"animate", "animate " + kIn + ".wav " + kIn + ".lab -o " + kNo + "x.glb", kNo + "x.glb"},
+        UnwritableOutput{"rig", "animate " + kIn + ".wav " + kIn + ".lab --rig arkit -o " + kNo + "x.csv",
+                         kNo + "x.csv"},
+        UnwritableOutput{"expressions", "expressions -o " + kNo + "x.glb", kNo + "x.glb"}),
+    unwritable_name);
 
 }  // namespace
 }  // namespace fapcast::test

@@ -239,16 +239,19 @@ std::vector<std::vector<std::uint8_t>> collect(asio::io_context& io, std::vector
                                                std::vector<std::vector<std::vector<std::uint8_t>>>& per_socket,
                                                std::chrono::milliseconds idle,
                                                std::array<std::uint32_t, 2> ssrcs) {
-  std::array<std::uint8_t, 2048> buf;
+  // One buffer per socket: the reactor reads every ready socket before any handler runs, so
+  // with one shared buffer a report arriving with an audio packet overwrote it.
+  std::vector<std::array<std::uint8_t, 2048>> buffers(sockets.size());
   auto last = std::chrono::steady_clock::now();
-  udp::endpoint from;
+  std::vector<udp::endpoint> from(sockets.size());
   std::vector<bool> pending(sockets.size(), false);
   for (;;) {
     for (std::size_t k = 0; k < sockets.size(); ++k)
       if (!pending[k]) {
         pending[k] = true;
-        sockets[k].async_receive_from(asio::buffer(buf), from, [&, k](const boost::system::error_code& ec, std::size_t n) {
+        sockets[k].async_receive_from(asio::buffer(buffers[k]), from[k], [&, k](const boost::system::error_code& ec, std::size_t n) {
           pending[k] = false;
+          const auto& buf = buffers[k];
           if (ec) return;
           const std::size_t at = k % 2 == 0 ? 8 : 4;
           if (n < at + 4) return;

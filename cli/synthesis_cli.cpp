@@ -120,6 +120,7 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
     if (!args.player.empty() && lower_extension(args.output) != ".fap")
       throw UsageError(name + ": --player applies to a .fap output");
     check_output_writable(args.output);  // before the voice is read and the speech synthesized
+    check_output_writable(args.cues.output);
     run();
   });
   return cmd;

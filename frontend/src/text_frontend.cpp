@@ -110,9 +110,9 @@ class Energy {
 constexpr double kSilenceRms = 100.0;
 
 // Rule and detail come as "rule: detail".
-InputError text_error(std::size_t offset, const std::string& rule_and_detail) {
+InputError text_error(const std::string& source, std::size_t offset, const std::string& rule_and_detail) {
   const std::size_t colon = rule_and_detail.find(": ");
-  return InputError({"text", std::nullopt, offset}, rule_and_detail.substr(0, colon),
+  return InputError({source, std::nullopt, offset}, rule_and_detail.substr(0, colon),
                     rule_and_detail.substr(colon + 2));
 }
 
@@ -120,9 +120,9 @@ InputError text_error(std::size_t offset, const std::string& rule_and_detail) {
 
 namespace {
 
-// Checks the input rules over `text`, which starts at byte `base` of the input; appends each
+// Checks the input rules over `text`, which starts at byte `base` of the input named `source`; appends each
 // code point's offset (relative to `text`) to `offsets` unless it is null.
-void scan_text(std::string_view text, std::size_t base, std::vector<std::size_t>* offsets) {
+void scan_text(std::string_view text, const std::string& source, std::size_t base, std::vector<std::size_t>* offsets) {
   std::size_t i = 0;
   while (i < text.size()) {
     const auto c = static_cast<unsigned char>(text[i]);
@@ -132,19 +132,19 @@ void scan_text(std::string_view text, std::size_t base, std::vector<std::size_t>
     else if ((c & 0xE0) == 0xC0) { n = 2; cp = c & 0x1F; }
     else if ((c & 0xF0) == 0xE0) { n = 3; cp = c & 0x0F; }
     else if ((c & 0xF8) == 0xF0) { n = 4; cp = c & 0x07; }
-    else throw text_error(base + i, "invalid-utf8: bad lead byte");
-    if (i + n > text.size()) throw text_error(base + i, "invalid-utf8: truncated sequence");
+    else throw text_error(source, base + i, "invalid-utf8: bad lead byte");
+    if (i + n > text.size()) throw text_error(source, base + i, "invalid-utf8: truncated sequence");
     for (std::size_t k = 1; k < n; ++k) {
       const auto cc = static_cast<unsigned char>(text[i + k]);
-      if ((cc & 0xC0) != 0x80) throw text_error(base + i, "invalid-utf8: bad continuation byte");
+      if ((cc & 0xC0) != 0x80) throw text_error(source, base + i, "invalid-utf8: bad continuation byte");
       cp = (cp << 6) | (cc & 0x3F);
     }
     static constexpr char32_t kMinForLength[] = {0, 0, 0x80, 0x800, 0x10000};
-    if (cp < kMinForLength[n]) throw text_error(base + i, "invalid-utf8: overlong encoding");
-    if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) throw text_error(base + i, "invalid-utf8: not a scalar value");
+    if (cp < kMinForLength[n]) throw text_error(source, base + i, "invalid-utf8: overlong encoding");
+    if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) throw text_error(source, base + i, "invalid-utf8: not a scalar value");
     const bool control = (cp < 0x20 && cp != '\t' && cp != '\n' && cp != '\r') ||
                          (cp >= 0x7F && cp < 0xA0);
-    if (control) throw text_error(base + i, "control-character: U+" + std::to_string(static_cast<unsigned>(cp)) + " (decimal)");
+    if (control) throw text_error(source, base + i, "control-character: U+" + std::to_string(static_cast<unsigned>(cp)) + " (decimal)");
     if (offsets != nullptr) offsets->push_back(i);
     i += n;
   }
@@ -156,7 +156,7 @@ bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; 
 
 std::vector<std::size_t> validate_text(std::string_view text) {
   std::vector<std::size_t> offsets;
-  scan_text(text, 0, &offsets);
+  scan_text(text, "text", 0, &offsets);
   return offsets;
 }
 
@@ -275,7 +275,7 @@ namespace {
 // `voice` is what espeak_SetVoiceByName selects ("en-us", "Russian+f2").
 Speech speak_chunk(std::string_view text, std::size_t base, const SpeakOptions& options, const std::string& voice) {
   std::vector<std::size_t> char_offsets;
-  scan_text(text, base, &char_offsets);
+  scan_text(text, options.source, base, &char_offsets);
   const bool ipa = options.language != kDefaultLanguage;
   const std::string source = "espeak-ng phoneme event (language " + options.language + ")";
   Speech speech;
@@ -426,7 +426,7 @@ const std::vector<std::string>& cached_variants() {
 }  // namespace
 
 Speech speak(std::string_view text, const SpeakOptions& options) {
-  scan_text(text, 0, nullptr);  // the whole input first: a bad byte fails before any synthesis
+  scan_text(text, options.source, 0, nullptr);  // the whole input first: a bad byte fails before any synthesis
   // A language code selects the first voice that lists it (by its name: a code such as en-gb or
   // zh is listed by a voice whose file has another name).
   std::string voice(kDefaultLanguage);
@@ -436,7 +436,7 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
                                     [&](const EspeakLanguage& l) { return l.code == options.language; });
     if (found == languages.end()) {
       throw std::invalid_argument("espeak-ng: unknown language '" + options.language +
-                                  "' (`fapcast say --lang list` lists the installed ones)");
+                                  "' (`espeak-ng --voices` lists the installed ones)");
     }
     voice = found->name;
   }
@@ -444,7 +444,7 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
     const auto& variants = cached_variants();
     if (std::find(variants.begin(), variants.end(), options.variant) == variants.end()) {
       throw std::invalid_argument("espeak-ng: unknown voice variant '" + options.variant +
-                                  "' (`fapcast say --espeak-variant list` lists the installed ones)");
+                                  "' (`espeak-ng --voices=variant` lists the installed ones)");
     }
   }
   if (!options.variant.empty()) voice += "+" + options.variant;

@@ -116,7 +116,7 @@ TEST(Languages, UnknownLanguageAndVariantAreClearErrors) {
     ADD_FAILURE() << "accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()),
-              "espeak-ng: unknown language 'xx-nope' (`fapcast say --lang list` lists the installed ones)");
+              "espeak-ng: unknown language 'xx-nope' (`espeak-ng --voices` lists the installed ones)");
   }
   SpeakOptions bad_variant;
   bad_variant.variant = "zz";

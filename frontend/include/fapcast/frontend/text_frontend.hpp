@@ -78,10 +78,12 @@ struct SpeakOptions {
   std::string language = std::string(kDefaultLanguage);
   // espeak-ng voice variant (`espeak-ng --voices=variant`, the file name under !v/: "f2",
   // "klatt", "Alex"); empty: the language's own voice.
-  std::string variant;
+  std::string variant{};
   // The text is SSML (espeakSSML): espeak-ng parses the markup; tags are not spoken. SSML is
   // never split into chunks.
   bool ssml = false;
+  // What input errors name as the text's source ("text: byte 12: ..."): a file name, "<stdin>".
+  std::string source = "text";
 };
 
 // An installed espeak-ng language.

@@ -283,8 +283,8 @@ Speech speak_chunk(std::string_view text, std::size_t base, const SpeakOptions& 
   {
     std::lock_guard lock(espeak_mutex());
     speech.audio.sample_rate = SampleRate{ensure_espeak(ipa)};
-    if (std::all_of(text.begin(), text.end(), is_space)) return speech;
     select_voice(voice);
+    if (std::all_of(text.begin(), text.end(), is_space)) return speech;
     espeak_SetSynthCallback(collect);
     g_collector = &collector;
     const std::string buffer(text);  // NUL-terminated copy

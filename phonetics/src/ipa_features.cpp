@@ -178,26 +178,6 @@ std::string code_point_name(char32_t c) {
   return buffer;
 }
 
-std::string encode(char32_t c) {
-  std::string out;
-  if (c < 0x80) {
-    out += static_cast<char>(c);
-  } else if (c < 0x800) {
-    out += static_cast<char>(0xC0 | (c >> 6));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  } else if (c < 0x10000) {
-    out += static_cast<char>(0xE0 | (c >> 12));
-    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  } else {
-    out += static_cast<char>(0xF0 | (c >> 18));
-    out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
-    out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
-    out += static_cast<char>(0x80 | (c & 0x3F));
-  }
-  return out;
-}
-
 // Bytes of `text` with control bytes as \xNN (for error messages).
 std::string shown(std::string_view text) {
   std::string out;
@@ -214,9 +194,14 @@ std::string shown(std::string_view text) {
   return out;
 }
 
+struct CodePoint {
+  char32_t value;
+  std::string_view bytes;  // its UTF-8 in the text
+};
+
 // The code points of `text`; throws on invalid UTF-8.
-std::vector<char32_t> decode(std::string_view text, std::string_view source) {
-  std::vector<char32_t> out;
+std::vector<CodePoint> decode(std::string_view text, std::string_view source) {
+  std::vector<CodePoint> out;
   std::size_t i = 0;
   while (i < text.size()) {
     const auto lead = static_cast<unsigned char>(text[i]);
@@ -234,7 +219,7 @@ std::vector<char32_t> decode(std::string_view text, std::string_view source) {
       }
       c = (c << 6) | (next & 0x3F);
     }
-    out.push_back(c);
+    out.push_back({c, text.substr(i, n)});
     i += n;
   }
   return out;
@@ -341,7 +326,7 @@ std::optional<Phone> phone_from_ipa_features(std::string_view ipa, std::string_v
   if (ipa.empty() || ipa.front() == '_') return Phone::SIL;
   if (ipa.front() == '(' && ipa.back() == ')') return std::nullopt;  // language switch "(en)"
   std::vector<IpaSegment> segments;
-  for (const char32_t c : decode(ipa, source)) {
+  for (const auto& [c, bytes] : decode(ipa, source)) {
     if (const auto s = ipa_segment(c)) {
       segments.push_back(*s);
       continue;
@@ -353,7 +338,7 @@ std::optional<Phone> phone_from_ipa_features(std::string_view ipa, std::string_v
       continue;
     }
     if (is_modifier(c)) continue;
-    throw std::invalid_argument(std::string(source) + ": unknown IPA symbol '" + shown(encode(c)) +
+    throw std::invalid_argument(std::string(source) + ": unknown IPA symbol '" + shown(bytes) +
                                 "' (" + code_point_name(c) +
                                 ") in phoneme '" + shown(ipa) + "'");
   }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <optional>
 #include <mutex>
 #include <stdexcept>
@@ -425,7 +426,7 @@ const std::vector<std::string>& cached_variants() {
 
 }  // namespace
 
-Speech speak(std::string_view text, const SpeakOptions& options) {
+void speak_chunks(std::string_view text, const SpeakOptions& options, const std::function<void(Speech&&)>& sink) {
   scan_text(text, options.source, 0, nullptr);  // the whole input first: a bad byte fails before any synthesis
   // A language code selects the first voice that lists it (by its name: a code such as en-gb or
   // zh is listed by a voice whose file has another name).
@@ -448,15 +449,23 @@ Speech speak(std::string_view text, const SpeakOptions& options) {
     }
   }
   if (!options.variant.empty()) voice += "+" + options.variant;
-  if (options.ssml || text.size() <= kChunkBytes) return speak_chunk(text, 0, options, voice);
+  if (options.ssml || text.size() <= kChunkBytes) {
+    sink(speak_chunk(text, 0, options, voice));
+    return;
+  }
   const std::vector<std::size_t> starts = chunk_offsets(text, kChunkBytes);
-  Speech all;
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const std::size_t end = i + 1 < starts.size() ? starts[i + 1] : text.size();
-    Speech part = speak_chunk(text.substr(starts[i], end - starts[i]), starts[i], options, voice);
+    sink(speak_chunk(text.substr(starts[i], end - starts[i]), starts[i], options, voice));
+  }
+}
+
+Speech speak(std::string_view text, const SpeakOptions& options) {
+  Speech all;
+  speak_chunks(text, options, [&all](Speech&& part) {
     if (all.audio.sample_rate.hz == 0) all.audio.sample_rate = part.audio.sample_rate;
     append(all, std::move(part));
-  }
+  });
   return all;
 }
 

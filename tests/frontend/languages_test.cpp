@@ -209,5 +209,30 @@ TEST(Chunks, TextOver32KiBIsSpokenAsOneTimeline) {
   EXPECT_EQ(last_item, text.rfind("Item"));
 }
 
+// Chunk by chunk: each chunk is a timeline of its own, bounded by kChunkBytes of text, and
+// together they say what speak() says.
+TEST(Chunks, SpeakChunksStreamsTheSameWordsInBoundedPieces) {
+  std::string text;
+  while (text.size() <= 9 * 1024) text += "Item " + std::to_string(text.size()) + "." + std::string(200, ' ') + "\n";
+  SpeakOptions fast;
+  fast.rate_factor = 2.5;
+  std::size_t chunks = 0;
+  std::vector<std::string> streamed;
+  speak_chunks(text, fast, [&](Speech&& part) {
+    ++chunks;
+    ASSERT_FALSE(part.phones.empty());
+    EXPECT_EQ(part.phones.front().start_sample, 0);
+    EXPECT_EQ(part.phones.back().end_sample, static_cast<std::int64_t>(part.audio.samples.size()));
+    for (const TimedWord& w : part.words) {
+      EXPECT_EQ(text.substr(w.byte_offset, w.text.size()), w.text);
+      streamed.push_back(w.text);
+    }
+  });
+  EXPECT_GE(chunks, 3u);
+  std::vector<std::string> whole;
+  for (const TimedWord& w : speak(text, fast).words) whole.push_back(w.text);
+  EXPECT_EQ(streamed, whole);
+}
+
 }  // namespace
 }  // namespace fapcast

@@ -22,6 +22,7 @@
 //  - emoji and non-Latin characters are read out by espeak-ng by name ("grinning face").
 // espeak-ng is not thread-safe: calls are serialised by a process-wide mutex.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -108,6 +109,12 @@ std::vector<std::size_t> chunk_offsets(std::string_view text, std::size_t max_by
 // has an unknown symbol (naming phoneme and language), std::runtime_error if espeak-ng fails
 // (e.g. its data is missing).
 Speech speak(std::string_view text, const SpeakOptions& options = {});
+
+// The same text as speak() gives, chunk by chunk (kChunkBytes), for callers that keep only one
+// chunk at a time: `sink` gets each chunk's speech in order, its samples and phones counted from
+// the chunk's own start, its words' byte offsets into the whole text. A text of at most
+// kChunkBytes (or SSML) is one chunk. Throws as speak() does (input errors before any chunk).
+void speak_chunks(std::string_view text, const SpeakOptions& options, const std::function<void(Speech&&)>& sink);
 
 // Checks the input rules; throws InputError "text: byte N: <rule>: <detail>" on the first
 // violation. Returns the byte offset of every code point (for espeak's character positions).

@@ -326,7 +326,8 @@ std::optional<Phone> phone_from_ipa_features(std::string_view ipa, std::string_v
   if (ipa.empty() || ipa.front() == '_') return Phone::SIL;
   if (ipa.front() == '(' && ipa.back() == ')') return std::nullopt;  // language switch "(en)"
   std::vector<IpaSegment> segments;
-  for (const auto& [c, bytes] : decode(ipa, source)) {
+  for (const CodePoint& point : decode(ipa, source)) {
+    const char32_t c = point.value;
     if (const auto s = ipa_segment(c)) {
       segments.push_back(*s);
       continue;
@@ -338,7 +339,7 @@ std::optional<Phone> phone_from_ipa_features(std::string_view ipa, std::string_v
       continue;
     }
     if (is_modifier(c)) continue;
-    throw std::invalid_argument(std::string(source) + ": unknown IPA symbol '" + shown(bytes) +
+    throw std::invalid_argument(std::string(source) + ": unknown IPA symbol '" + shown(point.bytes) +
                                 "' (" + code_point_name(c) +
                                 ") in phoneme '" + shown(ipa) + "'");
   }

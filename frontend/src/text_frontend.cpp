@@ -78,6 +78,15 @@ void select_voice(const std::string& voice) {
   g_voice = voice;
 }
 
+// The phone of an en-us mnemonic event. Text in another script makes espeak-ng switch language
+// by itself ("(ru)" ... "(en)"): those events name the other language's mnemonics (ASCII, close
+// to Kirshenbaum's IPA), which go through the IPA features; a switch event is no phone.
+std::optional<Phone> phone_from_mnemonic(const std::string& name) {
+  const auto* row = std::find_if(kEspeakMap.begin(), kEspeakMap.end(), [&](const auto& r) { return r.first == name; });
+  if (row != kEspeakMap.end()) return row->second;
+  return phone_from_ipa_features(name, "espeak-ng phoneme event (language en-us, switched by script)");
+}
+
 // A phoneme name cut by espeak-ng's 8-byte event field may end in half a UTF-8 sequence.
 std::string_view whole_code_points(std::string_view name) {
   std::size_t lead = name.size();
@@ -297,6 +306,12 @@ Speech speak_chunk(std::string_view text, std::size_t base, const SpeakOptions& 
                                              flags, nullptr, nullptr);
     espeak_Synchronize();
     g_collector = nullptr;
+    // espeak-ng switched language by itself ("(ru)"): it may not come back to the same voice
+    // state, so the next call selects the voice again.
+    if (std::any_of(collector.events.begin(), collector.events.end(),
+                    [](const RawEvent& e) { return e.name.starts_with('('); })) {
+      g_voice.clear();
+    }
     if (status != EE_OK) throw std::runtime_error("espeak-ng: synthesis failed (status " + std::to_string(status) + ")");
   }
   speech.audio.samples = std::move(collector.samples);
@@ -319,7 +334,7 @@ Speech speak_chunk(std::string_view text, std::size_t base, const SpeakOptions& 
       continue;
     }
     const std::optional<Phone> mapped = ipa ? phone_from_ipa_features(whole_code_points(e.name), source)
-                                            : std::optional(phone_from_espeak(e.name, "espeak-ng phoneme event"));
+                                            : phone_from_mnemonic(e.name);
     if (!mapped) continue;  // a language switch or a lone modifier: the phone before goes on
     const Phone phone = *mapped;
     const std::int64_t at = std::clamp<std::int64_t>(e.sample, 0, total);

@@ -33,10 +33,14 @@ constexpr auto kLetters = std::to_array<std::pair<char32_t, IpaSegment>>({
     {U'C', consonant(P::kPalatal, M::kFricative, false)},    // ç
     {U'D', consonant(P::kDental, M::kFricative, true)},      // ð
     {U'E', vowel(H::kOpenMid, B::kFront, false)},            // ɛ
+    {U'H', consonant(P::kGlottal, M::kFricative, true)},     // ɦ (espeak-ng hi: the H of बहुत)
     {U'I', vowel(H::kNearClose, B::kFront, false)},          // ɪ
+    {U'J', consonant(P::kPalatal, M::kStop, true)},          // ɟ (espeak-ng hi: the J of आज)
+    {U'L', consonant(P::kPalatal, M::kLateralApproximant, true)},  // ʎ
     {U'N', consonant(P::kVelar, M::kNasal, true)},           // ŋ
     {U'O', vowel(H::kOpenMid, B::kBack, true)},              // ɔ
     {U'Q', vowel(H::kOpen, B::kBack, true)},                 // ɒ
+    {U'R', consonant(P::kAlveolar, M::kTrill, true)},        // espeak-ng's r-sounds (R R2 R3)
     {U'S', consonant(P::kPostalveolar, M::kFricative, false)},  // ʃ
     {U'T', consonant(P::kDental, M::kFricative, false)},     // θ
     {U'U', vowel(H::kNearClose, B::kBack, true)},            // ʊ
@@ -324,7 +328,7 @@ Phone phone_from_features(const IpaSegment& segment) {
 
 std::optional<Phone> phone_from_ipa_features(std::string_view ipa, std::string_view source) {
   if (ipa.empty() || ipa.front() == '_') return Phone::SIL;
-  if (ipa.front() == '(' && ipa.back() == ')') return std::nullopt;  // language switch "(en)"
+  if (ipa.front() == '(') return std::nullopt;  // language switch "(en)", maybe cut: "(en-us-n"
   std::vector<IpaSegment> segments;
   for (const CodePoint& point : decode(ipa, source)) {
     const char32_t c = point.value;

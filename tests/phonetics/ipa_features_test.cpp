@@ -43,6 +43,9 @@ INSTANTIATE_TEST_SUITE_P(Cases, IpaFeatures, testing::Values(
     // espeak-ng's ASCII fallbacks for phonemes without IPA
     Case{"tS", Phone::CH}, Case{"dZ", Phone::JH}, Case{"N", Phone::NG}, Case{"?a", Phone::AE},
     Case{"n^", Phone::N}, Case{"l#", Phone::L}, Case{"t`", Phone::T},
+    // other languages' mnemonics when en-us switches by script (ru o: R2, hi J H)
+    Case{"o:", Phone::OW}, Case{"R2", Phone::R}, Case{"J", Phone::G}, Case{"H", Phone::HH},
+    Case{"(en-us-n", std::nullopt},
     // pauses; events with nothing to say
     Case{"", Phone::SIL}, Case{"_", Phone::SIL}, Case{"_:", Phone::SIL},
     Case{"(en)", std::nullopt}, Case{"ʲ", std::nullopt}, Case{"ː", std::nullopt}));

@@ -36,7 +36,8 @@ struct IpaSegment {
 };
 
 // The features of one code point that is an IPA letter (or one of espeak-ng's ASCII fallbacks
-// for a phoneme without IPA: Kirshenbaum capitals such as `A N S` and `?` for ʔ); nullopt for
+// for a phoneme without IPA: Kirshenbaum capitals such as `A N S`, `R` for its r-sounds, `H J L`, `?`
+// for ʔ); nullopt for
 // anything else.
 std::optional<IpaSegment> ipa_segment(char32_t code_point);
 
@@ -48,7 +49,8 @@ Phone phone_from_features(const IpaSegment& segment);
 // vowels the most open is the nucleus and a close vowel after it makes a diphthong (aɪ -> AY,
 // oʊ -> OW); a stop followed by a postalveolar-like fricative is an affricate (CH JH), by any
 // other fricative the stop; otherwise the first consonant. Empty, "_" (pause) -> SIL.
-// nullopt: nothing to say — an event that only switches language ("(en)") or carries a
+// nullopt: nothing to say — an event that only switches language ("(en)", also when cut short
+// as "(en-us-n") or carries a
 // modifier alone ("ʲ"); the caller extends the phone before it.
 // Throws std::invalid_argument "<source>: unknown IPA symbol 'X' (U+XXXX) in phoneme 'P'" for a
 // code point that is neither a letter nor a known modifier, and for invalid UTF-8.

@@ -95,6 +95,19 @@ INSTANTIATE_TEST_SUITE_P(Issue18, NativeText, testing::Values(
     NativeSample{"fr", "bonjour le monde", {Phone::B, Phone::ZH, Phone::L, Phone::M}},
     NativeSample{"de", "Ich spreche Deutsch", {Phone::HH, Phone::SH, Phone::P, Phone::D}}));
 
+// The issue's aborts were with the default voice: en-us switches to Russian, Arabic, Hindi or
+// Korean by script, and those languages' mnemonics go through the IPA features.
+TEST(Languages, DefaultVoiceReadsOtherScriptsWithoutAborting) {
+  for (const std::string text : {"Москва", "مرحبا بالعالم", "नमस्ते दुनिया", "안녕하세요", "Γειά σου κόσμε"}) {
+    Speech s;
+    ASSERT_NO_THROW(s = speak(text)) << text;
+    expect_timeline(s, text);
+    EXPECT_GE(spoken_phones(s), 3u) << text;
+  }
+  const std::string moscow = arpabet_of(speak("Москва"));
+  for (const char* p : {"M ", "S ", "K ", "V "}) EXPECT_NE(moscow.find(p), std::string::npos) << p << " in " << moscow;
+}
+
 TEST(Languages, VariantChangesTheVoiceNotThePhones) {
   const std::vector<std::string> variants = espeak_variants();
   ASSERT_FALSE(variants.empty());

@@ -493,7 +493,39 @@ void AFailedGlbLeavesNoWav() {
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
 }
 
+// The text from TEXT, standard input (-) or --text-file gives the same speech (a fresh process
+// making the same espeak-ng calls reproduces its output exactly); --lang speaks Russian; SSML
+// markup is parsed (a 1 s break lengthens the speech), not read out.
+void SayReadsFilesStdinLanguagesAndSsml() {
+  const std::string text = "Hello there.";
+  const std::string common = " --voice " + voice() + " -q --viseme -o " + out("text.fap");
+  auto r = run_command(fapcast("say \"" + text + "\"" + common + " --wav-out " + out("arg.wav")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  write_file_atomically(out("text.txt"), text);
+  r = run_command(fapcast("say --text-file " + out("text.txt") + common + " --wav-out " + out("file.wav")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // In a subshell: run_command's </dev/null then applies to the subshell, not to the pipe's end.
+  r = run_command("(printf '" + text + "' | " + fapcast("say -" + common + " --wav-out " + out("stdin.wav")) + ")");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Audio arg = read_wav(out("arg.wav"));
+  EXPECT_EQ(read_wav(out("file.wav")).samples, arg.samples);
+  EXPECT_EQ(read_wav(out("stdin.wav")).samples, arg.samples);
+  r = run_command(fapcast("say --ssml '<speak>Hello <break time=\"1s\"/> there.</speak>'" + common +
+                          " --wav-out " + out("ssml.wav")));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const Audio ssml = read_wav(out("ssml.wav"));
+  EXPECT_GT(ssml.samples.size(), arg.samples.size() + static_cast<std::size_t>(arg.sample_rate.hz * 8 / 10));
+  EXPECT_LT(ssml.samples.size(), arg.samples.size() + static_cast<std::size_t>(arg.sample_rate.hz * 2));
+  r = run_command(fapcast("say --lang ru 'Москва' --espeak-variant f2" + common));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(read_track_file(out("text.fap")).frames.empty());
+}
+
 TEST_F(SayCli, SayAndAnimateEndToEnd) {
+  {
+    SCOPED_TRACE("SayReadsFilesStdinLanguagesAndSsml");
+    SayReadsFilesStdinLanguagesAndSsml();
+  }
   {
     SCOPED_TRACE("SayWritesTheTrackInSyncWithTheWav");
     SayWritesTheTrackInSyncWithTheWav();
@@ -567,6 +599,21 @@ TEST(SayCliUsage, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.glb --viseme")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.fap --obj-frames-out d")).exit_code, 2);  // OBJ frames: .glb only
   EXPECT_EQ(run_command(fapcast("voice adapt v.fapv g.obj -o v2.fapv")).exit_code, 2);  // no specific face
+  // The text comes from one place; --lang and --espeak-variant name what espeak-ng has.
+  EXPECT_EQ(run_command(fapcast("say -o x.fap --voice v.fapv")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" --text-file a.txt -o x.fap --voice v.fapv")).exit_code, 2);
+  const auto lang = run_command(fapcast("say \"Hi.\" --lang klingon -o x.fap --voice v.fapv"));
+  EXPECT_EQ(lang.exit_code, 2);
+  EXPECT_NE(lang.err.find("--lang 'klingon': not an installed espeak-ng language"), std::string::npos) << lang.err;
+  EXPECT_EQ(run_command(fapcast("say \"Hi.\" --espeak-variant zz -o x.fap --voice v.fapv")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("say --text-file /nonexistent/a.txt -o x.fap --voice v.fapv")).exit_code, 1);
+  // A bad byte in a text file is bad input named by file and byte offset (before any voice).
+  const std::string bad = make_temp_dir("say-usage") + "/bad.txt";
+  write_file_atomically(bad, std::string("Hello\x01 there."));
+  const auto r = run_command(fapcast("say --text-file " + bad + " -o x.fap --voice v.fapv"));
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find(bad + ": byte 5: control-character"), std::string::npos) << r.err;
+  fs::remove_all(fs::path(bad).parent_path());
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "fapcast/cues/rhubarb_format.hpp"
 
+#include "fapcast/core/xml_text.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -14,20 +16,6 @@ std::string seconds(Centiseconds t) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%lld.%02lld", static_cast<long long>(n / 100), static_cast<long long>(n % 100));
   return buf;
-}
-
-std::string xml_text(std::string_view s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 std::string json_string(std::string_view s) {
@@ -58,7 +46,7 @@ std::string tsv(const RhubarbResult& r) {
 
 std::string xml(const RhubarbResult& r) {
   std::string out = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<rhubarbResult>\n  <metadata>\n";
-  out += "    <soundFile>" + xml_text(r.sound_file) + "</soundFile>\n";
+  out += "    <soundFile>" + escape_xml(r.sound_file) + "</soundFile>\n";
   out += "    <duration>" + seconds(r.duration) + "</duration>\n";
   out += "  </metadata>\n  <mouthCues>\n";
   for (const MouthCue& c : r.cues)

@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
       app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
       // --help and --version arrive here too, with exit code 0.
-      return app.exit(e) == 0 ? kOk : kBadUsage;
+      return app.exit(e) == 0 ? standard_output_written() : kBadUsage;  // --help > /dev/full fails too
     }
   } catch (...) {
     const ExitStatus status = exit_status(std::current_exception());

@@ -13,20 +13,20 @@
 namespace fapcast::cli {
 
 void add_transcript_options(CLI::App& command, TranscriptArgs& args) {
-  command.add_option("--transcript", args.file,
+  args.file_option = command.add_option("--transcript", args.file,
                      "What the speech says, as a UTF-8 text file: its phones are found by forced alignment "
                      "(spec/recognise.md); without it or --text, what the speech says is recognised");
-  command.add_option("--text", args.text, "What the speech says, as text (instead of --transcript FILE)");
+  args.text_option = command.add_option("--text", args.text, "What the speech says, as text (instead of --transcript FILE)");
 }
 
 SpeechAlignment align_recording(const std::string& wav, const TranscriptArgs& args, bool quiet) {
-  if (!args.file.empty() && !args.text.empty())
+  if (args.file_given() && args.text_given())
     throw UsageError("give what the speech says with --transcript FILE or --text TEXT, not both");
   const bool recognised = !args.given();
-  const std::string source = args.file.empty() ? "--text" : args.file;
+  const std::string source = args.file_given() ? args.file : "--text";
   std::optional<Transcript> transcript;
   if (!recognised)
-    transcript = parse_transcript(args.file.empty() ? args.text : decode_text(read_file(args.file), args.file, "transcript"),
+    transcript = parse_transcript(args.file_given() ? decode_text(read_file(args.file), args.file, "transcript") : args.text,
                                   source);
   const Audio recorded = read_wav(wav);
   SpeechAligner aligner;

@@ -13,7 +13,13 @@ namespace fapcast::cli {
 struct TranscriptArgs {
   std::string file;  // --transcript FILE
   std::string text;  // --text TEXT
-  bool given() const { return !file.empty() || !text.empty(); }
+  // Whether each option was on the command line: `--text ""` asks for forced alignment (and is
+  // refused as an empty transcript), it does not fall back to recognition.
+  const CLI::Option* file_option = nullptr;
+  const CLI::Option* text_option = nullptr;
+  bool file_given() const { return file_option != nullptr && file_option->count() > 0; }
+  bool text_given() const { return text_option != nullptr && text_option->count() > 0; }
+  bool given() const { return file_given() || text_given(); }
 };
 
 void add_transcript_options(CLI::App& command, TranscriptArgs& args);

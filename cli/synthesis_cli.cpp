@@ -95,6 +95,7 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
           !args.player.empty() || !args.rig.rig_text.empty() || !args.rig.avatar.empty() || !args.rig.vmc.empty())
         throw UsageError(name + ": --voice, --fps, --viseme, --expression, --obj-frames-out, --player, --rig, --avatar "
                          "and --vmc shape the animation: give it with -o OUT");
+      check_output_writable(args.cues.output);  // before the speech is made or aligned
       run();
       return;
     }

@@ -32,6 +32,7 @@ default_voice=${FAPCAST_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/fapcast}/refe
 run_one() {
   local target=$1 scratch=build/fuzz/tests/fuzz-scratch/$1 findings=build/fuzz/findings/$1 log rc=0
   local extra=()
+  rm -rf "$findings"  # a finding counted is one of this run
   mkdir -p "$scratch" "$findings"
   if [ "$target" = voice_structured_fuzz ]; then
     extra=(-max_len=16777216 -rss_limit_mb=4096)
@@ -47,9 +48,9 @@ run_one() {
     "${extra[@]:2}" >"$log" 2>&1 || rc=$?
   local execs cov ft corpus found
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | cut -d' ' -f2)
-  ft=$(grep -oE 'ft: [0-9]+' "$log" | tail -1 | cut -d' ' -f2)
-  corpus=$(grep -oE 'corp: [0-9]+/[0-9]+[bKM]*' "$log" | tail -1 | cut -d' ' -f2)
+  cov=$(grep -oE 'cov: [0-9]+' "$log" | tail -1 | cut -d' ' -f2 || true)
+  ft=$(grep -oE 'ft: [0-9]+' "$log" | tail -1 | cut -d' ' -f2 || true)
+  corpus=$(grep -oE 'corp: [0-9]+/[0-9]+[bKM]*' "$log" | tail -1 | cut -d' ' -f2 || true)
   found=$(find "$findings" -type f | wc -l)
   [ "$rc" = 0 ] || [ "$found" != 0 ] || found="exit $rc"
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$target" "$seconds" "${execs:-?}" "${cov:-?}" "${ft:-?}" "${corpus:-?}" "$found"

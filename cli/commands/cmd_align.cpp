@@ -4,6 +4,7 @@
 // Argument parsing only.
 #include "command.hpp"
 #include "file_extension.hpp"
+#include "output_check.hpp"
 #include "speech_transcript.hpp"
 
 #include "fapcast/core/file_io.hpp"
@@ -33,6 +34,7 @@ const cli::Registration reg{"align", [](CLI::App& app) {
   cmd->callback([args] {
     if (cli::lower_extension(args->output) != ".textgrid")
       throw cli::UsageError("align: -o writes a .TextGrid, not '" + args->output + "'");
+    cli::check_output_writable(args->output);  // before the recording is read and aligned
     const SpeechAlignment found = cli::align_recording(args->wav, args->transcript, args->quiet);
     write_file_atomically(args->output, write_textgrid(to_alignment(found)));
     std::size_t phones = 0, pauses = 0;

@@ -51,7 +51,7 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
       app, "animate", "Animate recorded speech from its WAV and phone alignment (TextGrid, .lab, .phn, .mlf, .par, Gentle .json)",
       args->synthesis, [args] {
         args->synthesis.cues.sound_file = args->wav;
-        const int sources = !args->align.empty() + !args->transcript.file.empty() + !args->transcript.text.empty();
+        const int sources = !args->align.empty() + args->transcript.file_given() + args->transcript.text_given();
         if (sources > 1)
           throw cli::UsageError("animate: give the speech's ALIGNMENT, or its --transcript FILE, or its --text TEXT "
                                 "(at most one; with none, what it says is recognised)");

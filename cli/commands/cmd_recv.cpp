@@ -116,7 +116,8 @@ void run_recv(const RecvArgs& a) {
             << "discarded: " << t.decode_errors << " decode errors, " << t.timestamp_jumps
             << " timestamp jumps, " << t.over_limit << " over --max-seconds, "
             << t.frame_number_mismatches << " frame-number mismatches (placed by timestamp), "
-            << t.discontinuities << " confirmed discontinuities\n"
+            << t.discontinuities << " confirmed discontinuities, " << t.report_mismatches
+            << " sender reports that fit no frame (a lost start not placed)\n"
             << "end:       " << end << "\n"
             << "received:  ";
   if (t.fapcast_units > 0) std::cout << t.fapcast_units << " units " << fba_profile_name(FbaProfile::kFapcast);

@@ -28,11 +28,14 @@ const std::time_t kRunStart = std::time(nullptr);
   throw std::runtime_error(msg);
 }
 
-// ".NAME.tmpNNN": a leading dot, a name, ".tmp", one or more decimal digits.
+// ".NAME.fapcast-tmpNNN": a leading dot, a name, ".fapcast-tmp", one or more decimal digits. The
+// suffix is fapcast's own, so the sweep never takes another program's temporary files.
+constexpr std::string_view kTemporarySuffix = ".fapcast-tmp";
+
 bool has_temporary_name(const std::string& name) {
-  const auto at = name.rfind(".tmp");
+  const auto at = name.rfind(kTemporarySuffix);
   if (name.size() < 2 || name[0] != '.' || at == std::string::npos || at < 2) return false;
-  const std::string digits = name.substr(at + 4);
+  const std::string digits = name.substr(at + kTemporarySuffix.size());
   return !digits.empty() && digits.find_first_not_of("0123456789") == std::string::npos;
 }
 
@@ -80,10 +83,12 @@ std::string read_file(const fs::path& path, std::uint64_t max_bytes) {
 AtomicFile::AtomicFile(fs::path path) : path_(std::move(path)) {
   const fs::path dir = path_.has_parent_path() ? path_.parent_path() : fs::path(".");
   if (path_.filename().empty()) fail(path_, "not a file name");
+  std::error_code is_dir_error;
+  if (fs::is_directory(path_, is_dir_error)) fail(path_, "is a directory, not a file");
   sweep_once(dir);
   std::random_device rd;
   for (int attempt = 0; fd_ < 0; ++attempt) {
-    tmp_ = dir / ("." + path_.filename().string() + ".tmp" + std::to_string(rd()));
+    tmp_ = dir / ("." + path_.filename().string() + std::string(kTemporarySuffix) + std::to_string(rd()));
     fd_ = ::open(tmp_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     if (fd_ < 0 && (errno != EEXIST || attempt >= 8))
       fail(path_, "cannot create temporary file " + tmp_.string(), errno);
@@ -122,21 +127,12 @@ void AtomicFile::write(std::string_view bytes) {
 void AtomicFile::commit() {
   if (fd_ < 0) fail(path_, "commit after commit");
   if (::fsync(fd_) != 0) abandon("fsync failed", errno);
+  // Renamed while still open and locked: another run's sweep cannot take it in between.
+  if (::rename(tmp_.c_str(), path_.c_str()) != 0) abandon("rename of the temporary file failed", errno);
+  committed_ = true;
   const int fd = fd_;
   fd_ = -1;
-  if (::close(fd) != 0) {
-    const int err = errno;
-    ::unlink(tmp_.c_str());
-    tmp_.clear();
-    fail(path_, "close failed", err);
-  }
-  if (::rename(tmp_.c_str(), path_.c_str()) != 0) {
-    const int err = errno;
-    ::unlink(tmp_.c_str());
-    tmp_.clear();
-    fail(path_, "rename of the temporary file failed", err);
-  }
-  committed_ = true;
+  if (::close(fd) != 0) fail(path_, "close failed (the file was written and synced)", errno);
 }
 
 void commit_together(std::initializer_list<AtomicFile*> files) {

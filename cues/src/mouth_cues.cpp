@@ -162,7 +162,11 @@ MouthShapeSet shown_set(MouthShapeSet allowed, MouthShapeSet drawn) {
 // The rules of `phones` over [0, duration): a pause wherever no phone is.
 std::vector<Rule> phone_rules(std::span<const TimedPhone> phones, SampleRate rate, Centiseconds duration,
                               MouthShapeSet drawn) {
-  const MouthShapeSet pause = shown_set({S::X}, drawn);
+  // X stays in the rules until the end (Rhubarb's rule): the pause rules act on it, and only the
+  // final cues show it as A when the drawings lack it.
+  MouthShapeSet drawn_and_x = drawn;
+  drawn_and_x.insert(S::X);
+  const MouthShapeSet pause{S::X};
   std::vector<Rule> rules{{cs(0), duration, pause, false}};
   Centiseconds previous_start = cs(0);  // where the stretch before the current phone began
   Centiseconds previous_end = cs(0);
@@ -181,7 +185,7 @@ std::vector<Rule> phone_rules(std::span<const TimedPhone> phones, SampleRate rat
     previous_end = end;
     const PhoneRule rule = phone_rule(p.phone, end - start);
     const bool vowel = is_vowel(p.phone);
-    const MouthShapeSet first = shown_set(rule.first, drawn), second = shown_set(rule.second, drawn);
+    const MouthShapeSet first = shown_set(rule.first, drawn_and_x), second = shown_set(rule.second, drawn_and_x);
     switch (rule.timing) {
       case Timing::kSingle:
         lay(rules, Rule{start, end, first, vowel});

@@ -173,13 +173,19 @@ std::vector<std::size_t> validate_text(std::string_view text) {
 std::vector<std::size_t> chunk_offsets(std::string_view text, std::size_t max_bytes) {
   max_bytes = std::max<std::size_t>(max_bytes, 4);  // room for one code point
   std::vector<std::size_t> starts;
-  // Sentence boundaries: after . ! ? (or 。！？, or a line break) when white space follows.
-  const auto sentence_end_before = [&](std::size_t at) {  // a boundary between at-1 and at
+  // Sentence boundaries: after . ! ? or a line break when white space follows; after the full
+  // stops of scripts written without spaces (。！？ Chinese and Japanese, । Devanagari, ؟ ۔ Arabic
+  // and Urdu) with or without it.
+  const auto sentence_end_before = [&](std::size_t at) {  // after . ! ? or a line break: at is white space
     if (at == 0 || at >= text.size() || !is_space(text[at])) return false;
     const char last = text[at - 1];
-    if (last == '.' || last == '!' || last == '?' || last == '\n') return true;
+    return last == '.' || last == '!' || last == '?' || last == '\n';
+  };
+  const auto script_stop_before = [&](std::size_t at) {  // a boundary between at-1 and at
     const std::string_view tail = text.substr(0, at);
-    return tail.ends_with("\u3002") || tail.ends_with("\uFF01") || tail.ends_with("\uFF1F");
+    for (const std::string_view stop : {"\u3002", "\uFF01", "\uFF1F", "\u0964", "\u061F", "\u06D4"})
+      if (tail.ends_with(stop)) return true;
+    return false;
   };
   std::size_t start = 0;
   while (start < text.size()) {
@@ -188,6 +194,7 @@ std::vector<std::size_t> chunk_offsets(std::string_view text, std::size_t max_by
     const std::size_t limit = start + max_bytes;  // the chunk ends at or before this byte
     std::size_t cut = 0;
     for (std::size_t at = limit - 1; at > start; --at) {  // cut after the white space
+      if (script_stop_before(at)) { cut = at < text.size() && is_space(text[at]) ? at + 1 : at; break; }
       if (sentence_end_before(at)) { cut = at + 1; break; }
     }
     if (cut == 0) {

@@ -54,29 +54,30 @@ TEST(AtomicFile, AnOutputThatCannotBeCreatedFailsAtOnce) {
   }
 }
 
-// A killed run's `.NAME.tmpNNN`, older than this process and locked by no one, is swept by the
+// A killed run's `.NAME.fapcast-tmpNNN`, older than this process and locked by no one, is swept by the
 // next write to its directory; names not of that pattern, newer files and locked ones stay.
 TEST(AtomicFile, TheNextWriteSweepsAKilledRunsTemporaryFiles) {
   const fs::path dir = test::make_temp_dir("sweep");
   const std::time_t hour_ago = std::time(nullptr) - 3600;
-  touch(dir / ".o.fap.tmp123", hour_ago);      // stale: swept
-  touch(dir / ".other.json.tmp9", hour_ago);   // stale, another output's: swept too
-  touch(dir / ".o.fap.tmpx", hour_ago);        // not our pattern
-  touch(dir / "o.fap.tmp7", hour_ago);         // not hidden: not ours
-  touch(dir / ".notes.tmp", hour_ago);         // no digits
-  touch(dir / ".fresh.fap.tmp5", std::time(nullptr) + 60);  // not older than this run
-  touch(dir / ".locked.fap.tmp6", hour_ago);   // a running fapcast holds its lock
-  const int held = ::open((dir / ".locked.fap.tmp6").c_str(), O_RDONLY);
+  touch(dir / ".o.fap.fapcast-tmp123", hour_ago);      // stale: swept
+  touch(dir / ".other.json.fapcast-tmp9", hour_ago);   // stale, another output's: swept too
+  touch(dir / ".o.fap.fapcast-tmpx", hour_ago);        // not our pattern
+  touch(dir / "o.fap.fapcast-tmp7", hour_ago);         // not hidden: not ours
+  touch(dir / ".notes.fapcast-tmp", hour_ago);         // no digits
+  touch(dir / ".config.json.tmp12345", hour_ago);      // another program's temporary file
+  touch(dir / ".fresh.fap.fapcast-tmp5", std::time(nullptr) + 60);  // not older than this run
+  touch(dir / ".locked.fap.fapcast-tmp6", hour_ago);   // a running fapcast holds its lock
+  const int held = ::open((dir / ".locked.fap.fapcast-tmp6").c_str(), O_RDONLY);
   ASSERT_GE(held, 0);
   ASSERT_EQ(::flock(held, LOCK_EX | LOCK_NB), 0);
-  EXPECT_TRUE(is_stale_temporary(dir / ".o.fap.tmp123"));
-  EXPECT_FALSE(is_stale_temporary(dir / ".locked.fap.tmp6"));
+  EXPECT_TRUE(is_stale_temporary(dir / ".o.fap.fapcast-tmp123"));
+  EXPECT_FALSE(is_stale_temporary(dir / ".locked.fap.fapcast-tmp6"));
 
   write_file_atomically(dir / "o.fap", "frames");
   ::close(held);
-  EXPECT_FALSE(fs::exists(dir / ".o.fap.tmp123"));
-  EXPECT_FALSE(fs::exists(dir / ".other.json.tmp9"));
-  for (const char* kept : {".o.fap.tmpx", "o.fap.tmp7", ".notes.tmp", ".fresh.fap.tmp5", ".locked.fap.tmp6"})
+  EXPECT_FALSE(fs::exists(dir / ".o.fap.fapcast-tmp123"));
+  EXPECT_FALSE(fs::exists(dir / ".other.json.fapcast-tmp9"));
+  for (const char* kept : {".o.fap.fapcast-tmpx", "o.fap.fapcast-tmp7", ".notes.fapcast-tmp", ".config.json.tmp12345", ".fresh.fap.fapcast-tmp5", ".locked.fap.fapcast-tmp6"})
     EXPECT_TRUE(fs::exists(dir / kept)) << kept;
   EXPECT_EQ(read_file(dir / "o.fap"), "frames");
 }
@@ -102,7 +103,7 @@ TEST(AtomicFile, OutputsCommittedTogetherAllAppearOrNone) {
   }
   EXPECT_FALSE(fs::exists(dir / "y.glb"));
   for (const auto& e : fs::directory_iterator(dir))
-    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+    EXPECT_EQ(e.path().filename().string().find("tmp"), std::string::npos) << e.path();
 }
 
 TEST(ReadFile, RefusesAFileOverItsLimitBeforeReading) {

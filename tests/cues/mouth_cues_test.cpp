@@ -141,15 +141,22 @@ TEST(MouthCues, DiphthongsChangeShapeAtSixtyPercent) {
 
 TEST(MouthCues, PausesHoldRelaxOrRestByLength) {
   // AA, a pause of `gap` cs, AA again.
-  const auto middle = [](std::int64_t gap) {
+  const auto middle = [](std::int64_t gap, MouthShapeSet drawn) {
     const auto phones = track({{Phone::SIL, 20}, {Phone::AA, 40}, {Phone::SIL, gap}, {Phone::AA, 40}, {Phone::SIL, 20}});
-    const auto cues = mouth_cues(phones, kCs, end_of(phones));
-    expect_well_formed(cues, Centiseconds{end_of(phones)}, MouthShapeSet::all());
+    MouthCueOptions options;
+    options.drawn = drawn;
+    const auto cues = mouth_cues(phones, kCs, end_of(phones), options);
+    expect_well_formed(cues, Centiseconds{end_of(phones)}, drawn);
     return at(cues, 60 + gap / 2);
   };
-  EXPECT_EQ(middle(8), MouthShape::D);   // < 12 cs: the mouth holds its shape
-  EXPECT_EQ(middle(25), MouthShape::C);  // 12-35 cs: it relaxes a step (D -> C)
-  EXPECT_EQ(middle(60), MouthShape::X);  // longer: it rests
+  EXPECT_EQ(middle(8, MouthShapeSet::all()), MouthShape::D);   // < 12 cs: the mouth holds its shape
+  EXPECT_EQ(middle(25, MouthShapeSet::all()), MouthShape::C);  // 12-35 cs: it relaxes a step (D -> C)
+  EXPECT_EQ(middle(60, MouthShapeSet::all()), MouthShape::X);  // longer: it rests
+  // The same rules when the drawings have no X: a short pause still holds D (it does not snap
+  // shut to A), and only the rest is shown as A.
+  EXPECT_EQ(middle(5, *drawn_shapes("")), MouthShape::D);
+  EXPECT_EQ(middle(25, *drawn_shapes("")), MouthShape::C);
+  EXPECT_EQ(middle(60, *drawn_shapes("")), MouthShape::A);
 }
 
 TEST(MouthCues, SilenceAndUncoveredTimeRest) {

@@ -182,6 +182,20 @@ TEST(Chunks, LongTextIsCutAtSentenceEndsWithinTheLimit) {
   }
 }
 
+// Chinese, Hindi and Urdu write no space after a full stop: the chunks still end at one.
+TEST(Chunks, ScriptsWithoutSpacesAreCutAfterTheirFullStops) {
+  for (const std::string sentence : {"我们今天去公园散步。", "हम आज पार्क में टहलने गए।", "ہم آج پارک گئے۔"}) {
+    std::string text;
+    while (text.size() <= 3000) text += sentence;
+    const auto starts = chunk_offsets(text, 1000);
+    ASSERT_GE(starts.size(), 3u) << sentence;
+    for (std::size_t i = 1; i < starts.size(); ++i) {
+      EXPECT_EQ(text.compare(starts[i], sentence.size(), sentence), 0) << sentence << " chunk " << i;
+      EXPECT_LE(starts[i] - starts[i - 1], 1000u);
+    }
+  }
+}
+
 TEST(Chunks, SentenceWithoutEndsIsCutAtSpacesThenAtCodePoints) {
   std::string words;
   while (words.size() < 3000) words += "word ";

@@ -338,6 +338,8 @@ TEST(HostileLoopback, JunkDoesNotKeepTheReceiverWaiting) {
   for (int i = 0; i < 40; ++i) {  // 2 s of junk at 20 datagrams/s
     junk.send(forged(0xbad, static_cast<std::uint16_t>(i), 0, {0x80, 1, 2}));
     junk.send(Bytes{1, 2, 3});
+    // A unit that decodes, each from a new source: held on probation, never a run, never accepted.
+    junk.send(SentStream(1, {25, 1}, 1, {0x1000u + static_cast<std::uint32_t>(i), 7, 0}).packets[0]);
     std::this_thread::sleep_for(50ms);
     if (std::chrono::steady_clock::now() - start > 1s) break;
   }

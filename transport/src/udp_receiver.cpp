@@ -139,7 +139,10 @@ ReceiveReport UdpReceiver::run(RtpStreamReceiver& stream, const ReceiveLimits& l
               ++report.filtered;
               return;
             }
-            if (!stream.on_datagram({buffer.data(), n}, now, units)) {
+            // Only packets of the validated source feed the idle timer: a decodable packet held
+            // on probation is not yet accepted (a stream of one-packet sources would keep it alive).
+            const std::uint64_t accepted_before = stream.stats().accepted;
+            if (!stream.on_datagram({buffer.data(), n}, now, units) && stream.stats().accepted > accepted_before) {
               last_accepted = now;
               if (stream.locked_ssrc()) source_address = from.address();
             }

@@ -19,7 +19,7 @@ inline constexpr std::uint64_t kDefaultMaxFileBytes = 1ull << 30;  // 1 GiB
 std::string read_file(const std::filesystem::path& path,
                       std::uint64_t max_bytes = kDefaultMaxFileBytes);
 
-// An output being written: the temporary file `.NAME.tmpNNN` (NNN decimal digits) beside `path`
+// An output being written: the temporary file `.NAME.fapcast-tmpNNN` (NNN decimal digits) beside `path`
 // is created and locked (flock) at construction, so a command learns that it cannot write its
 // output before it does its work; commit() writes it out, fsyncs and renames it over `path`.
 // A file never committed is removed by the destructor, on every failure path that unwinds.

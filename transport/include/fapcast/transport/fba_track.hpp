@@ -51,7 +51,7 @@ struct ReceivedTrackStats {
   std::uint64_t frame_number_mismatches = 0;  // intra units whose frame_number disagrees with
                                               // their timestamp (the timestamp wins)
   std::int64_t first_sender_frame = 0;  // the sender's index of output frame 0
-  std::uint64_t report_mismatches = 0;  // a sender report that no frame index fits (not used)
+  std::uint64_t report_mismatches = 0;  // a sender report no frame index fits: the lost start not placed
   std::uint64_t standard_units = 0;   // decoded units of the standard syntax ...
   std::uint64_t fapcast_units = 0;    // ... and of the fapcast profile (the payload header's F bit)
   int fap_quant = -1;                 // of the last intra unit decoded (-1: none)

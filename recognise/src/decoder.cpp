@@ -58,9 +58,10 @@ struct Decoder::Impl {
   void run(std::span<const std::int16_t> samples) {
     std::vector<std::int16_t> padded(samples.size() + 2 * kPadSamples, 0);
     std::copy(samples.begin(), samples.end(), padded.begin() + kPadSamples);
-    if (ps_start_utt(ps) < 0) throw std::runtime_error("pocketsphinx: cannot start an utterance");
-    ps_process_raw(ps, padded.data(), padded.size(), FALSE, TRUE);
-    ps_end_utt(ps);
+    if (ps_start_utt(ps) < 0) throw std::logic_error("pocketsphinx: cannot start an utterance");
+    // A decoder that refuses audio it was built for is a fault here, not in the recording.
+    if (ps_process_raw(ps, padded.data(), padded.size(), FALSE, TRUE) < 0 || ps_end_utt(ps) < 0)
+      throw std::logic_error("pocketsphinx: the decoder refused the audio");
   }
 
   std::optional<std::vector<DecodedSegment>> best_path() {
@@ -99,7 +100,7 @@ Decoder::Decoder(const DecoderSettings& settings) : impl_(std::make_unique<Impl>
                               "-pbeam", pbeam.c_str(), "-wbeam", wbeam.c_str(), "-remove_silence", "no",
                               "-dither", "yes", "-seed", "1", "-fsgusefiller", "no", "-fsgusealtpron", "no",
                               "-bestpath", "no", "-logfn", "/dev/null", nullptr);
-  if (!impl_->config) throw std::runtime_error("pocketsphinx: bad configuration");
+  if (!impl_->config) throw std::logic_error("pocketsphinx: bad configuration");
   impl_->ps = ps_init(impl_->config);
   if (!impl_->ps) throw std::runtime_error("pocketsphinx: cannot open the model in " + hmm);
   impl_->nats_per_unit = std::log(logmath_get_base(ps_get_logmath(impl_->ps))) * (1 << 10);
@@ -168,7 +169,7 @@ void Decoder::add_words(const std::vector<std::pair<std::string, std::string>>& 
     const auto& [word, phones] = *missing[i];
     // the search's lexicon is rebuilt once, after the last word
     if (ps_add_word(impl_->ps, word.c_str(), phones.c_str(), i + 1 == missing.size()) < 0)
-      throw std::runtime_error("pocketsphinx: cannot add the word '" + word + "' /" + phones + "/");
+      throw std::logic_error("pocketsphinx: cannot add the word '" + word + "' /" + phones + "/");
   }
 }
 
@@ -192,7 +193,7 @@ std::optional<std::vector<DecodedSegment>> Decoder::decode(const Grammar& g, std
   }
   const int set = ps_set_fsg(impl_->ps, "grammar", fsg);
   fsg_model_free(fsg);  // the search keeps its own reference
-  if (set < 0) throw std::runtime_error("pocketsphinx: the grammar was refused (a word missing from the dictionary?)");
+  if (set < 0) throw std::logic_error("pocketsphinx: the grammar was refused (a word missing from the dictionary?)");
   ps_set_search(impl_->ps, "grammar");
   impl_->run(samples);
   return impl_->best_path();

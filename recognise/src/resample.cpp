@@ -39,7 +39,7 @@ Audio resample_mono(const Audio& audio, SampleRate rate) {
   data.output_frames = static_cast<long>(out.size());
   data.src_ratio = ratio;
   if (const int err = src_simple(&data, SRC_SINC_MEDIUM_QUALITY, 1); err != 0)
-    throw std::runtime_error(std::string("libsamplerate: ") + src_strerror(err));
+    throw std::logic_error(std::string("libsamplerate: ") + src_strerror(err));
   Audio result;
   result.sample_rate = rate;
   result.channels = 1;

@@ -361,15 +361,19 @@ SpeechAlignment SpeechAligner::align(const Audio& speech, const Transcript& tran
   };
 
   const auto path = pd.decode(phone_grammar(entries, false), s16.samples);
-  if (!path) return *diagnose();  // throws, or aligns at 100 fps when every word is there
-  SpeechAlignment a = reader.read(*path, transcript);
-  if (impl_->settings.word_edges)
-    if (const auto wpath = pd.decode(word_grammar(entries), s16.samples)) {
-      const auto edges = word_edges(*wpath, reader);
-      if (edges.size() == transcript.words.size()) snap_word_edges(a, edges, rate / 200);
-    }
-  finish_words(a);
-  if (std::any_of(a.words.begin(), a.words.end(), [](const SpeechWord& w) { return w.low_confidence; })) diagnose();
+  SpeechAlignment a;
+  if (path) {
+    a = reader.read(*path, transcript);
+    if (impl_->settings.word_edges)
+      if (const auto wpath = pd.decode(word_grammar(entries), s16.samples)) {
+        const auto edges = word_edges(*wpath, reader);
+        if (edges.size() == transcript.words.size()) snap_word_edges(a, edges, rate / 200);
+      }
+    finish_words(a);
+    if (std::any_of(a.words.begin(), a.words.end(), [](const SpeechWord& w) { return w.low_confidence; })) diagnose();
+  } else {
+    a = *diagnose();  // throws, or aligns at 100 fps when every word is there; then checked as any alignment
+  }
   double sum = 0, frames = 0;
   for (const auto& g : a.segments)
     if (g.kind == SpeechSegmentKind::phone) {

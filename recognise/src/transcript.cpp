@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
@@ -17,7 +18,28 @@ std::string detail_of(const InputError& e) {
   return at == std::string::npos ? what : what.substr(at + marker.size());
 }
 
-bool ascii_alnum(unsigned char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+bool ascii_alnum(char32_t c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+
+// The code point at text[i] and its length in bytes (the text is valid UTF-8: validate_text).
+std::pair<char32_t, std::size_t> code_point_at(std::string_view text, std::size_t i) {
+  const auto b = static_cast<unsigned char>(text[i]);
+  const std::size_t n = b < 0x80 ? 1 : b < 0xE0 ? 2 : b < 0xF0 ? 3 : 4;
+  char32_t c = n == 1 ? b : n == 2 ? (b & 0x1F) : n == 3 ? (b & 0x0F) : (b & 0x07);
+  for (std::size_t k = 1; k < n && i + k < text.size(); ++k) c = (c << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
+  return {c, n};
+}
+
+// Punctuation and spaces outside ASCII (no-break space, « », dashes, curly quotes, ellipsis, CJK
+// and full-width punctuation) separate words like ASCII punctuation does.
+bool separates_words(char32_t c) {
+  return c < 0x80 ? !ascii_alnum(c)
+                  : (c >= 0x00A0 && c <= 0x00BF) || c == 0x00D7 || c == 0x00F7 || (c >= 0x2000 && c <= 0x206F) ||
+                        (c >= 0x2E00 && c <= 0x2E7F) || (c >= 0x3000 && c <= 0x303F) || (c >= 0xFF01 && c <= 0xFF0F) ||
+                        (c >= 0xFF1A && c <= 0xFF20) || (c >= 0xFF3B && c <= 0xFF40) || (c >= 0xFF5B && c <= 0xFF65);
+}
+
+// An apostrophe, ASCII or the typographic U+2019.
+bool is_apostrophe(char32_t c) { return c == '\'' || c == 0x2019; }
 
 }  // namespace
 
@@ -31,25 +53,27 @@ Transcript parse_transcript(std::string_view text, const std::string& source) {
   t.text = std::string(text);
   std::size_t i = 0;
   while (i < text.size()) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    if (!ascii_alnum(c) && c < 0x80) {
-      ++i;
+    const auto [c, n] = code_point_at(text, i);
+    if (separates_words(c)) {
+      i += n;
       continue;
     }
     std::size_t j = i;
-    for (; j < text.size(); ++j) {
-      const auto d = static_cast<unsigned char>(text[j]);
-      if (ascii_alnum(d) || d >= 0x80) continue;
-      // an apostrophe inside a word ("don't"), not at its end ("the boys' ")
-      if (d == '\'' && j + 1 < text.size()) {
-        const auto e = static_cast<unsigned char>(text[j + 1]);
-        if (ascii_alnum(e) || e >= 0x80) continue;
+    std::string key;
+    while (j < text.size()) {
+      const auto [d, m] = code_point_at(text, j);
+      if (separates_words(d)) {
+        // an apostrophe inside a word ("don't", "don’t"), not at its end ("the boys' ")
+        if (!is_apostrophe(d) || j + m >= text.size() || separates_words(code_point_at(text, j + m).first)) break;
+        key += '\'';
+      } else if (d >= 'A' && d <= 'Z') {
+        key += static_cast<char>(d - 'A' + 'a');
+      } else {
+        key.append(text.substr(j, m));
       }
-      break;
+      j += m;
     }
-    TranscriptWord w{std::string(text.substr(i, j - i)), {}, i};
-    for (char ch : w.text) w.key += (ch >= 'A' && ch <= 'Z') ? static_cast<char>(ch - 'A' + 'a') : ch;
-    t.words.push_back(std::move(w));
+    t.words.push_back(TranscriptWord{std::string(text.substr(i, j - i)), std::move(key), i});
     i = j;
   }
   if (t.words.empty()) throw InputError({source, std::nullopt, std::nullopt}, "transcript-empty", "no word to align");

@@ -48,7 +48,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   receiver.flush(units);
   for (const auto& u : units) (void)track.add(u);
   const auto& sr = receiver.last_sender_report();
-  track.finish(sr ? std::optional<std::uint32_t>(sr->packet_count) : std::nullopt);
+  // As recv does: the report made during the stream places a lost start (hostile reports reach it).
+  track.finish(sr ? std::optional<std::uint32_t>(sr->packet_count) : std::nullopt, receiver.anchor_sender_report());
   if (static_cast<std::int64_t>(track.sequence().frames.size()) > track.max_frames()) std::abort();
   return 0;
 }

@@ -33,6 +33,16 @@ TEST(Transcript, NonAsciiLettersStayInTheWord) {
   EXPECT_EQ(t.words[1].byte_offset, 6u);
 }
 
+// Typographic punctuation separates words as ASCII punctuation does; a typographic apostrophe
+// inside a word is the dictionary's apostrophe.
+TEST(Transcript, TypographicPunctuationSeparatesWords) {
+  const Transcript t = parse_transcript("\u201cWait \u2014 don\u2019t\u2026\u201d\u00a0\u00abno\u00bb", "t.txt");
+  ASSERT_EQ(t.words.size(), 3u);
+  EXPECT_EQ(t.words[0], (TranscriptWord{"Wait", "wait", 3}));
+  EXPECT_EQ(t.words[1], (TranscriptWord{"don\u2019t", "don't", 12}));
+  EXPECT_EQ(t.words[2].key, "no");
+}
+
 TEST(Transcript, NoWordIsRefused) {
   try {
     (void)parse_transcript(" ... -- \n", "empty.txt");

@@ -344,9 +344,9 @@ TEST(HostileLoopback, JunkDoesNotKeepTheReceiverWaiting) {
     if (std::chrono::steady_clock::now() - start > 1s) break;
   }
   rx.join();
-  const auto took = std::chrono::steady_clock::now() - start;
+  // It ended while the junk still came (idle 300 ms after the start), not 300 ms after the junk.
   EXPECT_EQ(rx.report.end, ReceiveEnd::kIdle);
-  EXPECT_LT(took, 1200ms);
+  EXPECT_LT(rx.ended - start, 800ms);
   EXPECT_GT(rx.stream.stats().malformed + rx.stream.stats().probation_discarded, 0u);
 }
 

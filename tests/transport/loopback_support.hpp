@@ -8,6 +8,7 @@
 #include "fapcast/transport/udp_receiver.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <random>
 #include <set>
 #include <thread>
@@ -38,6 +39,7 @@ struct ReceiverThread {
   std::vector<ReceivedUnit> units;
   std::uint64_t filtered = 0;
   ReceiveReport report;
+  std::chrono::steady_clock::time_point ended;  // when run() returned
   std::thread thread;
 
   ReceiverThread(udp::endpoint listen, ReceiverOptions options,
@@ -50,6 +52,7 @@ struct ReceiverThread {
       limits.max_duration = std::chrono::seconds(30);
       report = receiver.run(stream, limits, [this](ReceivedUnit&& u) { units.push_back(std::move(u)); });
       filtered = report.filtered;
+      ended = std::chrono::steady_clock::now();
     });
   }
   void join() {

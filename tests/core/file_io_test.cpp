@@ -94,16 +94,28 @@ TEST(AtomicFile, OutputsCommittedTogetherAllAppearOrNone) {
   EXPECT_EQ(read_file(dir / "x.glb"), "glb");
   EXPECT_EQ(read_file(dir / "x.wav"), "wav");
 
-  fs::create_directories(dir / "y.wav" / "in-the-way");  // a rename over it fails
   {
     AtomicFile a(dir / "y.glb"), b(dir / "y.wav");
     a.write("glb");
     b.write("wav");
+    fs::create_directories(dir / "y.wav" / "in-the-way");  // made meanwhile: the rename over it fails
     EXPECT_THROW(commit_together({&a, &b}), std::runtime_error);
   }
   EXPECT_FALSE(fs::exists(dir / "y.glb"));
   for (const auto& e : fs::directory_iterator(dir))
     EXPECT_EQ(e.path().filename().string().find("tmp"), std::string::npos) << e.path();
+}
+
+// An output that names a folder is refused when it is opened, before any work is done for it.
+TEST(AtomicFile, AFolderIsNoOutput) {
+  const fs::path dir = test::make_temp_dir("folder");
+  fs::create_directories(dir / "o.fap");
+  try {
+    AtomicFile f(dir / "o.fap");
+    FAIL();
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("o.fap: is a directory, not a file"), std::string::npos) << e.what();
+  }
 }
 
 TEST(ReadFile, RefusesAFileOverItsLimitBeforeReading) {

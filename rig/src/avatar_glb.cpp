@@ -117,6 +117,8 @@ Avatar read_avatar(std::string_view b, const std::string& source, const AvatarLi
     a.json = nlohmann::json::parse(b.substr(20, json_length));
   } catch (const nlohmann::json::parse_error& e) {
     fail(source, 20 + e.byte - (e.byte > 0 ? 1 : 0), "glb-syntax", e.what());
+  } catch (const nlohmann::json::exception& e) {  // a number out of range (1e523), ...: no byte given
+    fail(source, 20, "glb-syntax", e.what());
   }
   if (!a.json.is_object()) fail(source, 20, "glb-syntax", "the JSON chunk is not an object");
   if (const nlohmann::json* required = member(a.json, "extensionsRequired"); required && required->is_array())

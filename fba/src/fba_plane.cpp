@@ -463,6 +463,10 @@ void read_fapcast_low_level(FbaCodingState& s, FbaBitReader& in, FapFrame& out) 
     const int direct = f.predicted_max - f.predicted_min + 1;
     const int symbol = ad.decode(s.predicted.fap[f.index]);
     const std::int64_t value = symbol < direct ? std::int64_t{symbol} + f.predicted_min : read_escaped(ad, s);
+    if (value < -kMaxLevel || value > kMaxLevel) {  // checked before the sum: an escape can claim 2^63 - 1
+      in.fail(fba_errc::bad_field);
+      break;
+    }
     const std::int64_t e = value + (f.reference < 0 ? 0 : fba_reference_part(f.coefficient, s.levels[static_cast<std::size_t>(f.reference)]));
     if (e < -kMaxLevel || e > kMaxLevel) {
       in.fail(fba_errc::bad_field);  // no level of an encoder's

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "fapcast/core/input_error.hpp"
+#include "fapcast/core/utf8.hpp"
 #include "fapcast/phonetics/ipa_features.hpp"
 #include "fapcast/phonetics/phone_map.hpp"
 
@@ -92,8 +93,7 @@ std::string_view whole_code_points(std::string_view name) {
   std::size_t lead = name.size();
   while (lead > 0 && (static_cast<unsigned char>(name[lead - 1]) & 0xC0) == 0x80) --lead;
   if (lead == 0) return name;
-  const auto c = static_cast<unsigned char>(name[lead - 1]);
-  const std::size_t n = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 1;
+  const std::size_t n = std::max<std::size_t>(utf8_sequence_length(name[lead - 1]), 1);
   return name.size() - (lead - 1) < n ? name.substr(0, lead - 1) : name;
 }
 
@@ -135,23 +135,10 @@ namespace {
 void scan_text(std::string_view text, const std::string& source, std::size_t base, std::vector<std::size_t>* offsets) {
   std::size_t i = 0;
   while (i < text.size()) {
-    const auto c = static_cast<unsigned char>(text[i]);
-    std::size_t n = 0;
-    char32_t cp = 0;
-    if (c < 0x80) { n = 1; cp = c; }
-    else if ((c & 0xE0) == 0xC0) { n = 2; cp = c & 0x1F; }
-    else if ((c & 0xF0) == 0xE0) { n = 3; cp = c & 0x0F; }
-    else if ((c & 0xF8) == 0xF0) { n = 4; cp = c & 0x07; }
-    else throw text_error(source, base + i, "invalid-utf8: bad lead byte");
-    if (i + n > text.size()) throw text_error(source, base + i, "invalid-utf8: truncated sequence");
-    for (std::size_t k = 1; k < n; ++k) {
-      const auto cc = static_cast<unsigned char>(text[i + k]);
-      if ((cc & 0xC0) != 0x80) throw text_error(source, base + i, "invalid-utf8: bad continuation byte");
-      cp = (cp << 6) | (cc & 0x3F);
-    }
-    static constexpr char32_t kMinForLength[] = {0, 0, 0x80, 0x800, 0x10000};
-    if (cp < kMinForLength[n]) throw text_error(source, base + i, "invalid-utf8: overlong encoding");
-    if (cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) throw text_error(source, base + i, "invalid-utf8: not a scalar value");
+    const Utf8CodePoint decoded = decode_utf8_at(text, i);
+    if (decoded.error) throw text_error(source, base + i, std::string("invalid-utf8: ") + utf8_error_text(*decoded.error));
+    const char32_t cp = decoded.value;
+    const std::size_t n = decoded.bytes;
     const bool control = (cp < 0x20 && cp != '\t' && cp != '\n' && cp != '\r') ||
                          (cp >= 0x7F && cp < 0xA0);
     if (control) throw text_error(source, base + i, "control-character: U+" + std::to_string(static_cast<unsigned>(cp)) + " (decimal)");

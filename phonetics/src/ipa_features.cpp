@@ -1,5 +1,7 @@
 #include "fapcast/phonetics/ipa_features.hpp"
 
+#include "fapcast/core/utf8.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -208,21 +210,13 @@ std::vector<CodePoint> decode(std::string_view text, std::string_view source) {
   std::vector<CodePoint> out;
   std::size_t i = 0;
   while (i < text.size()) {
-    const auto lead = static_cast<unsigned char>(text[i]);
-    std::size_t n = lead < 0x80 ? 1 : (lead & 0xE0) == 0xC0 ? 2 : (lead & 0xF0) == 0xE0 ? 3 : (lead & 0xF8) == 0xF0 ? 4 : 0;
-    if (n == 0 || i + n > text.size()) {
+    const Utf8CodePoint decoded = decode_utf8_at(text, i);
+    if (decoded.error) {
       throw std::invalid_argument(std::string(source) + ": invalid UTF-8 at byte " + std::to_string(i) +
                                   " in phoneme '" + shown(text) + "'");
     }
-    char32_t c = n == 1 ? lead : lead & (0x7F >> n);
-    for (std::size_t k = 1; k < n; ++k) {
-      const auto next = static_cast<unsigned char>(text[i + k]);
-      if ((next & 0xC0) != 0x80) {
-        throw std::invalid_argument(std::string(source) + ": invalid UTF-8 at byte " + std::to_string(i) +
-                                    " in phoneme '" + shown(text) + "'");
-      }
-      c = (c << 6) | (next & 0x3F);
-    }
+    const char32_t c = decoded.value;
+    const std::size_t n = decoded.bytes;
     out.push_back({c, text.substr(i, n)});
     i += n;
   }

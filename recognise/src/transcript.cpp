@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "fapcast/core/input_error.hpp"
+#include "fapcast/core/utf8.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
 
 namespace fapcast {
@@ -22,11 +23,8 @@ bool ascii_alnum(char32_t c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <
 
 // The code point at text[i] and its length in bytes (the text is valid UTF-8: validate_text).
 std::pair<char32_t, std::size_t> code_point_at(std::string_view text, std::size_t i) {
-  const auto b = static_cast<unsigned char>(text[i]);
-  const std::size_t n = b < 0x80 ? 1 : b < 0xE0 ? 2 : b < 0xF0 ? 3 : 4;
-  char32_t c = n == 1 ? b : n == 2 ? (b & 0x1F) : n == 3 ? (b & 0x0F) : (b & 0x07);
-  for (std::size_t k = 1; k < n && i + k < text.size(); ++k) c = (c << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3F);
-  return {c, n};
+  const Utf8CodePoint c = decode_utf8_at(text, i);
+  return {c.value, c.bytes};
 }
 
 // Punctuation and spaces outside ASCII (no-break space, « », dashes, curly quotes, ellipsis, CJK

@@ -2,7 +2,6 @@
 
 #include <optional>
 #include <string>
-#include <utility>
 
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/core/utf8.hpp"
@@ -20,12 +19,6 @@ std::string detail_of(const InputError& e) {
 }
 
 bool ascii_alnum(char32_t c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-
-// The code point at text[i] and its length in bytes (the text is valid UTF-8: validate_text).
-std::pair<char32_t, std::size_t> code_point_at(std::string_view text, std::size_t i) {
-  const Utf8CodePoint c = decode_utf8_at(text, i);
-  return {c.value, c.bytes};
-}
 
 // Punctuation and spaces outside ASCII (no-break space, « », dashes, curly quotes, ellipsis, CJK
 // and full-width punctuation) separate words like ASCII punctuation does.
@@ -51,18 +44,20 @@ Transcript parse_transcript(std::string_view text, const std::string& source) {
   t.text = std::string(text);
   std::size_t i = 0;
   while (i < text.size()) {
-    const auto [c, n] = code_point_at(text, i);
-    if (separates_words(c)) {
-      i += n;
+    const Utf8CodePoint c = decode_utf8_at(text, i);  // valid: validate_text passed
+    if (separates_words(c.value)) {
+      i += c.bytes;
       continue;
     }
     std::size_t j = i;
     std::string key;
     while (j < text.size()) {
-      const auto [d, m] = code_point_at(text, j);
+      const Utf8CodePoint next = decode_utf8_at(text, j);
+      const char32_t d = next.value;
+      const std::size_t m = next.bytes;
       if (separates_words(d)) {
         // an apostrophe inside a word ("don't", "don’t"), not at its end ("the boys' ")
-        if (!is_apostrophe(d) || j + m >= text.size() || separates_words(code_point_at(text, j + m).first)) break;
+        if (!is_apostrophe(d) || j + m >= text.size() || separates_words(decode_utf8_at(text, j + m).value)) break;
         key += '\'';
       } else if (d >= 'A' && d <= 'Z') {
         key += static_cast<char>(d - 'A' + 'a');

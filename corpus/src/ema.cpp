@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <optional>
@@ -20,6 +21,8 @@ constexpr double kHundredthsPerMm = 100;    // MOCHA stores 1/100 mm
 constexpr std::int64_t kMaxChannels = 1000;  // MOCHA has 20; bounds the names and the row width
 constexpr double kStepTolerance = 0.1;       // a time may miss its grid point by 10 % of a step
 constexpr double kWholeRateTolerance = 1e-4; // a rate within 0.01 % of a whole number of Hz is it
+constexpr double kMinRateHz = 1;            // EMA runs at 100-1250 Hz; the bounds keep a
+constexpr double kMaxRateHz = 100000;       // resampled duration and frame numbers sane
 constexpr std::string_view kMagic = "EST_File";
 
 // MOCHA's channel layout (the EST header of every MOCHA-TIMIT .ema file): the headerless MOCHAtools
@@ -29,11 +32,19 @@ constexpr std::array<std::string_view, 20> kMochaChannels = {
     "ui_x", "li_x", "ul_x", "ll_x", "tt_x", "ui_y", "li_y", "ul_y", "ll_y", "tt_y",
     "tb_x", "td_x", "v_x",  "****", "bn_x", "tb_y", "td_y", "v_y",  "****", "bn_y"};
 
+// A time (or rate) for a message: 6 significant digits, as EST's %f times carry them.
+std::string seconds(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
 // What the header (or, headerless, MOCHA's layout) says about the data.
 struct Layout {
   std::vector<std::string> channels;           // C names
   bool breaks = true;                          // a break-flag column after the time
   std::optional<double> frame_shift_s;         // EST FrameShift
+  std::uint64_t frame_shift_line = 0;          // its line
   std::optional<std::int64_t> frames;          // NumFrames (EST only)
   std::uint64_t frames_line = 0;               // its line
   std::uint64_t channels_line = 0;             // the NumChannels line (0: headerless)
@@ -95,7 +106,7 @@ class FrameSink {
   std::size_t frames() const { return times_.size(); }
 
   // The frames on their time grid. `at_frame(k, rule, detail)` throws at frame k's location.
-  MarkerFrames<Millimetres> finish(const std::vector<CoilChannels>& coils, const Layout& layout,
+  MarkerFrames<Millimetres> finish(const std::vector<CoilChannels>& coils, const Layout& layout, const std::string& source,
                                    const std::function<void(std::size_t, const char*, const std::string&)>& at_frame,
                                    const std::function<void(const char*, const std::string&)>& at_file) const {
     const std::size_t n = times_.size();
@@ -103,21 +114,31 @@ class FrameSink {
     if (n >= 2) {
       step = (times_.back() - times_.front()) / static_cast<double>(n - 1);
       if (!(step > 0) || !std::isfinite(step)) {
-        at_frame(n - 1, "ema-time-step", "times do not increase (first " + shortest_decimal(times_.front()) +
-                                             " s, last " + shortest_decimal(times_.back()) + " s)");
+        at_frame(n - 1, "ema-time-step", "times do not increase (first " + seconds(times_.front()) + " s, last " +
+                                             seconds(times_.back()) + " s)");
+      }
+      // Each step near the mean one (a dropped frame, a repeated time), then each time near its
+      // grid point (a slow drift).
+      for (std::size_t k = 1; k < n; ++k) {
+        const double d = times_[k] - times_[k - 1];
+        if (std::abs(d - step) > kStepTolerance * step) {
+          at_frame(k, "ema-time-step", "time " + seconds(times_[k]) + " s follows " + seconds(times_[k - 1]) +
+                                           " s: a step of " + seconds(d) + " s where the mean step is " +
+                                           seconds(step) + " s (a frame dropped, or the rate not constant)");
+        }
       }
       for (std::size_t k = 0; k < n; ++k) {
         const double expected = times_.front() + static_cast<double>(k) * step;
         if (std::abs(times_[k] - expected) > kStepTolerance * step) {
-          at_frame(k, "ema-time-step", "time " + shortest_decimal(times_[k]) + " s is off the grid of " +
-                                           shortest_decimal(step) + " s steps from " +
-                                           shortest_decimal(times_.front()) + " s (expected " +
-                                           shortest_decimal(expected) + " s)");
+          at_frame(k, "ema-time-step", "time " + seconds(times_[k]) + " s drifts off the grid of " + seconds(step) +
+                                           " s steps from " + seconds(times_.front()) + " s (expected " +
+                                           seconds(expected) + " s)");
         }
       }
       if (layout.frame_shift_s && std::abs(step / *layout.frame_shift_s - 1) > kStepTolerance) {
-        at_file("ema-frame-shift", "FrameShift " + shortest_decimal(*layout.frame_shift_s) +
-                                       " s disagrees with the time column's step " + shortest_decimal(step) + " s");
+        fail_at_line(source, layout.frame_shift_line, "ema-frame-shift",
+                     "FrameShift " + seconds(*layout.frame_shift_s) + " s disagrees with the time column's step " +
+                         seconds(step) + " s");
       }
     } else if (layout.frame_shift_s) {
       step = *layout.frame_shift_s;
@@ -129,17 +150,20 @@ class FrameSink {
     if (const double whole = std::round(rate); whole >= 1 && std::abs(rate - whole) <= kWholeRateTolerance * rate) {
       rate = whole;
     }
-    if (!std::isfinite(rate)) at_file("ema-no-rate", "the frame rate is not finite");
+    if (!(rate >= kMinRateHz && rate <= kMaxRateHz)) {
+      at_file("ema-rate", "the frame rate " + seconds(rate) + " Hz is outside " + seconds(kMinRateHz) + "-" +
+                              seconds(kMaxRateHz) + " Hz");
+    }
     std::int64_t first_frame = 0;
     if (n > 0) {
       const double start = times_.front() * rate;
       if (times_.front() < 0 || !(start < 9007199254740992.0)) {  // 2^53: a frame number a double counts exactly
-        at_frame(0, "ema-start-time", "the first time " + shortest_decimal(times_.front()) +
+        at_frame(0, "ema-start-time", "the first time " + seconds(times_.front()) +
                                           " s is negative or too large for a frame number");
       }
       if (std::abs(start - std::round(start)) > kStepTolerance) {
-        at_frame(0, "ema-start-time", "the first time " + shortest_decimal(times_.front()) +
-                                          " s is not a whole number of frames at " + shortest_decimal(rate) + " Hz");
+        at_frame(0, "ema-start-time", "the first time " + seconds(times_.front()) +
+                                          " s is not a whole number of frames at " + seconds(rate) + " Hz");
       }
       first_frame = static_cast<std::int64_t>(std::round(start));
     }
@@ -216,7 +240,7 @@ MarkerFrames<Millimetres> read_text_rows(std::string_view bytes, std::uint64_t f
   }
   const std::uint64_t end_line = first_line + lines.size();
   return sink.finish(
-      coils, layout,
+      coils, layout, source,
       [&](std::size_t k, const char* rule, const std::string& detail) {
         fail_at_line(source, frame_lines[k], rule, detail);
       },
@@ -244,9 +268,11 @@ MarkerFrames<Millimetres> read_binary_rows(std::string_view bytes, std::uint64_t
   const std::uint64_t available = bytes.size() - data_start;
   const auto frames = static_cast<std::uint64_t>(*layout.frames);
   if (frames > available / row_bytes) {
-    fail(data_start + available / row_bytes * row_bytes, "ema-truncated",
-         "NumFrames " + std::to_string(frames) + " frames of " + std::to_string(row_bytes) + " bytes at byte " +
-             std::to_string(data_start) + " run past the end of the " + std::to_string(bytes.size()) + "-byte file");
+    const std::uint64_t cut = available / row_bytes;
+    fail(data_start + cut * row_bytes, "ema-truncated",
+         "NumFrames " + std::to_string(frames) + " frames of " + std::to_string(row_bytes) + " bytes from byte " +
+             std::to_string(data_start) + " run past the end of the " + std::to_string(bytes.size()) +
+             "-byte file: frame " + std::to_string(cut) + (available % row_bytes != 0 ? " is cut" : " is missing"));
   }
   if (available > frames * row_bytes) {
     fail(data_start + frames * row_bytes, "ema-trailing-data",
@@ -275,7 +301,7 @@ MarkerFrames<Millimetres> read_binary_rows(std::string_view bytes, std::uint64_t
     });
   }
   return sink.finish(
-      coils, layout,
+      coils, layout, source,
       [&](std::size_t k, const char* rule, const std::string& detail) { fail(data_start + k * row_bytes, rule, detail); },
       [&](const char* rule, const std::string& detail) { fail(data_start, rule, detail); });
 }
@@ -370,6 +396,7 @@ MarkerFrames<Millimetres> read_est(std::string_view bytes, const std::string& so
       fail_at_line(source, s->line, "ema-frame-shift", "FrameShift \"" + excerpt(s->value) + "\" is not a positive number");
     }
     layout.frame_shift_s = shift;
+    layout.frame_shift_line = s->line;
   }
   layout.channels.assign(static_cast<std::size_t>(channels), "");
   std::vector<bool> named(static_cast<std::size_t>(channels), false);

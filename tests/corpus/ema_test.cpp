@@ -180,6 +180,29 @@ TEST(Ema, FrameShiftGivesTheRateOfASingleFrame) {
   EXPECT_EQ(m.at(0, 0), Eigen::Vector3d(1, 2, 0));
 }
 
+// The fuzz seeds: fsew0_001's first 12 frames headerless, and in MOCHA's EST header as EST
+// writes ASCII ("%f\t1 \t%f ...") and binary in both byte orders, frame 5 flagged a break.
+TEST(Ema, FuzzSeedsAreTheSameTwelveFramesInEachForm) {
+  const auto seeds = std::filesystem::path(FAPCAST_SOURCE_DIR) / "tests/fuzz/corpus/ema_fuzz";
+  const MarkerFrames<Millimetres> head = read_ema(file_bytes(seeds / "fsew0_head.ema"), "fsew0_head.ema");
+  ASSERT_EQ(head.frame_count(), 12);
+  EXPECT_EQ(head.frame_rate_hz, 500.0);
+  for (const char* name : {"fsew0_est_ascii.ema", "fsew0_est_le.ema", "fsew0_est_be.ema"}) {
+    const MarkerFrames<Millimetres> m = read_ema(file_bytes(seeds / name), name);
+    EXPECT_EQ(m.labels, head.labels) << name;
+    EXPECT_EQ(m.frame_rate_hz, 500.0) << name;
+    ASSERT_EQ(m.frame_count(), 12) << name;
+    for (Eigen::Index k = 0; k < 12; ++k) {
+      for (Eigen::Index c = 0; c < m.marker_count(); ++c) {
+        EXPECT_EQ(m.present(c, k), k != 5) << name << " frame " << k;
+        if (k != 5) {
+          EXPECT_LT((m.at(c, k) - head.at(c, k)).norm(), 1e-5) << name << " frame " << k;
+        }
+      }
+    }
+  }
+}
+
 TEST(Ema, RefusesWhatItCannotReadWithLocatedRules) {
   const std::string head = "EST_File Track\nDataType ascii\nNumFrames 2\nNumChannels 2\nBreaksPresent true\n";
   const std::string names = "Channel_0 ul_x\nChannel_1 ul_y\nEST_Header_End\n";

@@ -23,6 +23,8 @@ constexpr double kStepTolerance = 0.1;       // a time may miss its grid point b
 constexpr double kWholeRateTolerance = 1e-4; // a rate within 0.01 % of a whole number of Hz is it
 constexpr double kMinRateHz = 1;            // EMA runs at 100-1250 Hz; the bounds keep a
 constexpr double kMaxRateHz = 100000;       // resampled duration and frame numbers sane
+constexpr double kMaxStartS = 1e6;          // a first time up to 11.5 days (double times resolve any step)
+constexpr double kMaxValue = 1e8;           // 1 km in 1/100 mm: a coil value beyond is not a position
 constexpr std::string_view kMagic = "EST_File";
 
 // MOCHA's channel layout (the EST header of every MOCHA-TIMIT .ema file): the headerless MOCHAtools
@@ -157,9 +159,9 @@ class FrameSink {
     std::int64_t first_frame = 0;
     if (n > 0) {
       const double start = times_.front() * rate;
-      if (times_.front() < 0 || !(start < 9007199254740992.0)) {  // 2^53: a frame number a double counts exactly
-        at_frame(0, "ema-start-time", "the first time " + seconds(times_.front()) +
-                                          " s is negative or too large for a frame number");
+      if (!(times_.front() >= 0 && times_.front() <= kMaxStartS)) {
+        at_frame(0, "ema-start-time", "the first time " + seconds(times_.front()) + " s is outside 0-" +
+                                          seconds(kMaxStartS) + " s");
       }
       if (std::abs(start - std::round(start)) > kStepTolerance) {
         at_frame(0, "ema-start-time", "the first time " + seconds(times_.front()) +
@@ -228,8 +230,15 @@ MarkerFrames<Millimetres> read_text_rows(std::string_view bytes, std::uint64_t f
       valid = *flag;
     }
     const std::size_t base = layout.breaks ? 2 : 1;
+    auto value_at = [&](std::size_t i) {
+      const double v = number_at(i);
+      if (std::abs(v) > kMaxValue) {
+        fail_at_line(source, number, "ema-bad-number", "\"" + excerpt(cells[i]) + "\" is beyond +-1e8 (1 km)");
+      }
+      return v;
+    };
     sink.add(time_s, valid, [&](std::size_t m) {
-      return std::pair{number_at(base + coils[m].x), number_at(base + coils[m].y)};
+      return std::pair{value_at(base + coils[m].x), value_at(base + coils[m].y)};
     });
     frame_lines.push_back(number);
   }
@@ -295,9 +304,13 @@ MarkerFrames<Millimetres> read_binary_rows(std::string_view bytes, std::uint64_t
       if (!flag) fail(row + 4, "ema-bad-flag", "the break flag of frame " + std::to_string(k) + " is not 0 or 1");
       valid = *flag;
     }
+    auto value_at = [&](std::uint64_t at) {
+      const double v = finite_at(at, "a coil value");
+      if (std::abs(v) > kMaxValue) fail(at, "ema-bad-number", "a coil value of frame " + std::to_string(k) + " is beyond +-1e8 (1 km)");
+      return v;
+    };
     sink.add(time_s, valid, [&](std::size_t m) {
-      return std::pair{finite_at(row + channels_at + 4 * coils[m].x, "a coil value"),
-                       finite_at(row + channels_at + 4 * coils[m].y, "a coil value")};
+      return std::pair{value_at(row + channels_at + 4 * coils[m].x), value_at(row + channels_at + 4 * coils[m].y)};
     });
   }
   return sink.finish(

@@ -219,6 +219,9 @@ TEST(Ema, RefusesWhatItCannotReadWithLocatedRules) {
   EXPECT_EQ(error_of(head + names + "0 1 1 2\n0.002 2 1 2\n"), "t.ema:10: ema-bad-flag: the break flag \"2\" is not 0 or 1");
   EXPECT_EQ(error_of(head + names + "0 1 1 2\n0 1 1 2\n"),
             "t.ema:10: ema-time-step: times do not increase (first 0 s, last 0 s)");
+  EXPECT_EQ(error_of(head + names + "0 1 1 2\n0.002 1 1 2e8\n"), "t.ema:10: ema-bad-number: \"2e8\" is beyond +-1e8 (1 km)");
+  EXPECT_EQ(error_of(head + names + "2e6 1 1 2\n2000000.002 1 1 2\n"),
+            "t.ema:9: ema-start-time: the first time 2e+06 s is outside 0-1e+06 s");
   EXPECT_EQ(error_of("0 1 2\n"),
             "t.ema:1: ema-fields: a frame has 22 fields (time, break flag, 20 channels); this row has 3");
 }

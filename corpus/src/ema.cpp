@@ -34,8 +34,8 @@ constexpr std::array<std::string_view, 20> kMochaChannels = {
     "ui_x", "li_x", "ul_x", "ll_x", "tt_x", "ui_y", "li_y", "ul_y", "ll_y", "tt_y",
     "tb_x", "td_x", "v_x",  "****", "bn_x", "tb_y", "td_y", "v_y",  "****", "bn_y"};
 
-// A time (or rate) for a message: 6 significant digits, as EST's %f times carry them.
-std::string seconds(double v) {
+// A time or rate for a message: 6 significant digits, as EST's %f times carry them.
+std::string figure(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
@@ -116,31 +116,33 @@ class FrameSink {
     if (n >= 2) {
       step = (times_.back() - times_.front()) / static_cast<double>(n - 1);
       if (!(step > 0) || !std::isfinite(step)) {
-        at_frame(n - 1, "ema-time-step", "times do not increase (first " + seconds(times_.front()) + " s, last " +
-                                             seconds(times_.back()) + " s)");
+        at_frame(n - 1, "ema-time-step", "times do not increase (first " + figure(times_.front()) + " s, last " +
+                                             figure(times_.back()) + " s)");
       }
       // Each step near the mean one (a dropped frame, a repeated time), then each time near its
       // grid point (a slow drift).
       for (std::size_t k = 1; k < n; ++k) {
         const double d = times_[k] - times_[k - 1];
         if (std::abs(d - step) > kStepTolerance * step) {
-          at_frame(k, "ema-time-step", "time " + seconds(times_[k]) + " s follows " + seconds(times_[k - 1]) +
-                                           " s: a step of " + seconds(d) + " s where the mean step is " +
-                                           seconds(step) + " s (a frame dropped, or the rate not constant)");
+          at_frame(k, "ema-time-step", "time " + figure(times_[k]) + " s follows " + figure(times_[k - 1]) +
+                                           " s: a step of " + figure(d) + " s where the mean step is " +
+                                           figure(step) + " s (a frame dropped, or the rate not constant)");
         }
       }
       for (std::size_t k = 0; k < n; ++k) {
         const double expected = times_.front() + static_cast<double>(k) * step;
         if (std::abs(times_[k] - expected) > kStepTolerance * step) {
-          at_frame(k, "ema-time-step", "time " + seconds(times_[k]) + " s drifts off the grid of " + seconds(step) +
-                                           " s steps from " + seconds(times_.front()) + " s (expected " +
-                                           seconds(expected) + " s)");
+          at_frame(k, "ema-time-step", "time " + figure(times_[k]) + " s drifts off the grid of " + figure(step) +
+                                           " s steps from " + figure(times_.front()) + " s (expected " +
+                                           figure(expected) + " s)");
         }
       }
-      if (layout.frame_shift_s && std::abs(step / *layout.frame_shift_s - 1) > kStepTolerance) {
+      // FrameShift's grid must reach the last time within the same tolerance.
+      if (layout.frame_shift_s &&
+          std::abs(static_cast<double>(n - 1) * (step - *layout.frame_shift_s)) > kStepTolerance * step) {
         fail_at_line(source, layout.frame_shift_line, "ema-frame-shift",
-                     "FrameShift " + seconds(*layout.frame_shift_s) + " s disagrees with the time column's step " +
-                         seconds(step) + " s");
+                     "FrameShift " + figure(*layout.frame_shift_s) + " s disagrees with the time column's step " +
+                         figure(step) + " s");
       }
     } else if (layout.frame_shift_s) {
       step = *layout.frame_shift_s;
@@ -153,19 +155,19 @@ class FrameSink {
       rate = whole;
     }
     if (!(rate >= kMinRateHz && rate <= kMaxRateHz)) {
-      at_file("ema-rate", "the frame rate " + seconds(rate) + " Hz is outside " + seconds(kMinRateHz) + "-" +
-                              seconds(kMaxRateHz) + " Hz");
+      at_file("ema-rate", "the frame rate " + figure(rate) + " Hz is outside " + figure(kMinRateHz) + "-" +
+                              figure(kMaxRateHz) + " Hz");
     }
     std::int64_t first_frame = 0;
     if (n > 0) {
       const double start = times_.front() * rate;
       if (!(times_.front() >= 0 && times_.front() <= kMaxStartS)) {
-        at_frame(0, "ema-start-time", "the first time " + seconds(times_.front()) + " s is outside 0-" +
-                                          seconds(kMaxStartS) + " s");
+        at_frame(0, "ema-start-time", "the first time " + figure(times_.front()) + " s is outside 0-" +
+                                          figure(kMaxStartS) + " s");
       }
       if (std::abs(start - std::round(start)) > kStepTolerance) {
-        at_frame(0, "ema-start-time", "the first time " + seconds(times_.front()) +
-                                          " s is not a whole number of frames at " + seconds(rate) + " Hz");
+        at_frame(0, "ema-start-time", "the first time " + figure(times_.front()) +
+                                          " s is not a whole number of frames at " + figure(rate) + " Hz");
       }
       first_frame = static_cast<std::int64_t>(std::round(start));
     }

@@ -12,6 +12,7 @@
 #include "fapcast/talker/reference_talker.hpp"
 #include "fapcast/builder/voice_build.hpp"
 #include "fapcast/core/file_io.hpp"
+#include "default_voice_key.hpp"
 #include "recording_script_options.hpp"
 
 #ifndef FAPCAST_VERSION
@@ -43,7 +44,7 @@ fs::path default_voice_path() {
   } else {
     throw std::runtime_error("default voice: set FAPCAST_CACHE_DIR, XDG_CACHE_HOME or HOME (no cache directory)");
   }
-  return dir / "reference-seed1.fapv";
+  return dir / ("reference-seed" + std::to_string(kDefaultVoiceSeed) + "-" + default_voice_key(kDefaultVoiceSeed) + ".fapv");
 }
 
 std::string voice_build_time_utc() {

@@ -7,7 +7,8 @@
 namespace fapcast::cli {
 
 // $FAPCAST_CACHE_DIR, else $XDG_CACHE_HOME/fapcast, else ~/.cache/fapcast; then
-// reference-seed1.fapv.
+// reference-seed1-KEY.fapv, KEY = default_voice_key(1) (default_voice_key.hpp): a voice cached
+// from other talker tables or another build recipe is not used.
 std::filesystem::path default_voice_path();
 
 // The default voice's path, building it first when the cache has none: records the reference

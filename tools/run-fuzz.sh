@@ -25,8 +25,9 @@ cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DFAPCAST_TESTS=OFF -DFAPCAST_WERROR=ON >/dev/null
 
 # voice_structured_fuzz also starts from a real-size voice: the default voice (`fapcast say` builds
-# it on first use) when it exists, copied to build/fuzz/real-voice; inputs up to 16 MiB.
-default_voice=${FAPCAST_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/fapcast}/reference-seed1.fapv
+# it on first use, named by the key of the tables it was built from: the newest such file) when it
+# exists, copied to build/fuzz/real-voice; inputs up to 16 MiB.
+default_voice=$(ls -t "${FAPCAST_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/fapcast}"/reference-seed1-*.fapv 2>/dev/null | head -n 1)
 
 # run_one NAME: runs it for $seconds and prints "NAME<TAB>seconds<TAB>execs<TAB>cov<TAB>ft<TAB>corpus<TAB>findings".
 run_one() {

@@ -32,6 +32,7 @@ struct SourceCorpus {
   Eigen::MatrixXd frames;
   VoiceGraphData graph;
   Eigen::Matrix3Xd rigid_reference_cm;
+  RealisedArticulation articulation;  // the target prototypes' articulation part
   bool synthetic = false;
 };
 
@@ -48,6 +49,7 @@ SourceCorpus read_source_corpus(const CorpusListing& listing, const VoiceBuildOp
     corpus.synthetic = corpus.synthetic || take.synthetic;
     const PreprocessedTake stabilised = preprocess_take(take.markers, rigid_marker_rows(), corpus.rigid_reference_cm);
     parts.push_back(source_vectors_m(stabilised.frames, source));
+    corpus.articulation.add_take(take.phones, take.spans);
     const auto frames = static_cast<std::uint32_t>(parts.back().cols());
     const auto utterance = static_cast<std::uint32_t>(i);
     for (std::size_t s = 0; s < take.phones.size(); ++s) {
@@ -98,12 +100,14 @@ BuiltVoice build_voice(const std::filesystem::path& corpus_dir, const VoiceBuild
   const std::vector<SourcePrototype> prototypes = select_source_prototypes(corpus.frames, corpus.graph.states);
   const auto m = static_cast<Eigen::Index>(prototypes.size());
   std::vector<VisemeClass> classes;
+  std::vector<ChannelValues> realised;
   Eigen::MatrixXd centres(m, corpus.frames.rows());
   for (Eigen::Index i = 0; i < m; ++i) {
     classes.push_back(prototypes[static_cast<std::size_t>(i)].viseme);
+    realised.push_back(corpus.articulation.mean(classes.back()));
     centres.row(i) = corpus.frames.col(prototypes[static_cast<std::size_t>(i)].frame).transpose();
   }
-  const Eigen::MatrixXd targets = target_prototype_meshes(face, classes);
+  const Eigen::MatrixXd targets = target_prototype_meshes(face, classes, realised);
   summary.target_rank = centred_rank(targets);
   if (summary.target_rank < k || !(r_squared > 0))
     throw InputError({corpus_dir.string(), std::nullopt, std::nullopt}, "voice-prototypes",
@@ -196,7 +200,7 @@ BuiltVoice build_voice(const std::filesystem::path& corpus_dir, const VoiceBuild
                            {"frames_per_second", kVoiceFramesPerSecond}};
   if (listing.seed) provenance.parameters["corpus_seed"] = static_cast<double>(*listing.seed);
   provenance.notes = {{"prototype_rule", std::string(kSourcePrototypeRule)},
-                      {"target_prototypes", "spec/prototypes.tsv recipes over the ICT expression shapes"},
+                      {"target_prototypes", std::string(kTargetPrototypeRule)},
                       {"pca_route", std::string(pca_route_name(options.pca))},
                       {"source_vector", "the 34 feature points of spec/markers.tsv, metres, head frame (FPNT order)"}};
   if (!listing.label.empty()) provenance.notes["corpus_label"] = listing.label;

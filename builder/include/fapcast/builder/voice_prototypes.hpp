@@ -1,9 +1,12 @@
 #pragma once
 // The visual prototypes of Ma et al. 2006, section 3.4: one source prototype per search viseme
 // class, chosen from the corpus frames, and the matching target prototype on the target face, a
-// recipe of ICT expression-shape weights (spec/prototypes.tsv). The RBF map of section 3.5 is
-// trained on these pairs.
+// recipe of ICT expression-shape weights. A recipe is the reference articulation
+// (talker/articulation.hpp) as the corpus realises it at the class's centre frames, mapped to
+// shape weights, plus the class's details (spec/prototypes.tsv, spec/voice.md "Target
+// prototypes"). The RBF map of section 3.5 is trained on these pairs.
 #include <Eigen/Core>
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <span>
@@ -15,34 +18,66 @@
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/select/phone_graph.hpp"
 #include "fapcast/phonetics/viseme.hpp"
+#include "fapcast/talker/articulation.hpp"
 
 namespace fapcast {
 
-// One row of the target-prototype table: `weight` of ICT expression `shape` in class `viseme`.
+// One detail row: `weight` of ICT expression `shape` added to class `viseme`'s recipe.
 struct PrototypeShapeWeight {
   VisemeClass viseme;
   std::string_view shape;
   float weight;
 };
 
-// The recipes of all 21 classes, in spec/prototypes.tsv order (a test checks they agree).
-std::span<const PrototypeShapeWeight> target_prototype_table();
+// The details of all 21 classes, in spec/prototypes.tsv order (a test checks they agree).
+std::span<const PrototypeShapeWeight> target_prototype_details();
 
-// spec/prototypes.tsv as read from disk (5 columns).
+// spec/prototypes.tsv as read from disk (4 columns).
 struct PrototypeSpecRow {
   std::string viseme_class;  // viseme_class_name()
   std::string shape;
-  float weight = 0;
-  std::string basis;  // "articulation", "articulation+detail" or "detail"
-  std::string why;    // the argument for a detail, "-" for pure articulation rows
+  float weight = 0;          // added to the articulation's weight of the shape
+  std::string why;           // the visible detail the 8 channels do not carry
 };
 // Throws InputError (file:line: rule).
 std::vector<PrototypeSpecRow> read_prototype_spec(const std::filesystem::path& file);
 
-// The target prototypes of `classes` on `face`: one row per class, the neutral mesh plus the
-// class's recipe, D = 3N columns (xyz interleaved per vertex), METRES. Throws std::out_of_range
-// when the face lacks a shape of the table.
-Eigen::MatrixXd target_prototype_meshes(const FaceModel& face, std::span<const VisemeClass> classes);
+// Articulatory channel values, indexed by Channel.
+using ChannelValues = std::array<float, kChannelCount>;
+
+// The reference articulation as a corpus realises it: per viseme class, the mean channel values
+// at the centre frames of the class's phone segments (the frames source prototypes are chosen
+// from), each take coarticulated from its own alignment (Cohen-Massaro over spec/articulation.tsv,
+// effort 1).
+class RealisedArticulation {
+ public:
+  // One take: its phone segments in time order and their spans on the 60 fps voice grid, relative
+  // to the take (CorpusTake::phones and ::spans). A segment's centre frame is first + count / 2.
+  // Throws std::invalid_argument when the sizes differ or a span is empty or out of order.
+  void add_take(std::span<const Phone> phones, std::span<const FrameSpan> spans);
+  std::size_t count(VisemeClass v) const { return count_[static_cast<std::size_t>(v)]; }
+  // Throws std::invalid_argument when the class has no segment.
+  ChannelValues mean(VisemeClass v) const;
+
+ private:
+  std::array<std::array<double, kChannelCount>, kVisemeClassCount> sum_{};
+  std::array<std::size_t, kVisemeClassCount> count_{};
+};
+
+// The mean channel targets of the class's phones (spec/visemes.tsv): what the articulation aims
+// at, which coarticulation undershoots in running speech.
+ChannelValues nominal_class_channels(VisemeClass v);
+
+// A class's recipe on `face`: ShapeMapper(channels) plus the class's details, clamped to [0, 1];
+// one weight per face expression.
+std::vector<float> target_prototype_weights(const FaceModel& face, VisemeClass v, const ChannelValues& channels);
+
+// The target prototypes of `classes` on `face` for the channel values `channels` (one per class):
+// one row per class, the neutral mesh plus the class's recipe, D = 3N columns (xyz interleaved per
+// vertex), METRES. Throws std::out_of_range when the face lacks a shape of the tables,
+// std::invalid_argument when the sizes differ.
+Eigen::MatrixXd target_prototype_meshes(const FaceModel& face, std::span<const VisemeClass> classes,
+                                        std::span<const ChannelValues> channels);
 
 // Rank of the rows of `rows` after subtracting their mean: singular values above
 // relative_tolerance x the largest count. k PCA components of the retargeted corpus are only
@@ -56,6 +91,12 @@ inline constexpr std::string_view kSourcePrototypeRule =
     "per viseme class, of the centre frames of the class's phone states, the one nearest the "
     "mean of those centre frames (Euclidean, source marker space after head-pose removal; "
     "earliest frame on ties)";
+
+// How a target prototype is made (recorded in every voice's provenance).
+inline constexpr std::string_view kTargetPrototypeRule =
+    "per viseme class, the reference articulation's channel values (spec/articulation.tsv, effort 1) "
+    "averaged over the centre frames of the class's phone states, mapped by "
+    "spec/articulation_shapes.tsv, plus the spec/prototypes.tsv details, over the ICT expression shapes";
 
 struct SourcePrototype {
   VisemeClass viseme = VisemeClass::kSilence;

@@ -86,7 +86,7 @@ class ShapeMapper {
 };
 
 // Jaw opening angle of the talker for a jaw channel value: value * 0.35 rad (ICT jawOpen = 1
-// taken as a 20 degree opening; speech rarely passes 0.75).
+// taken as a 20 degree opening; the speech targets stay at or below 0.3).
 double jaw_opening_angle_rad(float jaw);
 
 // spec/articulation.tsv as read from disk (7 columns).

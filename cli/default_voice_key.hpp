@@ -1,0 +1,28 @@
+#pragma once
+// What the cached default voice is keyed by (spec/voice.md "The default voice"): a change of the
+// reference talker's tables or of the build's recipe gives the cache file another name, so every
+// machine rebuilds the default voice instead of keeping the old talker.
+#include <cstdint>
+#include <span>
+#include <string>
+
+#include "fapcast/builder/voice_prototypes.hpp"
+#include "fapcast/talker/articulation.hpp"
+
+namespace fapcast::cli {
+
+// Bumped by hand when code that shapes the default voice changes without changing a table below
+// (the talker's marker synthesis, capture imperfections, the recording script, the build).
+inline constexpr std::uint32_t kDefaultVoiceRecipe = 2;
+
+// CRC-32, as 8 lower-case hex digits, of the recipe number, the corpus seed, every row of the
+// articulation and shape tables and of the prototype details, and the prototype rules.
+std::string default_voice_key(std::uint64_t seed, std::span<const PhoneChannelTarget> articulation,
+                              std::span<const ChannelShapeRow> shapes,
+                              std::span<const PrototypeShapeWeight> details);
+
+// The key of the tables compiled in (articulation_table(), channel_shape_table(),
+// target_prototype_details()).
+std::string default_voice_key(std::uint64_t seed);
+
+}  // namespace fapcast::cli

@@ -6,6 +6,7 @@
 #include "fapcast/transport/fba_track.hpp"
 #include "fapcast/transport/timeline.hpp"
 #include "fapcast/transport/track_file.hpp"
+#include "fapcast/transport/srtp_key.hpp"
 #include "fapcast/transport/udp_receiver.hpp"
 #include "fapcast/transport/udp_url.hpp"
 
@@ -26,6 +27,7 @@ struct RecvArgs {
   std::int64_t clock_rate = kDefaultSampleRate;
   int reorder_ms = 40;
   double max_seconds = 3600;
+  std::string srtp_key_file;
 };
 
 void run_recv(const RecvArgs& a) {
@@ -35,6 +37,7 @@ void run_recv(const RecvArgs& a) {
   ReceiverSocketOptions socket;
   if (!a.source.empty()) socket.source = asio::ip::make_address(a.source);
   if (!a.interface.empty()) socket.interface = asio::ip::make_address(a.interface);
+  if (!a.srtp_key_file.empty()) socket.srtp = read_srtp_key_file(a.srtp_key_file);
   UdpReceiver receiver(io, resolve_udp_url(io, a.url), socket);
 
   ReceiverOptions options;
@@ -58,7 +61,12 @@ void run_recv(const RecvArgs& a) {
             << " skipped waiting for intra\n"
             << "refused:   " << s.malformed << " malformed, " << s.foreign_ssrc << " foreign ssrc, "
             << s.wrong_payload_type << " wrong payload type, " << s.sequence_jumps
-            << " sequence jumps, " << filtered << " from other sources\n"
+            << " sequence jumps, " << filtered << " from other sources\n";
+  if (const SrtpStats* srtp = receiver.srtp_stats())
+    std::cout << "srtp:      " << srtp->unprotected_packets << " authenticated, " << srtp->auth_failed
+              << " failed authentication, " << srtp->replayed << " replayed, " << srtp->malformed
+              << " malformed\n";
+  std::cout
             << "jitter:    " << stream.jitter_seconds() * 1000 << " ms (RFC 3550 A.8)\n"
             << "frames:    " << track.sequence().frames.size() << " (" << t.decoded << " decoded, "
             << t.held_frames << " held over gaps, " << t.decode_errors << " decode errors)\n";
@@ -86,6 +94,8 @@ const cli::Registration reg{"61-recv", [](CLI::App& app) {
       ->check(CLI::Range(0, 10000));
   cmd->add_option("--max-seconds", args->max_seconds, "Longest track kept (frames beyond are dropped)")
       ->check(CLI::Range(0.1, 86400.0));
+  cmd->add_option("--srtp-key-file", args->srtp_key_file,
+                  "Receive SRTP under the base64 master key in this file: spoofed, tampered and replayed packets are refused and counted");
   cmd->callback([args] { run_recv(*args); });
 }};
 

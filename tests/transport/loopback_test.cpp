@@ -130,7 +130,7 @@ TEST(Loopback, MulticastOnTheLoopbackInterface) {
   std::unique_ptr<ReceiverThread> rx;
   try {
     rx = std::make_unique<ReceiverThread>(udp::endpoint(group, 0), ReceiverOptions{},
-                                          ReceiverSocketOptions{std::nullopt, lo});
+                                          ReceiverSocketOptions{std::nullopt, lo, std::nullopt});
   } catch (const std::system_error& e) {
     GTEST_SKIP() << "cannot join 239.255.70.7 on 127.0.0.1 in this sandbox: " << e.what();
   }
@@ -196,7 +196,7 @@ TEST(Loopback, HostileDatagramsDoNotDisturbTheStream) {
 }
 
 TEST(Loopback, SourceFilterRefusesOtherAddresses) {
-  ReceiverThread rx(loopback(), {}, ReceiverSocketOptions{asio::ip::make_address("127.0.0.2"), std::nullopt});
+  ReceiverThread rx(loopback(), {}, ReceiverSocketOptions{asio::ip::make_address("127.0.0.2"), std::nullopt, std::nullopt});
   rx.start(300ms);
   asio::io_context io;
   RtpStreamer streamer(io, rx.receiver.local_endpoint(), fixed_options(false));

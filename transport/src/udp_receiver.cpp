@@ -22,6 +22,7 @@ UdpReceiver::UdpReceiver(asio::io_context& io, udp::endpoint listen, ReceiverSoc
 }
 
 void UdpReceiver::open(udp::endpoint listen, std::error_code& ec) {
+  if (options_.srtp) srtp_.emplace(*options_.srtp, SrtpDirection::kReceive);
   boost::system::error_code bec;
   const auto group = listen.address();
   socket_.open(group.is_v4() ? udp::v4() : udp::v6(), bec);
@@ -91,6 +92,7 @@ std::uint64_t UdpReceiver::run(RtpStreamReceiver& stream, const ReceiveLimits& l
               ++filtered;
               return;
             }
+            if (srtp_ && srtp_->unprotect_rtp({buffer.data(), n}, n)) return;  // refused and counted
             (void)stream.on_datagram({buffer.data(), n}, now, units);
           });
     }

@@ -4,6 +4,8 @@
 // stretch with no datagrams. Every wait is bounded.
 #include "fapcast/transport/asio.hpp"
 #include "fapcast/transport/rtp_stream_receiver.hpp"
+#include "fapcast/transport/srtp_key.hpp"
+#include "fapcast/transport/srtp_session.hpp"
 
 #include <chrono>
 #include <functional>
@@ -15,6 +17,9 @@ namespace fapcast {
 struct ReceiverSocketOptions {
   std::optional<asio::ip::address> source;     // accept datagrams from this address only
   std::optional<asio::ip::address> interface;  // interface to join a multicast group on (IPv4)
+  // Set: datagrams are SRTP; each is authenticated and decrypted before the stream sees it, and
+  // refused (counted in srtp_stats()) when spoofed, tampered with or replayed.
+  std::optional<SrtpMasterKey> srtp;
 };
 
 struct ReceiveLimits {
@@ -32,6 +37,8 @@ class UdpReceiver {
               std::error_code& ec);
 
   udp::endpoint local_endpoint() const;
+  // SRTP's counts when the options carry a key, else null.
+  const SrtpStats* srtp_stats() const { return srtp_ ? &srtp_->stats() : nullptr; }
 
   // Receives into `stream` until a limit is reached, calling `sink` for each unit in order, then
   // flushes the stream. Runs the io_context given at construction. Returns datagrams refused by
@@ -46,6 +53,7 @@ class UdpReceiver {
   asio::io_context& io_;
   udp::socket socket_;
   ReceiverSocketOptions options_;
+  std::optional<SrtpSession> srtp_;
 };
 
 }  // namespace fapcast

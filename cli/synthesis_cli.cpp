@@ -2,7 +2,8 @@
 
 #include "command.hpp"
 #include "fapcast/render/mesh_export.hpp"
-#include "voice_face.hpp"
+#include "default_voice.hpp"
+#include "fapcast/utterance/voice_face.hpp"
 
 #include "fapcast/codec/gltf_export.hpp"
 #include "fapcast/face/face_model.hpp"

@@ -4,6 +4,7 @@
 #include "fapcast/codec/bvh_text.hpp"
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/transport/track_file.hpp"
+#include "fap_output.hpp"
 
 #include "file_extension.hpp"
 
@@ -15,13 +16,13 @@ bool is_animation_output(const std::filesystem::path& path) {
 
 bool is_mesh_output(const std::filesystem::path& path) { return lower_extension(path) == ".glb"; }
 
-void write_animation(const std::filesystem::path& path, const FapSequence& seq,
-                     std::int64_t sample_rate, const FeaturePointPositions& neutral) {
+void write_animation(const std::filesystem::path& path, const FapSequence& seq, const FapTextWriteOptions& fap,
+                     SampleRate sample_rate, const FeaturePointPositions& neutral) {
   if (lower_extension(path) == ".bvh") {
     write_file_atomically(path, write_bvh(fap_to_bvh(seq, fit_generic_face(neutral))));
     return;
   }
-  write_track_file(path, seq, sample_rate);
+  print_notes(path, write_track_file(path, seq, {.sample_rate = sample_rate, .fap = fap}));
 }
 
 }  // namespace fapcast::cli

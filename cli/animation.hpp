@@ -2,6 +2,7 @@
 // The outputs of `say` and `animate`: a FAP track (fapcast/utterance/fap_track.hpp) or a mesh,
 // to a file chosen by extension. Wiring only: each step is a library function.
 #include "fapcast/codec/fap_frame.hpp"
+#include "fapcast/codec/fap_text.hpp"
 #include "fapcast/utterance/fap_track.hpp"
 
 #include <cstdint>
@@ -16,7 +17,7 @@ bool is_mesh_output(const std::filesystem::path& path);
 
 // Writes `seq` atomically by extension; .json carries each frame's sample at `sample_rate`,
 // .bvh is rigged on the neutral face (fit_generic_face supplies pivots and the tongue tip).
-void write_animation(const std::filesystem::path& path, const FapSequence& seq,
-                     std::int64_t sample_rate, const FeaturePointPositions& neutral);
+void write_animation(const std::filesystem::path& path, const FapSequence& seq, const FapTextWriteOptions& fap,
+                     SampleRate sample_rate, const FeaturePointPositions& neutral);
 
 }  // namespace fapcast::cli

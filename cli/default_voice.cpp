@@ -57,7 +57,7 @@ std::string voice_build_time_utc() {
       used = 0;
     }
     if (used != epoch.size() || seconds < 0)
-      throw std::invalid_argument("SOURCE_DATE_EPOCH=\"" + epoch + "\" is not a non-negative whole number of seconds");
+      throw std::runtime_error("SOURCE_DATE_EPOCH=\"" + epoch + "\" is not a non-negative whole number of seconds");
     t = static_cast<std::time_t>(seconds);
   } else {
     t = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());

@@ -1,6 +1,6 @@
 #pragma once
-// The default voice (spec/voice.md): built from the SYNTHETIC reference corpus (seed 1) on first
-// use and cached, so `say` and `animate` work without --voice.
+// The default voice (spec/architecture.md, "The default world"): built from the SYNTHETIC
+// reference corpus (seed 1) on first use and cached, so `say` and `animate` work without --voice.
 #include "fapcast/voice/voice.hpp"
 
 #include <filesystem>
@@ -19,7 +19,7 @@ std::filesystem::path default_voice_path();
 std::filesystem::path ensure_default_voice(bool quiet);
 
 // The provenance build time: SOURCE_DATE_EPOCH (reproducible builds) when set, else now; ISO 8601
-// UTC ("2026-11-22T04:00:00Z"). Throws std::invalid_argument when SOURCE_DATE_EPOCH is not a
+// UTC ("2026-11-22T04:00:00Z"). Throws std::runtime_error (bad input) when SOURCE_DATE_EPOCH is not a
 // non-negative integer.
 std::string voice_build_time_utc();
 

@@ -1,34 +1,47 @@
-// fapcast: speech to MPEG-4 facial animation. See README.md.
+// fapcast: speech to MPEG-4 facial animation. The commands: spec/cli.md.
 #include "command.hpp"
+#include "exit_status.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <map>
 #include <string>
+#include <string_view>
 
 namespace fapcast::cli {
 namespace {
-std::multimap<std::string, AddCommand>& registry() {
-  static std::multimap<std::string, AddCommand> commands;
+
+// The commands in pipeline order, as --help lists them: recording and aligning speech, making a
+// voice, speaking with it, measuring it, faces, the file formats, looking at a mesh, the network.
+constexpr std::array<std::string_view, 21> kCommandOrder{
+    "corpus script", "corpus record-reference",                       // the recording (paper 3.2)
+    "align",                                                          // recorded speech's phones
+    "voice build",   "voice info", "voice default", "voice adapt",    // the voice (3.3-3.6, 3.9)
+    "say",           "animate",                                       // synthesis (3.7-3.8)
+    "eval retarget", "eval synth", "eval align",                      // evaluation (4.1), the aligner
+    "adapt",         "expressions",                                   // faces (3.9)
+    "fap",           "encode",      "decode",        "export",        // the file formats
+    "render",                                                         // looking at a .glb
+    "stream",        "recv"};                                         // the network
+
+std::map<std::string, AddCommand, std::less<>>& registry() {
+  static std::map<std::string, AddCommand, std::less<>> commands;
   return commands;
 }
-
-// Prints an exception and the ones nested inside it, outermost first: "a: b: c".
-void print_chain(std::ostream& out, const std::exception& e, bool first = true) {
-  out << (first ? "" : ": ") << e.what();
-  try {
-    std::rethrow_if_nested(e);
-  } catch (const std::exception& inner) {
-    print_chain(out, inner, false);
-  } catch (...) {
-    out << ": unknown error";
-  }
+std::vector<std::string>& registered_twice() {
+  static std::vector<std::string> names;
+  return names;
 }
+
 }  // namespace
 
-Registration::Registration(std::string_view order_key, AddCommand add) {
-  registry().emplace(std::string(order_key), std::move(add));
+Registration::Registration(std::string_view command, AddCommand add) {
+  if (!registry().emplace(std::string(command), std::move(add)).second) registered_twice().emplace_back(command);
 }
 
 CLI::App* command_group(CLI::App& top, const std::string& name, const std::string& description) {
@@ -39,33 +52,50 @@ CLI::App* command_group(CLI::App& top, const std::string& name, const std::strin
   return group;
 }
 
+int standard_output_written() {
+  // Output that never reached its destination (`> /dev/full`, a closed pipe) is a failed run.
+  std::cout.flush();
+  errno = 0;
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout)) {
+    const int err = errno;
+    std::cerr << "fapcast: error: standard output: write failed"
+              << (err != 0 ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
+    return kBadInput;
+  }
+  return kOk;
+}
+
 std::vector<AddCommand> registered_commands() {
+  if (!registered_twice().empty())
+    throw std::logic_error("command '" + registered_twice().front() + "' is registered twice");
+  for (const auto& [name, add] : registry())
+    if (std::find(kCommandOrder.begin(), kCommandOrder.end(), name) == kCommandOrder.end())
+      throw std::logic_error("command '" + name + "' is not in kCommandOrder (cli/main.cpp)");
   std::vector<AddCommand> out;
-  for (auto& [key, add] : registry()) out.push_back(add);
+  for (std::string_view name : kCommandOrder)
+    if (const auto it = registry().find(name); it != registry().end()) out.push_back(it->second);
   return out;
 }
+
 }  // namespace fapcast::cli
 
 int main(int argc, char** argv) {
   using namespace fapcast::cli;
-  CLI::App app{"fapcast: speech to MPEG-4 facial animation (synthesis, .fap/FBA codec, RTP)"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("fapcast ") + FAPCAST_VERSION);
-  for (const auto& add : registered_commands()) add(app);
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    // --help and --version arrive here too, with exit code 0.
-    const int code = app.exit(e);
-    return code == 0 ? kOk : kBadUsage;
-  } catch (const UsageError& e) {
-    std::cerr << "fapcast: usage: " << e.what() << "\n";
-    return kBadUsage;
-  } catch (const std::exception& e) {
-    std::cerr << "fapcast: error: ";
-    print_chain(std::cerr, e);
-    std::cerr << "\n";
-    return kBadInput;
+    CLI::App app{"fapcast: speech to MPEG-4 facial animation (synthesis, .fap/FBA codec, RTP)"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("fapcast ") + FAPCAST_VERSION);
+    for (const auto& add : registered_commands()) add(app);
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      // --help and --version arrive here too, with exit code 0.
+      return app.exit(e) == 0 ? standard_output_written() : kBadUsage;  // --help > /dev/full fails too
+    }
+  } catch (...) {
+    const ExitStatus status = exit_status(std::current_exception());
+    std::cerr << status.message << "\n";
+    return status.code;
   }
-  return kOk;
+  return standard_output_written();
 }

@@ -3,6 +3,7 @@
 #include "fapcast/core/data_root.hpp"
 #include "fapcast/corpus/syllabified_lexicon.hpp"
 #include "fapcast/core/file_io.hpp"
+#include "fapcast/core/input_error.hpp"
 
 namespace fapcast::cli {
 
@@ -23,8 +24,18 @@ void add_recording_script_options(CLI::App* cmd, RecordingScriptInputs& in) {
 
 RecordingScript load_recording_script(const RecordingScriptInputs& in) {
   const auto lexicon = parse_festival_lexicon(read_file(in.cmudict), in.cmudict);
+  if (lexicon.empty())
+    throw InputError::in_file(in.cmudict, 0, "lexicon-empty", "the lexicon has no entries");
   const auto counts = parse_word_counts(read_file(in.word_counts), in.word_counts);
-  return build_recording_script(counts, lexicon, in.options);
+  if (counts.empty())
+    throw InputError::in_file(in.word_counts, 0, "word-counts-empty", "the word counts have no words");
+  RecordingScript script = build_recording_script(counts, lexicon, in.options);
+  // A script of nonsense syllables alone is not what was asked for: the two files do not match.
+  if (script.coverage.candidate_words == 0)
+    throw InputError::in_file(in.cmudict, 0, "lexicon-no-words",
+                              "none of the " + std::to_string(in.options.candidate_words) +
+                                  " most frequent words of " + in.word_counts + " is in the lexicon");
+  return script;
 }
 
 }  // namespace fapcast::cli

@@ -1,8 +1,11 @@
 #include "synthesis_cli.hpp"
 
 #include "command.hpp"
+#include "output_check.hpp"
 #include "fapcast/render/mesh_export.hpp"
 #include "default_voice.hpp"
+#include "fap_output.hpp"
+#include "file_extension.hpp"
 #include "fapcast/utterance/voice_face.hpp"
 
 #include "fapcast/codec/gltf_export.hpp"
@@ -11,31 +14,57 @@
 
 #include <chrono>
 #include <iostream>
+#include <optional>
+#include <sstream>
 
 namespace fapcast::cli {
+
+void add_synthesis_options(CLI::App& cmd, SynthesisOptions& options) {
+  cmd.add_option("--beta", options.search.beta, "Weight of the join smoothness in the unit search's cost (>= 0; 0: fewest units)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd.add_option_function<std::size_t>(
+         "--max-active",
+         [&options](std::size_t n) { options.search.max_active = n > 0 ? std::optional<std::size_t>(n) : std::nullopt; },
+         "Active states kept per phone in the unit search (0 = all)")
+      ->default_str(std::to_string(options.search.max_active.value_or(0)));
+  cmd.add_option("--duration-weight", options.search.duration_weight,
+                 "Weight of the duration term in the unit search's cost: ln^2 of each phone's time warp (>= 0)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd.add_flag_function(
+      "--boundary-joins", [&options](std::int64_t) { options.concatenation.join_mid_phone = false; },
+      options.concatenation.join_mid_phone
+          ? "Hand over between units at phone boundaries (default: in the middle of the phone before)"
+          : "Hand over between units at phone boundaries (the default)");
+}
+
+std::string synthesis_options_text(const SynthesisOptions& options) {
+  const SynthesisOptions shipped;
+  std::ostringstream text;
+  if (options.search.beta != shipped.search.beta) text << " --beta " << options.search.beta;
+  if (options.search.max_active != shipped.search.max_active)
+    text << " --max-active " << options.search.max_active.value_or(0);
+  if (options.search.duration_weight != shipped.search.duration_weight)
+    text << " --duration-weight " << options.search.duration_weight;
+  if (options.concatenation.join_mid_phone != shipped.concatenation.join_mid_phone && !options.concatenation.join_mid_phone)
+    text << " --boundary-joins";
+  return text.str();
+}
 
 CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const std::string& description,
                                 SynthesisArgs& args, std::function<void()> run) {
   CLI::App* cmd = app.add_subcommand(name, description);
   cmd->add_option("-o,--output", args.output,
                   "Animation file by extension, written atomically: .fap, .fba, .json, .bvh (FAPs) or .glb "
-                  "(glTF mesh: the voice's PCA components as morph targets, its 60 fps PCA frames as weights)")
-      ->required();
+                  "(glTF mesh: the voice's PCA components as morph targets, its 60 fps PCA frames as weights); "
+                  "with a rig (spec/rigs.md): .csv (Live Link Face, ARKit), .json with --rig (TalkingHead), "
+                  ".vrma (VRM animation), .glb with --avatar; not needed with --cues-out alone");
   cmd->add_option("--voice", args.voice, "Voice file (default: the reference voice, built on first use)");
   CLI::Option* fps = cmd->add_option("--fps", args.fps, "Output frames per second (25, 30, 60; any 1..120); not .glb")
                          ->check(CLI::Range(1, 120))
                          ->capture_default_str();
-  cmd->add_option("--beta", args.beta, "Weight of the junction smoothness in the unit search (>= 0)")
-      ->check(CLI::Range(0.0, 1e6))
-      ->capture_default_str();
-  cmd->add_option("--max-active", args.max_active, "Active states kept per phone (0 = all)")
-      ->capture_default_str();
-  cmd->add_option("--duration-weight", args.duration_weight,
-                  "Weight of the duration term in the unit search: ln^2 of each phone's time warp (>= 0)")
-      ->check(CLI::Range(0.0, 1e6))
-      ->capture_default_str();
-  cmd->add_flag("--boundary-joins", args.boundary_joins,
-                "Hand over between units at phone boundaries (default: in the middle of the phone before)");
+  add_synthesis_options(*cmd, args.options);
   cmd->add_flag("--viseme", args.viseme, "Also write FAP 1 (the MPEG-4 viseme of each frame's phone); not .glb");
   cmd->add_option("--expression", args.expression_text,
                   "FAP 2 expression blended with the speech: NAME[:INTENSITY][,NAME[:INTENSITY]], names joy "
@@ -50,20 +79,50 @@ CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const st
             }
           },
           "EXPRESSION"));
-  cmd->add_option("--obj-frames", args.obj_frames, ".glb: also write every frame as OBJ (metres) here, for debugging");
+  cmd->add_option("--obj-frames-out", args.obj_frames, ".glb: also write every frame as OBJ (metres) into this folder, for debugging");
+  add_player_option(cmd, args.player);
+  cmd->add_option("--rig", args.rig.rig_text,
+                  "Avatar rig: arkit (52 blendshapes), oculus (15 visemes), vrm (aa ih ou ee oh), vrm0 (A I U E O)");
+  cmd->add_option("--avatar", args.rig.avatar, "A .glb avatar whose morph targets (ARKit or Oculus names) -o X.glb animates");
+  cmd->add_option("--vmc", args.rig.vmc, "Also stream the rig live over VMC (OSC over UDP) to udp://HOST:PORT, in real time");
+  add_cue_options(*cmd, args.cues);
   cmd->add_flag("-q,--quiet", args.quiet, "No progress on standard error");
   cmd->callback([&args, fps, name, run = std::move(run)] {
-    if (!is_animation_output(args.output))
-      throw UsageError(name + ": output '" + args.output + "' must end in .fap, .fba, .json, .bvh or .glb");
+    if (!args.expression_text.empty()) args.expression = parse_expression_blend(args.expression_text);
+    check_cue_args(name, args.cues);
+    if (args.output.empty()) {
+      if (args.cues.output.empty()) throw UsageError(name + ": -o OUT is required (or --cues-out FILE for mouth cues alone)");
+      if (!args.voice.empty() || fps->count() > 0 || args.viseme || args.expression || !args.obj_frames.empty() ||
+          !args.player.empty() || !args.rig.rig_text.empty() || !args.rig.avatar.empty() || !args.rig.vmc.empty())
+        throw UsageError(name + ": --voice, --fps, --viseme, --expression, --obj-frames-out, --player, --rig, --avatar "
+                         "and --vmc shape the animation: give it with -o OUT");
+      check_output_writable(args.cues.output);  // before the speech is made or aligned
+      run();
+      return;
+    }
+    if (!is_animation_output(args.output) && !is_rig_output(args.output, args.rig))
+      throw UsageError(name + ": output '" + args.output + "' must end in .fap, .fba, .json, .bvh, .glb, .csv or .vrma");
     args.fps_given = fps->count() > 0;
+    check_rig_args(name, args.output, args.rig);
+    if (is_rig_output(args.output, args.rig)) {
+      if (args.fps_given && args.fps != Voice::kFramesPerSecond)
+        throw UsageError(name + ": rig tracks hold the voice's " + std::to_string(Voice::kFramesPerSecond) +
+                         " fps frames; --fps does not apply");
+      if (args.viseme) throw UsageError(name + ": --viseme (FAP 1) has no place in a rig track");
+      if (!args.obj_frames.empty()) throw UsageError(name + ": --obj-frames-out needs the voice's own .glb (no --avatar)");
+      if (args.expression) throw UsageError(name + ": --expression is not fitted into rig tracks yet");
+    }
     if (is_mesh_output(args.output) && args.fps_given && args.fps != Voice::kFramesPerSecond)
       throw UsageError(name + ": a .glb holds the voice's " + std::to_string(Voice::kFramesPerSecond) +
                        " fps PCA frames as keyframes (players interpolate); --fps does not apply");
     if (is_mesh_output(args.output) && args.viseme)
       throw UsageError(name + ": --viseme (FAP 1) has no place in a .glb");
     if (!is_mesh_output(args.output) && !args.obj_frames.empty())
-      throw UsageError(name + ": --obj-frames needs a .glb output");
-    if (!args.expression_text.empty()) args.expression = parse_expression_blend(args.expression_text);
+      throw UsageError(name + ": --obj-frames-out needs a .glb output");
+    if (!args.player.empty() && lower_extension(args.output) != ".fap")
+      throw UsageError(name + ": --player applies to a .fap output");
+    check_output_writable(args.output);  // before the voice is read and the speech synthesized
+    check_output_writable(args.cues.output);
     run();
   });
   return cmd;
@@ -78,7 +137,7 @@ MorphAnimation mesh_animation(const SynthesisArgs& args, const SpeechBasis& basi
                                      const std::string& name) {
   const FrameRate rate{static_cast<std::uint32_t>(Voice::kFramesPerSecond), 1};
   Eigen::MatrixXf weights = speech_weights(track.pca_frames, basis);
-  const auto shown = frames_shown(audio_samples, rate, track.timeline.sample_rate_hz);
+  const auto shown = frames_shown(audio_samples, rate, track.timeline.sample_rate);
   if (weights.rows() > shown) weights.conservativeResize(shown, Eigen::NoChange);
   const FaceModel& face = ict_face_model();
   if (basis.mean.cols() != 3 * static_cast<Eigen::Index>(face.vertex_count()))
@@ -91,25 +150,35 @@ MorphAnimation mesh_animation(const SynthesisArgs& args, const SpeechBasis& basi
 }  // namespace
 
 void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> phones,
-                        std::int64_t sample_rate_hz, std::int64_t audio_samples,
+                        SampleRate sample_rate, std::int64_t audio_samples,
                         const std::string& source, const std::string& name) {
+  const std::string cue_summary = write_cue_output(args.cues, phones, sample_rate, audio_samples);
+  if (args.output.empty()) {
+    std::cout << args.cues.output << ": " << static_cast<double>(audio_samples) / static_cast<double>(sample_rate.hz)
+              << " s, " << phones.size() << " phones" << cue_summary << "\n";
+    return;
+  }
   const Voice voice = open_voice_or_default(args.voice, args.quiet);
   const std::string voice_name = args.voice.empty() ? std::string("the default voice") : args.voice;
   check_voice_phone_set(voice, voice_name);
   const SpeechBasis speech = speech_basis(voice, args.expression);
-  SynthesisOptions options;
-  options.search.beta = args.beta;
-  if (args.max_active > 0) options.search.max_active = args.max_active;
-  options.search.duration_weight = args.duration_weight;
-  options.concatenation.join_mid_phone = !args.boundary_joins;
+  const SynthesisOptions& options = args.options;
   const auto start = std::chrono::steady_clock::now();
   SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones,
-                                                    sample_rate_hz, audio_samples, options, source);
+                                                    sample_rate, audio_samples, options, source);
   std::size_t frames = 0;
   int fps = args.fps;
   double seconds = 0;
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  if (is_mesh_output(args.output)) {
+  std::string rig_summary;
+  if (is_rig_output(args.output, args.rig)) {
+    rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, true, args.words);
+    seconds = elapsed();
+    frames = static_cast<std::size_t>(std::min<std::int64_t>(
+        frames_shown(audio_samples, {static_cast<std::uint32_t>(Voice::kFramesPerSecond), 1}, sample_rate),
+        track.pca_frames.rows()));
+    fps = Voice::kFramesPerSecond;
+  } else if (is_mesh_output(args.output)) {
     const MorphAnimation animation = mesh_animation(args, speech, track, audio_samples, name);
     seconds = elapsed();
     write_file_atomically(args.output, write_glb(animation));
@@ -127,14 +196,17 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
     track.pca_frames = speech_weights(track.pca_frames, speech);
     const FapSequence seq = fap_track(track, basis, animation, audio_samples);
     seconds = elapsed();
-    write_animation(args.output, seq, sample_rate_hz, basis.neutral);
+    write_animation(args.output, seq, fap_write_options(args.player), sample_rate, basis.neutral);
     frames = seq.frames.size();
   }
   std::cout << args.output << ": " << frames << " frames at " << fps << " fps ("
-            << static_cast<double>(audio_samples) / static_cast<double>(sample_rate_hz) << " s), "
+            << static_cast<double>(audio_samples) / static_cast<double>(sample_rate.hz) << " s), "
             << track.timeline.phones.size() << " phones in " << track.search.units.size()
             << " units, synthesised in " << seconds * 1000.0 << " ms";
   if (args.expression) std::cout << ", expression " << expression_blend_text(*args.expression);
+  if (rig_summary.empty() && !args.rig.vmc.empty())
+    rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, false, args.words);
+  std::cout << rig_summary << cue_summary;
   if (track.substituted > 0) std::cout << "; " << track.substituted << " phones borrowed a nearby viseme class";
   if (track.timeline.dropped > 0) std::cout << "; " << track.timeline.dropped << " phones shorter than a frame dropped";
   std::cout << "\n";

@@ -3,6 +3,8 @@
 // (output, voice, rate, search parameters, expression), and the common run: timed phones in, an
 // animation file out.
 #include "animation.hpp"
+#include "cue_output.hpp"
+#include "rig_output.hpp"
 
 #include "fapcast/synthesis/speech_expression.hpp"
 
@@ -13,37 +15,49 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace fapcast::cli {
 
 struct SynthesisArgs {
   std::string voice;  // empty: the default voice
-  std::string output;
+  std::string output;  // empty only with cues.output: the cues alone
   int fps = 25;
   bool fps_given = false;
-  double beta = 0.1;
-  std::size_t max_active = 64;  // 0 = no cap
-  double duration_weight = 0.0;
-  bool boundary_joins = false;  // units take over at phone boundaries, not mid-phone
+  SynthesisOptions options;  // the library's defaults unless an option says otherwise
   bool viseme = false;
   bool quiet = false;
   std::string obj_frames;  // .glb only: also every frame as OBJ here (debugging)
+  std::string player;      // .fap only: --player xface|greta|vreng
   std::string expression_text;                     // as given: "joy:40[,surprise:20]"
   std::optional<ExpressionBlend> expression;  // parsed before `run` is called
+  RigArgs rig;                     // --rig, --avatar, --vmc (spec/rigs.md)
+  CueArgs cues;                    // --cues-out, --cues-format, --extended-shapes (spec/mouth-cues.md)
+  std::vector<TimedWord> words;  // the words spoken and their spans (say), for the TalkingHead JSON
 };
 
-// Adds the sub-command `name` to `app` with -o, --voice, --fps, --beta, --max-active, --viseme,
-// --expression, --obj-frames, -q; the caller adds its own inputs to the returned command. On a parse it checks
+// The options that shape the synthesis, shared by `say`, `animate` and `eval synth`: --beta,
+// --max-active, --duration-weight, --boundary-joins, bound to `options`, whose current values
+// (the library's defaults) are the defaults --help shows.
+void add_synthesis_options(CLI::App& cmd, SynthesisOptions& options);
+
+// The synthesis options in which `options` differs from the library's defaults, as the
+// command-line text that asks for them (" --beta 0 --max-active 0"), for reports.
+std::string synthesis_options_text(const SynthesisOptions& options);
+
+// Adds the sub-command `name` to `app` with -o, --voice, --fps, the synthesis options, --viseme,
+// --expression, --obj-frames-out, -q; the caller adds its own inputs to the returned command. On a parse it checks
 // the output's extension and the options that do not apply to it (UsageError, before any work),
 // parses the expression into args.expression, then calls `run`.
 CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const std::string& description,
                                 SynthesisArgs& args, std::function<void()> run);
 
-// Synthesises `phones` (at `sample_rate_hz`, audio of `audio_samples`) on the voice and writes
-// args.output (FAPs, or a .glb of the PCA frames); prints a one-line summary. `source` names the
+// Writes the mouth cues of `phones` when asked (args.cues), then synthesises them (at
+// `sample_rate`, audio of `audio_samples`) on the voice and writes args.output (FAPs, or a .glb of
+// the PCA frames) unless only cues were asked for; prints a one-line summary. `source` names the
 // phones in errors.
 void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> phones,
-                        std::int64_t sample_rate_hz, std::int64_t audio_samples,
+                        SampleRate sample_rate, std::int64_t audio_samples,
                         const std::string& source, const std::string& name);
 
 }  // namespace fapcast::cli

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing and builds an optimised `fapcast` into build/release/cli/fapcast.
+# Installs what running needs (tools/setup.sh, no test tools) and builds an optimised `fapcast`
+# into build/release/cli/fapcast.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh

@@ -14,7 +14,8 @@ Checked, for every library folder ROOT/<lib>/ (one with a CMakeLists.txt calling
      be PRIVATE, and a linked library nothing includes should not be linked;
   4. a quoted include without "fapcast/" names a private header of the same library's src/, and
      no public header includes one;
-  5. README.md's layout table (when there is a README.md) shows the same arrows as the table.
+  5. the layout tables of README.md and spec/architecture.md (where they exist) show the same
+     arrows as the table.
 Each violation is printed as "FILE:LINE: RULE: DETAIL"; the last line is "layers: ok (...)" or
 "layers: FAILED (N violations)", and the exit code is 0 or 1.
 """
@@ -125,8 +126,9 @@ def main(argv):
                 report(cmake, call_line, "layers-public-unneeded",
                        f"{name} links fapcast::{other} PUBLIC but only its sources include it: PRIVATE")
 
-    readme = root / "README.md"
-    if readme.is_file():
+    for readme in (root / "README.md", root / "spec" / "architecture.md"):
+        if not readme.is_file():
+            continue
         row = re.compile(r"^\| `(\w+)/` \| `fapcast::(\w+)` \| ([^|]*) \|")
         shown = {}
         for number, text in enumerate(readme.read_text().splitlines(), 1):

@@ -117,14 +117,14 @@ scenario_base() {
 scenario_new() {
   $F corpus record-reference -q -o corpus --count 40 --seed 3
   $F voice build -q corpus -o voice.fapv
-  $F say -q "$text" --voice voice.fapv -o say.fap --wav say.wav --viseme --expression joy:40
+  $F say -q "$text" --voice voice.fapv -o say.fap --wav-out say.wav --viseme --expression joy:40
   $F say -q "$text" --voice voice.fapv -o say.fba --expression surprise:30,fear:10
-  $F say -q "$text" --voice voice.fapv -o say.glb --wav say_glb.wav --expression anger:25
+  $F say -q "$text" --voice voice.fapv -o say.glb --wav-out say_glb.wav --expression anger:25
   $F say -q "$text" --voice voice.fapv -o say.json --fps 30 --beta 0 --max-active 0
-  $F say -q "Hello there." -o say_default_voice.fap --wav say_default_voice.wav
-  $F animate -q --wav corpus/utt0007.wav --align corpus/utt0007.TextGrid --voice voice.fapv \
+  $F say -q "Hello there." -o say_default_voice.fap --wav-out say_default_voice.wav
+  $F animate -q corpus/utt0007.wav corpus/utt0007.TextGrid --voice voice.fapv \
     -o animate.fap --viseme --expression sadness:20
-  $F animate -q --wav corpus/utt0011.wav --align corpus/utt0011.TextGrid --voice voice.fapv -o animate.bvh
+  $F animate -q corpus/utt0011.wav corpus/utt0011.TextGrid --voice voice.fapv -o animate.bvh
   local s
   for s in joy anger beg; do
     $F encode "$xface/$s.fap" -o "enc_$s.fba"
@@ -134,19 +134,24 @@ scenario_new() {
   $F decode enc_fear_archive.fba -o dec_fear_archive.fap
   $F encode say.fap -o enc_say.fba
   $F decode say.fba -o dec_say.fap
-  $F fap convert "$xface/pride.fap" conv_pride_strict.fap
-  $F fap convert "$xface/hate.fap" conv_hate_69.fap --dialect 69
+  $F fap convert "$xface/pride.fap" -o conv_pride_strict.fap
+  $F fap convert "$xface/hate.fap" -o conv_hate_69.fap --dialect 69
   $F fap info say.fba >fap_info_say.txt
   $F export say.fap -o export_say.bvh
   $F export say.fap -o export_say.json --sample-rate 22050
   $F export "$xface/disgust.fap" -o export_disgust.bvh
   $F eval retarget -q voice.fapv >eval_retarget.txt
-  $F eval synth -q --voice voice.fapv --count 3 --json eval_synth.json --plots eval_plots >eval_synth.txt
+  # eval synth ships the say defaults (beta 0.1, cap 64); the base's defaults were beta 0, no cap.
+  $F eval synth -q voice.fapv --count 3 --beta 0 --max-active 0 --json-out eval_synth.json \
+    --plots-out eval_plots >eval_synth.txt
+  # The report names the command that made it: map the new shape back, so the rest compares.
+  sed -i 's|fapcast eval synth voice.fapv --count 3 --seed 2 --beta 0 --max-active 0|fapcast eval synth --voice voice.fapv --count 3 --seed 2|' \
+    eval_synth.txt eval_synth.json
   $F expressions -o expressions_obj
   $F expressions -o expressions.glb --fps 10 --seconds 0.3
-  $F adapt --generic "$ict" --specific "$inputs/specific.obj" --targets expressions_obj -o adapted
-  $F voice retarget voice.fapv --generic "$ict" --specific "$inputs/specific.obj" -o voice_retarget.fapv \
-    >voice_retarget.txt
+  $F adapt expressions_obj "$ict" "$inputs/specific.obj" -o adapted
+  $F voice adapt voice.fapv "$ict" "$inputs/specific.obj" -o voice_retarget.fapv >voice_retarget.txt
+  sed -i 's| components adapted over | components re-targeted over |' voice_retarget.txt  # the word is adaptation now
   $F say -q "$text" --voice voice_retarget.fapv -o say_retargeted_voice.fap
   $F render say.glb -o render --width 96 --every 20
 }

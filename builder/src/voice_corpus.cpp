@@ -8,11 +8,13 @@
 #include <iterator>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "fapcast/corpus/c3d.hpp"
 #include "fapcast/capture/head_pose.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/lab_file.hpp"
+#include "fapcast/corpus/label_tier.hpp"
 #include "fapcast/corpus/marker_csv.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/capture/marker_resample.hpp"
@@ -20,10 +22,17 @@
 #include "fapcast/corpus/textgrid.hpp"
 #include "fapcast/corpus/trc.hpp"
 #include "fapcast/core/text_input.hpp"
+#include "fapcast/core/wav_file.hpp"
+#include "fapcast/phonetics/phone.hpp"
+#include "fapcast/phonetics/timed_phone.hpp"
+#include "fapcast/recognise/speech_aligner.hpp"
 
 namespace fapcast {
 namespace fs = std::filesystem;
 namespace {
+
+// The 60 fps capture grid as a clock: to_sample at it gives frame numbers.
+constexpr SampleRate kVoiceFrameClock{kVoiceFramesPerSecond};
 
 [[noreturn]] void refuse(const fs::path& file, const std::string& rule, const std::string& detail) {
   throw InputError({file.string(), std::nullopt, std::nullopt}, rule, detail);
@@ -225,6 +234,23 @@ AlignedPhones read_alignment(const fs::path& file) {
   return out;
 }
 
+// The phones forced alignment finds in `speech` from `transcript` (ARPAbet labels, silence
+// empty): one aligner per thread, its model loaded once.
+AlignedPhones align_take(const fs::path& speech, const fs::path& transcript) {
+  thread_local SpeechAligner aligner;
+  const Audio audio = read_wav(speech);
+  const Transcript text = parse_transcript(decode_text(slurp(transcript), transcript.string(), "transcript"), transcript.string());
+  const SpeechAlignment found = aligner.align(audio, text, speech.string());
+  AlignedPhones out;
+  const double rate = static_cast<double>(audio.sample_rate.hz);
+  for (const TimedPhone& p : timed_phones(found))
+    out.intervals.push_back({static_cast<double>(p.start_sample) / rate, static_cast<double>(p.end_sample) / rate,
+                             p.phone == Phone::SIL ? std::string() : std::string(arpabet(p.phone))});
+  out.lines.resize(out.intervals.size());
+  out.end_s = static_cast<double>(found.samples) / rate;
+  return out;
+}
+
 // Refuses a stem with more than one candidate file, naming them.
 void refuse_ambiguous(const std::vector<fs::path>& files, const char* what) {
   std::string names;
@@ -254,13 +280,20 @@ CorpusListing list_corpus(const fs::path& directory) {
       if (files.size() > 1) refuse_ambiguous(files, "marker files");
       const auto grid = alignments.find(stem);
       if (grid == alignments.end()) {
+        fs::path speech = files.front(), transcript = files.front();
+        speech.replace_extension(".wav");
+        transcript.replace_extension(".txt");
+        if (fs::is_regular_file(speech) && fs::is_regular_file(transcript)) {
+          listing.utterances.push_back({stem, files.front(), {}, speech, transcript, std::nullopt});
+          continue;
+        }
         fs::path expected = files.front();
         expected.replace_extension(".TextGrid");
         refuse(expected, "corpus-file-missing", "no alignment (.TextGrid or .lab) beside " + files.front().filename().string());
       }
       std::sort(grid->second.begin(), grid->second.end());
       if (grid->second.size() > 1) refuse_ambiguous(grid->second, "alignments");
-      listing.utterances.push_back({stem, files.front(), grid->second.front(), std::nullopt});
+      listing.utterances.push_back({stem, files.front(), grid->second.front(), {}, {}, std::nullopt});
     }
   }
   if (listing.utterances.empty())
@@ -310,10 +343,12 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
     if (!found[r]) refuse(u.markers, "corpus-markers", "no marker for site " + std::string(sites[r].label) +
                                                            " (label it so, or map a label to it in manifest.json's marker_map)");
 
-  const AlignedPhones aligned_phones = read_alignment(u.alignment);
-  const std::int64_t aligned = to_sample(aligned_phones.end_s, kVoiceFramesPerSecond);
+  const bool from_speech = u.alignment.empty();
+  const fs::path& timing = from_speech ? u.speech : u.alignment;  // what messages about the phones name
+  const AlignedPhones aligned_phones = from_speech ? align_take(u.speech, u.transcript) : read_alignment(u.alignment);
+  const std::int64_t aligned = alignment_sample(aligned_phones.end_s, kVoiceFrameClock, timing.string(), "its end");
   if (std::llabs(aligned - frames) > kMaxLengthMismatchFrames)
-    refuse(u.alignment, "corpus-length", "the alignment ends at frame " + std::to_string(aligned) + " (" +
+    refuse(timing, "corpus-length", "the alignment ends at frame " + std::to_string(aligned) + " (" +
                                              std::to_string(aligned_phones.end_s) + " s), " + u.markers.filename().string() +
                                              " has " + std::to_string(frames) + " frames at 60 fps");
   bool previous_closure = false;
@@ -324,11 +359,11 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
     if (!phone) {
       const std::string what = "\"" + iv.label + "\" is not " + std::string(phone_set_name(listing.phone_set));
       if (const auto line = aligned_phones.lines[i])
-        throw InputError({u.alignment.string(), *line, std::nullopt}, "corpus-alignment", what);
-      refuse(u.alignment, "corpus-alignment", "phones interval " + std::to_string(i + 1) + ": " + what);
+        throw InputError({timing.string(), *line, std::nullopt}, "corpus-alignment", what);
+      refuse(timing, "corpus-alignment", "phones interval " + std::to_string(i + 1) + ": " + what);
     }
     const Phone p = *phone;
-    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(to_sample(t, kVoiceFramesPerSecond), 0, frames); };
+    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(to_sample(t, kVoiceFrameClock), 0, frames); };
     const std::int64_t first = clamp(iv.start_s);
     const std::int64_t end = clamp(iv.end_s);
     if (end <= first) continue;
@@ -344,7 +379,7 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
     previous_closure = closure;
   }
   take.synthetic = captured.synthetic || aligned_phones.synthetic;
-  if (take.phones.empty()) refuse(u.alignment, "corpus-alignment", "the phones tier has no interval of a frame or more");
+  if (take.phones.empty()) refuse(timing, "corpus-alignment", "the phones tier has no interval of a frame or more");
   return take;
 }
 

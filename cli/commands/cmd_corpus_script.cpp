@@ -2,13 +2,14 @@
 #include <iostream>
 
 #include "command.hpp"
+#include "output_check.hpp"
 #include "recording_script_options.hpp"
 #include "fapcast/corpus/recording_script.hpp"
 #include "fapcast/core/file_io.hpp"
 
 namespace {
 
-const fapcast::cli::Registration reg{"50-corpus-script", [](CLI::App& app) {
+const fapcast::cli::Registration reg{"corpus script", [](CLI::App& app) {
   struct Args {
     std::string output;
     fapcast::cli::RecordingScriptInputs inputs;
@@ -20,7 +21,8 @@ const fapcast::cli::Registration reg{"50-corpus-script", [](CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "Write the script to FILE (default: standard output)");
   fapcast::cli::add_recording_script_options(cmd, args->inputs);
   cmd->callback([args] {
-        const fapcast::RecordingScript script = fapcast::cli::load_recording_script(args->inputs);
+    fapcast::cli::check_output_writable(args->output);
+    const fapcast::RecordingScript script = fapcast::cli::load_recording_script(args->inputs);
     const std::string text = fapcast::format_recording_script(script);
     if (args->output.empty()) {
       std::cout << text;

@@ -13,18 +13,18 @@
 
 namespace {
 
-const fapcast::cli::Registration reg{"70-eval-retarget", [](CLI::App& app) {
+const fapcast::cli::Registration reg{"eval retarget", [](CLI::App& app) {
   struct Args {
     std::string voice;
     std::string corpus;
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = fapcast::cli::command_group(app, "eval", "Evaluate retargeting and synthesis by the paper's measures")
+  auto* cmd = fapcast::cli::command_group(app, "eval", fapcast::cli::kEvalGroupHelp)
                   ->add_subcommand("retarget",
                                    "Lip height, width and protrusion of the source markers against the voice's "
                                    "retargeted target face over a corpus: mean normalised error and correlation");
-  cmd->add_option("voice", args->voice, "Voice file (.fapv)")->required();
+  cmd->add_option("VOICE", args->voice, "Voice file (.fapv)")->required();
   cmd->add_option("--corpus", args->corpus, "Corpus directory (default: the one the voice was built from)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
   cmd->callback([args] {

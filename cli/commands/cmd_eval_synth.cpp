@@ -3,6 +3,7 @@
 // the variable-length search and two baselines, scored on the target face.
 #include "command.hpp"
 #include "default_voice.hpp"
+#include "synthesis_cli.hpp"
 #include "fapcast/eval/svg_plot.hpp"
 #include "fapcast/eval/synthesis_report.hpp"
 
@@ -28,50 +29,37 @@ using namespace fapcast;
 NamedSystem variable_length_system(const Voice& voice, SynthesisOptions options) {
   return {"variable-length", [&voice, options](const HeldOutUtterance& u) {
             const auto track = synthesize(voice.graph(), voice.frame_coefficients(), u.speech.phones,
-                                                 u.speech.audio.sample_rate_hz,
+                                                 u.speech.audio.sample_rate,
                                                  static_cast<std::int64_t>(u.speech.audio.samples.size()), options, u.id);
             return SystemOutput{track.pca_frames, track.search.units.size()};
           }};
 }
 
-const cli::Registration reg{"71-eval-synth", [](CLI::App& app) {
+const cli::Registration reg{"eval synth", [](CLI::App& app) {
   struct Args {
     std::string voice;
     std::size_t count = kHeldOutSentences.size();
     std::uint64_t seed = 2;
     std::string plots;
     std::string json;
-    double beta = 0.0;
-    std::size_t max_active = 0;
-    double duration_weight = 0.0;
-    bool boundary_joins = false;
+    SynthesisOptions options;  // the library's defaults: what `say` ships
     bool quiet = false;
   };
   auto args = std::make_shared<Args>();
-  auto* cmd = cli::command_group(app, "eval", "Evaluate retargeting and synthesis by the paper's measures")
+  auto* cmd = cli::command_group(app, "eval", cli::kEvalGroupHelp)
                   ->add_subcommand("synth",
                                    "Held-out SYNTHETIC sentences recorded by the voice's reference actor, "
                                    "synthesised from their own timing by the variable-length search, diviseme "
                                    "concatenation and dominance interpolation; lip and feature-point errors");
-  cmd->add_option("--voice", args->voice, "Voice file (.fapv); default: the cached default voice, built on first use");
+  cmd->add_option("VOICE", args->voice, "Voice file (.fapv); default: the cached default voice, built on first use");
   cmd->add_option("--count", args->count, "Held-out sentences to record and synthesise")
       ->check(CLI::Range(std::size_t{1}, kHeldOutSentences.size()))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of the held-out takes' variation (the voice's corpus uses its own)")
       ->capture_default_str();
-  cmd->add_option("--beta", args->beta, "Weight of the junction smoothness in the search's cost (0: fewest units)")
-      ->check(CLI::NonNegativeNumber)
-      ->capture_default_str();
-  cmd->add_option("--max-active", args->max_active, "Cap on active states per phone in the search (0: none)")
-      ->capture_default_str();
-  cmd->add_option("--duration-weight", args->duration_weight,
-                  "Weight of the duration term in the search's cost: ln^2 of each phone's time warp (0: none)")
-      ->check(CLI::Range(0.0, 1e6))
-      ->capture_default_str();
-  cmd->add_flag("--boundary-joins", args->boundary_joins,
-                "Variable-length units hand over at phone boundaries (default: in the middle of the phone before)");
-  cmd->add_option("--plots", args->plots, "Directory for one SVG of lip curves per sentence (created)");
-  cmd->add_option("--json", args->json, "Write the results as JSON (atomically)");
+  cli::add_synthesis_options(*cmd, args->options);
+  cmd->add_option("--plots-out", args->plots, "Write one SVG of lip curves per sentence into this folder (created)");
+  cmd->add_option("--json-out", args->json, "Write the results as JSON to this file (atomically)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
   cmd->callback([args] {
     namespace fs = std::filesystem;
@@ -83,11 +71,7 @@ const cli::Registration reg{"71-eval-synth", [](CLI::App& app) {
     const FaceModel actor = reference_actor(ict_face_model(), voice.provenance().seed);
     if (!args->quiet) std::cerr << "recording " << args->count << " held-out sentences (seed " << args->seed << ")\n";
     const auto held = record_held_out(actor, args->seed, args->count);
-    SynthesisOptions options;
-    options.search.beta = args->beta;
-    if (args->max_active > 0) options.search.max_active = args->max_active;
-    options.search.duration_weight = args->duration_weight;
-    options.concatenation.join_mid_phone = !args->boundary_joins;
+    const SynthesisOptions& options = args->options;
     const std::vector<NamedSystem> systems{
         variable_length_system(voice, options),
         diviseme_system(voice.graph(), voice.frame_coefficients()),
@@ -96,12 +80,8 @@ const cli::Registration reg{"71-eval-synth", [](CLI::App& app) {
     const auto report = evaluate_synthesis(evaluation_face(voice), systems, held);
 
     std::ostringstream command;
-    command << "fapcast eval synth" << (args->voice.empty() ? "" : " --voice " + args->voice) << " --count "
-            << args->count << " --seed " << args->seed;
-    if (args->beta > 0) command << " --beta " << args->beta;
-    if (args->max_active > 0) command << " --max-active " << args->max_active;
-    if (args->duration_weight > 0) command << " --duration-weight " << args->duration_weight;
-    if (args->boundary_joins) command << " --boundary-joins";
+    command << "fapcast eval synth" << (args->voice.empty() ? "" : " " + args->voice) << " --count " << args->count
+            << " --seed " << args->seed << cli::synthesis_options_text(options);
     const fapcast::EvaluationContext context{voice_path.string(), args->seed, command.str()};
     std::cout << fapcast::format_evaluation_table(report, context);
     if (!args->json.empty())

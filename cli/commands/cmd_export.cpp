@@ -2,6 +2,7 @@
 // JSON) as a BVH skeleton animation (spec/bvh.md) or as JSON for web players (spec/json.md).
 // The output format follows OUT's extension. Argument parsing only; the codec does the work.
 #include "command.hpp"
+#include "output_check.hpp"
 
 #include "fapcast/codec/bvh_export.hpp"
 #include "fapcast/codec/bvh_text.hpp"
@@ -36,7 +37,7 @@ FapJsonRead read_track(const std::string& path) {
   throw cli::UsageError("export: input '" + path + "' is neither .fap nor .json");
 }
 
-const cli::Registration reg{"60-export", [](CLI::App& app) {
+const cli::Registration reg{"export", [](CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "export", "Export a FAP track (.fap or .json) as BVH (head, jaw, tongue-tip and lip joints "
                 "on a generic adult face, cm) or as JSON for web players");
@@ -55,6 +56,7 @@ const cli::Registration reg{"60-export", [](CLI::App& app) {
       throw cli::UsageError("export: output '" + *out + "' must end in .bvh or .json");
     if (ext == ".bvh" && rate_opt->count() > 0)
       throw cli::UsageError("export: --sample-rate applies to .json output only");
+    cli::check_output_writable(*out);
     FapJsonRead track = read_track(*in);
     std::string bytes;
     if (ext == ".bvh") {
@@ -62,7 +64,7 @@ const cli::Registration reg{"60-export", [](CLI::App& app) {
     } else {
       FapJsonOptions options = track.options;
       options.generator = std::string("fapcast ") + FAPCAST_VERSION;
-      if (rate_opt->count() > 0) options.sample_rate = *sample_rate;
+      if (rate_opt->count() > 0) options.sample_rate = SampleRate{*sample_rate};
       bytes = write_fap_json(track.sequence, options);
     }
     write_file_atomically(*out, bytes);

@@ -1,7 +1,9 @@
-// `fapcast fap info FILE [--json]` and `fapcast fap convert IN OUT [--dialect strict|69]`:
+// `fapcast fap info FILE [--json]` and `fapcast fap convert IN -o OUT [--dialect strict|69 | --player P]`:
 // inspect and convert .fap text files (spec/fap-text.md). Argument parsing and printing only;
 // reading, writing and statistics are codec functions.
 #include "command.hpp"
+#include "output_check.hpp"
+#include "fap_output.hpp"
 
 #include "fapcast/codec/fap_stats.hpp"
 #include "fapcast/codec/fap_table.hpp"
@@ -103,10 +105,13 @@ FapTextRead read_fba_file(const std::string& path, const std::string& bytes, Sou
   FapTextRead r;
   r.sequence = std::move(d.sequence);
   r.sequence.name = std::filesystem::path(path).stem().string();  // .fba carries no name
-  for (const auto& e : d.report.errors) r.info.warnings.push_back(path + ": " + e.message());
-  for (const auto& w : r.info.warnings) std::cerr << "fapcast: warning: " << w << "\n";
-  if (d.report.frames_decoded == 0 && !d.report.ok()) throw std::runtime_error(path + ": no frame could be decoded");
-  src = {"fba", "predictive", std::to_string(d.report.frames_lost) + " frames lost, " +
+  // A corrupt or truncated stream is bad input, not a summary with warnings: its first error.
+  if (!d.report.ok())
+    throw std::runtime_error(path + ": " + (d.report.errors.empty() ? std::string("fba: corrupt stream")
+                                                                    : d.report.errors.front().message()) +
+                             " (" + std::to_string(d.report.errors_total) + " errors, " +
+                             std::to_string(d.report.frames_lost) + " frames lost)");
+  src = {"fba", fba_profile_name(d.report.profile), std::to_string(d.report.frames_lost) + " frames lost, " +
                                   std::to_string(d.report.bytes) + " bytes",
          d.report.frames_decoded + d.report.frames_lost + d.report.frames_skipped};
   return r;
@@ -116,7 +121,12 @@ void info(const std::string& path, bool json) {
   const std::string bytes = read_file(path);
   SourceSummary src;
   FapTextRead r;
-  if (bytes.starts_with(std::string_view("\0\0\1\xBA", 4))) {
+  // An FBA stream by its start-code prefix or its extension (a corrupt first start code is still
+  // an FBA stream, reported as one, not as "not a text file").
+  const bool fba = fba_file_profile({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()}) ||
+                   bytes.starts_with(std::string_view("\0\0\1", 3)) ||
+                   std::filesystem::path(path).extension() == ".fba";
+  if (fba) {
     r = read_fba_file(path, bytes, src);
   } else {
     r = read_fap_text(bytes, path);
@@ -133,21 +143,31 @@ void info(const std::string& path, bool json) {
     print_text(std::cout, path, r.sequence.name, src, stats);
 }
 
-void convert(const std::string& in, const std::string& out, const std::string& dialect) {
+void convert(const std::string& in, const std::string& out, const std::string& dialect, const std::string& player) {
+  cli::check_output_writable(out);
   const FapTextRead r = read_fap_file(in);
   const auto d = dialect == "69" ? FapTextDialect::kMask69 : FapTextDialect::kStrict;
+  const FapTextWriteOptions options = cli::fap_write_options(player, d);
   if (d == FapTextDialect::kMask69) {
     if (const auto lossy = mask69_lossy_frames(r.sequence); lossy > 0)
       std::cerr << "fapcast: warning: " << in << ": " << lossy
                 << " frames have FAP 1/2 fields the 69-token dialect cannot carry; only "
                    "viseme_select1 and expression_select1 are kept\n";
   }
-  write_file_atomically(out, write_fap_text(r.sequence, d));
+  std::string text;
+  try {
+    text = write_fap_text(r.sequence, options);
+  } catch (const std::invalid_argument& e) {
+    throw std::runtime_error(out + ": " + e.what());
+  }
+  write_file_atomically(out, text);
   std::cout << "wrote " << out << ": " << r.sequence.frames.size() << " frames, "
-            << (d == FapTextDialect::kMask69 ? "69-token" : "strict") << " dialect\n";
+            << (player.empty() ? (d == FapTextDialect::kMask69 ? "69-token dialect" : "strict dialect") : "for " + player)
+            << "\n";
+  if (d != FapTextDialect::kMask69) cli::print_notes(out, fap_text_player_notes(r.sequence, options));
 }
 
-const cli::Registration reg{"40-fap", [](CLI::App& app) {
+const cli::Registration reg{"fap", [](CLI::App& app) {
   auto* fap = app.add_subcommand("fap", "Inspect and convert .fap text files");
   fap->require_subcommand(1);
 
@@ -163,11 +183,13 @@ const cli::Registration reg{"40-fap", [](CLI::App& app) {
   auto in = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto dialect = std::make_shared<std::string>("strict");
+  auto player = std::make_shared<std::string>();
   conv->add_option("IN", *in, "input .fap file")->required();
-  conv->add_option("OUT", *out, "output .fap file (written atomically)")->required();
-  conv->add_option("--dialect", *dialect, "strict (default) or 69")
-      ->check(CLI::IsMember({"strict", "69"}));
-  conv->callback([=] { convert(*in, *out, *dialect); });
+  conv->add_option("-o,--output", *out, "output .fap file (written atomically)")->required();
+  auto* dialect_option = conv->add_option("--dialect", *dialect, "strict (default) or 69 (Greta's own exporter)")
+                             ->check(CLI::IsMember({"strict", "69"}));
+  cli::add_player_option(conv, *player)->excludes(dialect_option);
+  conv->callback([=] { convert(*in, *out, *dialect, *player); });
 }};
 
 }  // namespace

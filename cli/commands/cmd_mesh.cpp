@@ -1,11 +1,12 @@
 // Mesh commands (spec/adaptation.md, spec/gltf.md):
-//   fapcast adapt --generic G.obj --specific S.obj --targets DIR -o DIR
-//   fapcast expressions -o DIR | OUT.glb [--intensity N] [--fps N] [--seconds S] [--obj-frames DIR]
+//   fapcast adapt TARGETS_DIR GENERIC.obj SPECIFIC.obj -o DIR
+//   fapcast expressions -o DIR | OUT.glb [--intensity N] [--fps N] [--seconds S] [--obj-frames-out DIR]
 //   fapcast render IN.glb -o DIR [--view face|mouth] [--width PX] [--every N]
 // Argument parsing only; synth adapts and builds expressions, codec writes and reads glTF, the
 // rasteriser (render/rasteriser) draws.
 #include "animation.hpp"
 #include "command.hpp"
+#include "output_check.hpp"
 #include "fapcast/render/mesh_export.hpp"
 #include "fapcast/render/rasteriser.hpp"
 
@@ -33,7 +34,7 @@ WriteFile write_into(const fs::path& dir) {
   };
 }
 
-const cli::Registration adapt_reg{"70-adapt", [](CLI::App& app) {
+const cli::Registration adapt_reg{"adapt", [](CLI::App& app) {
   struct Args {
     std::string generic, specific, targets, output;
   };
@@ -41,10 +42,9 @@ const cli::Registration adapt_reg{"70-adapt", [](CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "adapt", "Adapt morph targets (OBJ meshes with the generic face's topology) from a generic "
                "face to a specific one: per-vertex area-weighted triangle maps (spec/adaptation.md)");
-  cmd->add_option("--generic", args->generic, "Generic neutral mesh (.obj)")->required();
-  cmd->add_option("--specific", args->specific, "Specific neutral mesh (.obj), same topology")->required();
-  cmd->add_option("--targets", args->targets, "Folder of target meshes (*.obj) on the generic face")
-      ->required();
+  cmd->add_option("TARGETS", args->targets, "Folder of target meshes (*.obj) on the generic face")->required();
+  cmd->add_option("GENERIC", args->generic, "Generic neutral mesh (.obj)")->required();
+  cmd->add_option("SPECIFIC", args->specific, "Specific neutral mesh (.obj), same topology")->required();
   cmd->add_option("-o,--output", args->output, "Output folder (created; files written atomically)")
       ->required();
   cmd->callback([args] {
@@ -68,7 +68,7 @@ Eigen::MatrixXf expression_tour(int fps, double seconds) {
   return w;
 }
 
-const cli::Registration expressions_reg{"71-expressions", [](CLI::App& app) {
+const cli::Registration expressions_reg{"expressions", [](CLI::App& app) {
   struct Args {
     std::string output, obj_frames;
     int intensity = kMaxExpressionIntensity;
@@ -88,11 +88,12 @@ const cli::Registration expressions_reg{"71-expressions", [](CLI::App& app) {
   cmd->add_option("--seconds", args->seconds, ".glb: seconds per expression")
       ->check(CLI::Range(0.05, 60.0))
       ->capture_default_str();
-  cmd->add_option("--obj-frames", args->obj_frames, ".glb: also write every frame as OBJ (metres) here");
+  cmd->add_option("--obj-frames-out", args->obj_frames, ".glb: also write every frame as OBJ (metres) into this folder");
   cmd->callback([args] {
+    if (cli::is_mesh_output(args->output)) cli::check_output_writable(args->output);  // before the face is loaded
     const FaceModel& face = ict_face_model();
     if (!cli::is_mesh_output(args->output)) {
-      if (!args->obj_frames.empty()) throw cli::UsageError("expressions: --obj-frames needs a .glb output");
+      if (!args->obj_frames.empty()) throw cli::UsageError("expressions: --obj-frames-out needs a .glb output");
       write_expression_targets(face, args->intensity, write_into(args->output));
       std::cout << "expressions: 6 OBJ targets -> " << args->output << "\n";
       return;
@@ -115,7 +116,7 @@ const cli::Registration expressions_reg{"71-expressions", [](CLI::App& app) {
   });
 }};
 
-const cli::Registration render_reg{"72-render", [](CLI::App& app) {
+const cli::Registration render_reg{"render", [](CLI::App& app) {
   struct Args {
     std::string input, output, view = "face";
     int width = 320, every = 1;

@@ -1,40 +1,103 @@
-// `fapcast say "TEXT" -o OUT.fap|OUT.glb [--wav OUT.wav] [--voice V] [--fps N] [--expression E] ...`:
+// `fapcast say TEXT|- [--text-file FILE] [--lang CODE] [--espeak-variant V] [--ssml] -o OUT ...`:
 // speaks the text with espeak-ng and animates it (spec/synthesis.md). Argument parsing only.
 #include "command.hpp"
+#include "output_check.hpp"
 #include "synthesis_cli.hpp"
 
+#include "fapcast/core/file_io.hpp"
+#include "fapcast/core/text_input.hpp"
 #include "fapcast/core/wav_file.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
 
+#include <algorithm>
 #include <filesystem>
+#include <iostream>
+#include <iterator>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace {
 using namespace fapcast;
 
-const cli::Registration reg{"20-say", [](CLI::App& app) {
+// Standard input whole, as bytes.
+std::string read_stdin() {
+  std::cin >> std::noskipws;
+  std::string bytes{std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>()};
+  if (std::cin.bad()) throw std::runtime_error("say: <stdin>: read failed");
+  return bytes;
+}
+
+const cli::Registration reg{"say", [](CLI::App& app) {
   struct Args {
     std::string text;
+    std::string text_file;
+    std::string language = std::string(kDefaultLanguage);
+    std::string variant;
+    bool ssml = false;
     std::string wav;
     cli::SynthesisArgs synthesis;
   };
   auto args = std::make_shared<Args>();
   auto* cmd = cli::add_synthesis_command(
-      app, "say", "Speak English text (espeak-ng) and animate it: a FAP track or a glTF mesh in sync with the WAV",
+      app, "say", "Speak text in any espeak-ng language (or SSML) and animate it: a FAP track or a glTF mesh in sync with the WAV",
       args->synthesis, [args] {
-        const Speech speech = speak(args->text);
-        if (speech.phones.empty()) throw std::runtime_error("say: TEXT: empty-text: nothing to say");
+        if (args->text.empty() == args->text_file.empty())
+          throw cli::UsageError("say: give the text as TEXT, as - (standard input) or with --text-file FILE (one of them)");
+        const auto languages = espeak_languages();
+        if (std::none_of(languages.begin(), languages.end(), [&](const EspeakLanguage& l) { return l.code == args->language; }))
+          throw cli::UsageError("say: --lang '" + args->language + "': not an installed espeak-ng language (espeak-ng --voices lists them)");
+        const auto variants = espeak_variants();
+        if (!args->variant.empty() && std::find(variants.begin(), variants.end(), args->variant) == variants.end())
+          throw cli::UsageError("say: --espeak-variant '" + args->variant +
+                                "': not an installed espeak-ng variant (espeak-ng --voices=variant lists them)");
         // A .glb is a mesh for a player: its sound goes beside it unless told where.
         std::string wav = args->wav;
-        if (wav.empty() && cli::is_mesh_output(args->synthesis.output))
+        if (wav.empty() && (cli::is_mesh_output(args->synthesis.output) ||
+                            cli::is_rig_output(args->synthesis.output, args->synthesis.rig)))
           wav = std::filesystem::path(args->synthesis.output).replace_extension(".wav").string();
-        if (!wav.empty()) write_wav(wav, speech.audio);
-        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate_hz,
+        cli::check_output_writable(wav);  // the track's output was checked before this runs
+        SpeakOptions options{.language = args->language, .variant = args->variant, .ssml = args->ssml};
+        std::string text = args->text;
+        if (!args->text_file.empty()) {
+          options.source = args->text_file;
+          text = decode_text(read_file(args->text_file), args->text_file, "text");
+        } else if (args->text == "-") {
+          options.source = "<stdin>";
+          text = decode_text(read_stdin(), options.source, "text");
+        }
+        const Speech speech = speak(text, options);
+        if (speech.phones.empty()) throw std::runtime_error("say: " + options.source + ": empty-text: nothing to say");
+        // The track and its WAV appear together or not at all: the WAV is written first but
+        // committed only after the track was, and the track is removed again if that fails.
+        std::optional<AtomicFile> wav_file;
+        if (!wav.empty()) {
+          wav_file.emplace(wav);
+          wav_file->write(wav_bytes(speech.audio));
+        }
+        args->synthesis.cues.sound_file = wav;
+        args->synthesis.words = speech.words;
+        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate,
                                   static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");
+        if (wav_file) {
+          try {
+            wav_file->commit();
+          } catch (...) {
+            std::error_code ignored;
+            std::filesystem::remove(args->synthesis.output, ignored);
+            throw;
+          }
+        }
       });
-  cmd->add_option("TEXT", args->text, "The text (UTF-8)")->required();
-  cmd->add_option("--wav", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");
+  cmd->add_option("TEXT", args->text, "The text (UTF-8); - reads it from standard input");
+  cmd->add_option("--text-file", args->text_file, "Read the text from this file (UTF-8, or UTF-16 with a BOM; any length)");
+  cmd->add_option("--lang", args->language,
+                  "espeak-ng language code, as `espeak-ng --voices` lists it (ru, de, cmn, en-gb, ...)")
+      ->capture_default_str();
+  cmd->add_option("--espeak-variant", args->variant,
+                  "espeak-ng voice variant, as `espeak-ng --voices=variant` lists it by file (f2, m3, klatt, ...)");
+  cmd->add_flag("--ssml", args->ssml, "The text is SSML: espeak-ng parses the markup (<break>, <prosody>, ...)");
+  cmd->add_option("--wav-out", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");
 }};
 
 }  // namespace

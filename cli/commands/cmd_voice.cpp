@@ -1,6 +1,7 @@
-// `fapcast voice build`, `voice info`, `voice default` (spec/voice.md) and `voice retarget`
+// `fapcast voice build`, `voice info`, `voice default` (spec/voice.md) and `voice adapt`
 // (spec/adaptation.md).
 #include "command.hpp"
+#include "output_check.hpp"
 #include "default_voice.hpp"
 
 #include "fapcast/core/synthetic_label.hpp"
@@ -37,7 +38,7 @@ std::string_view element_type_name(fapcast::ElementType type) {
   return "?";
 }
 
-const fapcast::cli::Registration build_reg{"60-voice-build", [](CLI::App& app) {
+const fapcast::cli::Registration build_reg{"voice build", [](CLI::App& app) {
   struct Args {
     std::string corpus;
     std::string output;
@@ -51,7 +52,7 @@ const fapcast::cli::Registration build_reg{"60-voice-build", [](CLI::App& app) {
                   ->add_subcommand("build",
                                    "Build a voice from a corpus directory (manifest.json, or markers *.c3d, *.trc or "
                                    "*.csv, each with a *.TextGrid or *.lab of the same stem): prototypes, RBF retargeting onto the ICT face, PCA, phone graph");
-  cmd->add_option("corpus", args->corpus, "Corpus directory")->required();
+  cmd->add_option("CORPUS", args->corpus, "Corpus directory")->required();
   cmd->add_option("-o,--output", args->output, "Voice file to write (.fapv)")->required();
   cmd->add_option("--pca", args->pca, "PCA route: exact (the RBF map's affine image) or em (EM-PCA, minutes)")
       ->check(CLI::IsMember({"exact", "em"}))
@@ -62,6 +63,7 @@ const fapcast::cli::Registration build_reg{"60-voice-build", [](CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Seed of EM-PCA's start (recorded in the provenance)")->capture_default_str();
   cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
   cmd->callback([args] {
+    fapcast::cli::check_output_writable(args->output);
     fapcast::VoiceBuildOptions options;
     options.pca = args->pca == "em" ? fapcast::PcaRoute::em : fapcast::PcaRoute::exact;
     options.seed = args->seed;
@@ -88,11 +90,11 @@ const fapcast::cli::Registration build_reg{"60-voice-build", [](CLI::App& app) {
   });
 }};
 
-const fapcast::cli::Registration info_reg{"61-voice-info", [](CLI::App& app) {
+const fapcast::cli::Registration info_reg{"voice info", [](CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto* cmd = fapcast::cli::command_group(app, "voice", kVoiceGroupHelp)
                   ->add_subcommand("info", "Print a voice's provenance and the size of each section");
-  cmd->add_option("voice", *path, "Voice file (.fapv)")->required();
+  cmd->add_option("VOICE", *path, "Voice file (.fapv)")->required();
   cmd->callback([path] {
     const auto voice = fapcast::Voice::open(*path);
     const auto& p = voice.provenance();
@@ -121,7 +123,7 @@ const fapcast::cli::Registration info_reg{"61-voice-info", [](CLI::App& app) {
 
 namespace {
 
-const fapcast::cli::Registration default_reg{"62-voice-default", [](CLI::App& app) {
+const fapcast::cli::Registration default_reg{"voice default", [](CLI::App& app) {
   auto quiet = std::make_shared<bool>(false);
   auto* cmd = fapcast::cli::command_group(app, "voice", kVoiceGroupHelp)
                   ->add_subcommand("default",
@@ -135,25 +137,26 @@ const fapcast::cli::Registration default_reg{"62-voice-default", [](CLI::App& ap
 
 namespace {
 
-const fapcast::cli::Registration retarget_reg{"63-voice-retarget", [](CLI::App& app) {
+const fapcast::cli::Registration adapt_reg{"voice adapt", [](CLI::App& app) {
   struct Args {
     std::string voice, generic, specific, output, unit = "cm";
   };
   auto args = std::make_shared<Args>();
   auto* cmd = fapcast::cli::command_group(app, "voice", kVoiceGroupHelp)
-                  ->add_subcommand("retarget",
-                                   "Re-target a voice to a specific face of its face's topology without "
+                  ->add_subcommand("adapt",
+                                   "Adapt a voice to a specific face of its face's topology without "
                                    "re-recording: per-vertex affine maps carry the PCA mean and components, the "
                                    "RBF map and the neutral feature points (spec/adaptation.md)");
   cmd->add_option("VOICE", args->voice, "Voice file (.fapv)")->required();
-  cmd->add_option("--generic", args->generic, "The voice's own neutral face (.obj), e.g. the ICT generic mesh")
+  cmd->add_option("GENERIC", args->generic, "The voice's own neutral face (.obj), e.g. the ICT generic mesh")
       ->required();
-  cmd->add_option("--specific", args->specific, "The specific neutral face (.obj), same topology")->required();
+  cmd->add_option("SPECIFIC", args->specific, "The specific neutral face (.obj), same topology")->required();
   cmd->add_option("--obj-unit", args->unit, "Length unit of both OBJ files")
       ->check(CLI::IsMember({"cm", "m", "mm"}))
       ->capture_default_str();
-  cmd->add_option("-o,--output", args->output, "The re-targeted voice (.fapv, written atomically)")->required();
+  cmd->add_option("-o,--output", args->output, "The adapted voice (.fapv, written atomically)")->required();
   cmd->callback([args] {
+    fapcast::cli::check_output_writable(args->output);
     const float metres = args->unit == "cm" ? 0.01f : args->unit == "mm" ? 0.001f : 1.0f;
     const auto generic = fapcast::read_obj_mesh(args->generic);
     const auto specific = fapcast::read_obj_mesh(args->specific);
@@ -168,7 +171,7 @@ const fapcast::cli::Registration retarget_reg{"63-voice-retarget", [](CLI::App& 
     }
     fapcast::write_file_atomically(args->output, out.bytes);
     const auto& s = out.summary;
-    std::cout << "voice " << args->output << ": " << voice.component_count() << " components re-targeted over "
+    std::cout << "voice " << args->output << ": " << voice.component_count() << " components adapted over "
               << s.vertices << " vertices, " << s.triangles << " triangles (" << s.degenerate_triangles
               << " degenerate, " << s.global_map_vertices << " vertices on the global map); feature points moved by "
               << "up to " << s.max_feature_point_offset_m * 1000.0 << " mm; " << out.bytes.size() << " bytes\n";

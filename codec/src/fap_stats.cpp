@@ -9,9 +9,8 @@ FapStats fap_stats(const FapSequence& seq) {
   FapStats s;
   s.frame_count = seq.frames.size();
   s.rate = seq.rate;
-  constexpr std::int64_t kMillisecondsPerSecond = 1000;
-  s.duration_ms = frame_to_sample(static_cast<std::int64_t>(s.frame_count), seq.rate,
-                                  kMillisecondsPerSecond);
+  constexpr SampleRate kMilliseconds{1000};  // the duration as samples of a 1 kHz clock
+  s.duration_ms = frame_to_sample(static_cast<std::int64_t>(s.frame_count), seq.rate, kMilliseconds);
   std::array<FapValueRange, kFapCount> all{};
   for (const FapFrame& f : seq.frames) {
     for (int n = 1; n <= kFapCount; ++n) {

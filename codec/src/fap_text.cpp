@@ -24,7 +24,10 @@ constexpr int kExpressionFieldsStrict = 6;         // select1, intensity1, selec
 constexpr std::size_t kMaxLineTokens = 1 + kVisemeFieldsStrict + kExpressionFieldsStrict + 66 + 3;
 constexpr std::uint32_t kMaxFpsMillis = 1'000'000;  // fps <= 1000
 constexpr int kMaxFpsDigits = 6;                    // fractional digits of the fps token
-constexpr std::uint8_t kFullWeight = 63;            // viseme_blend / expression_intensity maximum
+constexpr std::uint8_t kFullWeight = 63;            // viseme_blend / expression_intensity: full weight
+// The largest blend or intensity a standard FBA stream decodes to: 63 on the quantiser's grid of
+// fap_quant 25 is 75 (spec/fba.md §5), so every decoded stream writes and reads back.
+constexpr std::uint8_t kMaxWeight = 75;
 constexpr int kLastViseme = 14;                     // visemes 0 (none) .. 14 (U, book)
 constexpr int kLastExpression = 6;                  // expressions 0 (none) .. 6 (surprise)
 // NTSC-family rates written as decimals: N x 1000/1001 (29.97 is 30000/1001).
@@ -177,6 +180,14 @@ class Reader {
   std::uint64_t header_line_ = 0;
   int mask_tokens_ = 0;  // 68 or 69 once the first mask line is read
   std::uint64_t first_mask_line_ = 0;
+  // FAP 1/2 fields per value line: unknown until the first frame that masks one of them; then
+  // the standard's 4/6, or one integer each (the 69-token dialect, and 68-token files written for
+  // Greta and VREng: told apart by the token count, which differs by 3 per FAP 1, 5 per FAP 2).
+  std::optional<bool> single_fap12_;
+  std::optional<std::uint64_t> first_number_;  // the first record's frame number
+  std::uint64_t first_frame_warning_ = 0;     // warning_count after the first-frame warning (0: none)
+  std::uint64_t frame_offset_ = 0;            // 1 once the file is read one-based
+  std::uint64_t held_runs_ = 0;               // skips that held frames
   FapTextRead out_;
 };
 
@@ -373,25 +384,39 @@ void Reader::hold_until(std::uint64_t frame_number, std::uint64_t line) {
          "frame " + std::to_string(frame_number) + " skips " +
              std::to_string(frame_number - frames.size()) + " frames; a skip may hold at most " +
              std::to_string(kFapTextMaxHeldFrames));
-  if (frames.empty())
+  if (frames.empty()) {
     warn(line, "first-frame",
          "the first frame is " + std::to_string(frame_number) + "; frames before it are neutral");
+    first_frame_warning_ = out_.info.warning_count;
+  }
+  ++held_runs_;
   out_.info.skipped_frames = true;
   const FapFrame held = frames.empty() ? FapFrame{} : frames.back();
   frames.resize(frame_number, held);
 }
 
 void Reader::read_frame(const FapMask& mask, std::uint64_t mask_line, const Line& values) {
-  const bool d69 = mask_tokens_ == kMaskTokens69;
-  const std::size_t expected = 1 + (mask.test(kVisemeFap) ? (d69 ? 1 : kVisemeFieldsStrict) : 0) +
-                               (mask.test(kExpressionFap) ? (d69 ? 1 : kExpressionFieldsStrict) : 0) +
-                               static_cast<std::size_t>(mask.count() - mask.test(kVisemeFap) -
-                                                        mask.test(kExpressionFap));
+  const bool fap12 = mask.test(kVisemeFap) || mask.test(kExpressionFap);
+  if (mask_tokens_ == kMaskTokens69) single_fap12_ = true;
+  const auto expected_for = [&](bool single) {
+    return 1 + (mask.test(kVisemeFap) ? (single ? 1 : kVisemeFieldsStrict) : 0) +
+           (mask.test(kExpressionFap) ? (single ? 1 : kExpressionFieldsStrict) : 0) +
+           static_cast<std::size_t>(mask.count() - mask.test(kVisemeFap) - mask.test(kExpressionFap));
+  };
   const Tokens t = split(values.text);
+  if (fap12 && !single_fap12_ && t.count == expected_for(true)) {
+    single_fap12_ = true;  // a file written for Greta or VREng
+    out_.info.single_fap12 = true;
+  }
+  if (fap12 && !single_fap12_) single_fap12_ = false;
+  const bool d69 = single_fap12_.value_or(false);
+  const std::size_t expected = expected_for(d69);
   if (t.count != expected)
     fail(values.number, "value-count",
          std::to_string(t.count) + " tokens where the mask at line " + std::to_string(mask_line) +
-             " asks for " + std::to_string(expected) + " (frame number + values)");
+             " asks for " + std::to_string(expected) + " (frame number + values" +
+             (fap12 && out_.info.single_fap12 ? "; FAP 1 and 2 one integer each, as in the file's earlier frames" : "") +
+             ")");
 
   const auto fd = parse_decimal(t[0]);
   const auto fn = fd && !fd->negative && !fd->has_point ? parse_digits(fd->whole) : std::nullopt;
@@ -399,15 +424,34 @@ void Reader::read_frame(const FapMask& mask, std::uint64_t mask_line, const Line
     fail(values.number, "frame-number",
          "frame number " + quote(t[0]) + " is not a whole number >= 0");
   auto& frames = out_.sequence.frames;
-  if (*fn < frames.size())
+  if (!first_number_) first_number_ = *fn;
+  // A file numbered 1..N under a count of N (VREng's own eyes.fap): read one-based, in order,
+  // as VREng plays it (frames by order), not with a neutral frame 0 and frame N past the count.
+  if (frame_offset_ == 0 && *first_number_ == 1 && *fn == out_.info.header_frame_count && first_frame_warning_ != 0 &&
+      !frames.empty()) {
+    frames.erase(frames.begin());
+    frame_offset_ = 1;
+    if (first_frame_warning_ <= out_.info.warnings.size()) {
+      out_.info.warnings.erase(out_.info.warnings.begin() + static_cast<std::ptrdiff_t>(first_frame_warning_ - 1));
+      --out_.info.warning_count;
+    }
+    out_.info.skipped_frames = held_runs_ > 1;
+    out_.info.one_based = true;
+    warn(values.number, "one-based-frames",
+         "frames numbered from 1 up to the header's count of " + std::to_string(out_.info.header_frame_count) +
+             ": read as 0.." + std::to_string(out_.info.header_frame_count - 1) +
+             " in order, as VREng plays them (Xface would index past its frames)");
+  }
+  const std::uint64_t slot = *fn - frame_offset_;
+  if (slot < frames.size())
     fail(values.number, "frame-order",
-         "frame " + std::to_string(*fn) + " follows frame " + std::to_string(frames.size() - 1) +
+         "frame " + std::to_string(*fn) + " follows frame " + std::to_string(frames.size() - 1 + frame_offset_) +
              ": frame numbers must increase");
-  if (*fn >= out_.info.header_frame_count)
+  if (slot >= out_.info.header_frame_count)
     fail(values.number, "frame-past-count",
          "frame " + std::to_string(*fn) + " is past the header's count of " +
              std::to_string(out_.info.header_frame_count) + " frames");
-  if (*fn > frames.size()) hold_until(*fn, values.number);
+  if (slot > frames.size()) hold_until(slot, values.number);
 
   FapFrame f;
   f.mask = mask;
@@ -420,7 +464,7 @@ void Reader::read_frame(const FapMask& mask, std::uint64_t mask_line, const Line
       v.blend = kFullWeight;
     } else {
       v.select2 = field(t[i++], ln, "viseme-range", "viseme_select2", kLastViseme);
-      v.blend = field(t[i++], ln, "viseme-range", "viseme_blend", kFullWeight);
+      v.blend = field(t[i++], ln, "viseme-range", "viseme_blend", kMaxWeight);
       v.def = field(t[i++], ln, "viseme-range", "viseme_def", 1) != 0;
     }
   }
@@ -430,9 +474,9 @@ void Reader::read_frame(const FapMask& mask, std::uint64_t mask_line, const Line
     if (d69) {
       e.intensity1 = kFullWeight;
     } else {
-      e.intensity1 = field(t[i++], ln, "expression-range", "expression_intensity1", kFullWeight);
+      e.intensity1 = field(t[i++], ln, "expression-range", "expression_intensity1", kMaxWeight);
       e.select2 = field(t[i++], ln, "expression-range", "expression_select2", kLastExpression);
-      e.intensity2 = field(t[i++], ln, "expression-range", "expression_intensity2", kFullWeight);
+      e.intensity2 = field(t[i++], ln, "expression-range", "expression_intensity2", kMaxWeight);
       e.init_face = field(t[i++], ln, "expression-range", "init_face", 1) != 0;
       e.def = field(t[i++], ln, "expression-range", "expression_def", 1) != 0;
     }
@@ -507,6 +551,8 @@ std::string FapTextInfo::describe() const {
       {skipped_frames, "skipped frames"},
       {real_valued_tokens, "real-valued tokens"},
       {header_count_short, "header count short"},
+      {single_fap12, "FAP 1/2 one integer each"},
+      {one_based, "frames numbered from 1"},
   };
   for (const auto& [on, what] : flags)
     if (on) s += std::string(", ") + what;
@@ -565,8 +611,17 @@ std::size_t mask69_lossy_frames(const FapSequence& seq) {
                                                 [](const FapFrame& f) { return as_mask69(f) != f; }));
 }
 
-std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect) {
-  const bool d69 = dialect == FapTextDialect::kMask69;
+namespace {
+
+bool whole_fps(FrameRate rate) { return rate.valid() && rate.numerator % rate.denominator == 0; }
+
+bool masks_fap12(const FapSequence& seq) {
+  return std::any_of(seq.frames.begin(), seq.frames.end(),
+                     [](const FapFrame& f) { return f.mask.test(kVisemeFap) || f.mask.test(kExpressionFap); });
+}
+
+// mask_tokens: 68 or 69; single: FAP 1 and FAP 2 as one integer each.
+std::string write_text(const FapSequence& seq, bool mask69, bool single) {
   if (seq.frames.size() > kFapTextMaxFrames)  // the reader would refuse the file
     throw std::invalid_argument(std::to_string(seq.frames.size()) + " frames: a .fap file holds at most " +
                                 std::to_string(kFapTextMaxFrames));
@@ -578,7 +633,7 @@ std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect) {
   out.reserve(out.size() + seq.frames.size() * 145 + values * 8);
   std::uint64_t k = 0;
   for (const FapFrame& f : seq.frames) {
-    if (d69) out += "0 ";
+    if (mask69) out += "0 ";
     for (int n = 1; n <= kFapCount; ++n) {
       out += f.mask.test(n) ? '1' : '0';
       out += n == kFapCount ? '\n' : ' ';
@@ -590,7 +645,7 @@ std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect) {
     };
     if (f.mask.test(kVisemeFap)) {
       put(f.viseme.select1);
-      if (!d69) {
+      if (!single) {
         put(f.viseme.select2);
         put(f.viseme.blend);
         put(f.viseme.def);
@@ -598,7 +653,7 @@ std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect) {
     }
     if (f.mask.test(kExpressionFap)) {
       put(f.expression.select1);
-      if (!d69) {
+      if (!single) {
         put(f.expression.intensity1);
         put(f.expression.select2);
         put(f.expression.intensity2);
@@ -611,6 +666,70 @@ std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect) {
     out += '\n';
   }
   return out;
+}
+
+}  // namespace
+
+std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect) {
+  const bool d69 = dialect == FapTextDialect::kMask69;
+  return write_text(seq, d69, d69);
+}
+
+std::optional<FapPlayer> fap_player_from_name(std::string_view name) {
+  for (const FapPlayer p : {FapPlayer::kXface, FapPlayer::kGreta, FapPlayer::kVreng})
+    if (name == fap_player_name(p)) return p;
+  return std::nullopt;
+}
+
+const char* fap_player_name(FapPlayer player) {
+  switch (player) {
+    case FapPlayer::kXface: return "xface";
+    case FapPlayer::kGreta: return "greta";
+    case FapPlayer::kVreng: return "vreng";
+  }
+  return "?";
+}
+
+std::string write_fap_text(const FapSequence& seq, const FapTextWriteOptions& o) {
+  if (!o.player) return write_fap_text(seq, o.dialect);
+  if (o.dialect == FapTextDialect::kMask69)
+    throw std::invalid_argument("a player's file has 68 mask tokens: --dialect 69 and --player exclude each other");
+  if (*o.player == FapPlayer::kXface) {
+    if (!whole_fps(seq.rate))
+      throw std::invalid_argument("player-fps: Xface reads the fps as a whole number: " + fap_text_fps(seq.rate) +
+                                  " fps would play at " + std::to_string(seq.rate.numerator / seq.rate.denominator) +
+                                  "; resample the track to a whole rate first");
+    return write_text(seq, false, false);
+  }
+  return write_text(seq, false, true);  // Greta and VREng: FAP 1 and FAP 2 one integer each
+}
+
+std::vector<std::string> fap_text_player_notes(const FapSequence& seq, const FapTextWriteOptions& o) {
+  std::vector<std::string> notes;
+  const bool fap12 = masks_fap12(seq);
+  if (o.dialect == FapTextDialect::kMask69) {
+    notes.push_back("69 mask tokens: Greta's layout; Xface and VREng read 68 and would misread the file");
+    return notes;
+  }
+  if (!o.player) {
+    if (fap12)
+      notes.push_back("FAP 1/2 written in the standard layout (4 and 6 fields), as Xface reads them; Greta and VREng "
+                      "read one field each and would shift every later value: write with --player greta or "
+                      "--player vreng for them");
+    if (!whole_fps(seq.rate))
+      notes.push_back("fps " + fap_text_fps(seq.rate) + " is not a whole number: Xface would play at " +
+                      std::to_string(seq.rate.numerator / seq.rate.denominator) + " fps");
+    return notes;
+  }
+  if (*o.player != FapPlayer::kXface && fap12) {
+    std::size_t lossy = 0;
+    for (const FapFrame& f : seq.frames) lossy += as_mask69(f) != f;
+    if (lossy > 0)
+      notes.push_back(std::string("FAP 1/2 one field each, as ") + (*o.player == FapPlayer::kGreta ? "Greta" : "VREng") +
+                      " reads them: " + std::to_string(lossy) +
+                      " frames lose viseme_select2/blend or expression intensities (Xface would read 4 and 6 fields)");
+  }
+  return notes;
 }
 
 }  // namespace fapcast

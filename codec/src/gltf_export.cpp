@@ -265,18 +265,33 @@ Eigen::Matrix3Xf to_matrix(const std::vector<float>& xyz) {
   return Eigen::Map<const Eigen::Matrix3Xf>(xyz.data(), 3, static_cast<Eigen::Index>(xyz.size() / 3));
 }
 
-// The frame rate whose key times these are: an integer rate, or NTSC's n * 1000 / 1001.
+// The frame rate whose key times these are: an integer rate, or NTSC's n * 1000 / 1001, from 1
+// to kMaxGlbFps. Each key time must lie within float precision of its frame's exact time, and
+// that tolerance must stay below a quarter of the frame period (so no neighbouring rate fits too).
+constexpr double kMaxGlbFps = 1000;
+
 FrameRate rate_of(const std::vector<float>& times, const std::string& source) {
   if (times.size() < 2) return FrameRate{60, 1};
-  const double step = (times.back() - times.front()) / static_cast<double>(times.size() - 1);
+  const double step = (static_cast<double>(times.back()) - times.front()) / static_cast<double>(times.size() - 1);
   if (!(step > 0)) fail(source, "gltf-key-times", "key times do not increase");
   const double fps = 1.0 / step;
+  if (fps > kMaxGlbFps * 1.001 || fps < 0.999)
+    fail(source, "gltf-frame-rate", "key times imply " + std::to_string(fps) +
+                                        " frames per second, outside 1.." + std::to_string(static_cast<int>(kMaxGlbFps)));
   FrameRate rate{static_cast<std::uint32_t>(std::lround(fps)), 1};
   if (std::abs(fps - rate.numerator) > 1e-4 * fps)
     rate = FrameRate{static_cast<std::uint32_t>(std::lround(fps * 1001)), 1001};
+  if (rate.numerator < 1 || rate.fps() > kMaxGlbFps || rate.fps() < 1)
+    fail(source, "gltf-frame-rate", "key times imply " + std::to_string(fps) + " frames per second");
+  const double period = 1.0 / rate.fps();
+  constexpr double kFloatEpsilon = 1.0 / (1 << 23);
   for (std::size_t f = 0; f < times.size(); ++f) {
     const double want = static_cast<double>(f) * rate.denominator / rate.numerator;
-    if (std::abs(times[f] - want) > 1e-5 * (1.0 + want))
+    const double tolerance = 4 * kFloatEpsilon * std::max(1.0, want);
+    if (tolerance >= period / 4)
+      fail(source, "gltf-key-times", "key time " + std::to_string(f) + " (" + std::to_string(want) +
+                                         " s) is too late for float key times at this rate");
+    if (std::abs(times[f] - want) > tolerance)
       fail(source, "gltf-key-times", "key time " + std::to_string(f) + " is " +
                                          std::to_string(times[f]) + " s, not on a constant rate");
   }

@@ -29,12 +29,12 @@ double frame_time_s(std::uint64_t k, FrameRate rate) {
 }
 
 // Whether frame_to_sample stays inside int64 for frames 0..last.
-bool timeline_fits(std::uint64_t last, FrameRate rate, std::int64_t sample_rate) {
-  return static_cast<long double>(last) * sample_rate * rate.denominator / rate.numerator < 4e18L;
+bool timeline_fits(std::uint64_t last, FrameRate rate, SampleRate sample_rate) {
+  return static_cast<long double>(last) * sample_rate.hz * rate.denominator / rate.numerator < 4e18L;
 }
 
 Json frame_json(std::uint64_t k, const FapFrame& f, FrameRate rate,
-                const std::optional<std::int64_t>& sample_rate) {
+                const std::optional<SampleRate>& sample_rate) {
   Json j;
   j["frame"] = k;
   j["time_s"] = frame_time_s(k, rate);
@@ -120,7 +120,7 @@ class Reader {
 };
 
 FapFrame read_frame(const Reader& r, const Json& j, const std::string& at, std::uint64_t k,
-                    FrameRate rate, const std::optional<std::int64_t>& sample_rate) {
+                    FrameRate rate, const std::optional<SampleRate>& sample_rate) {
   r.object(j, at);
   r.only_keys(j, at, {"frame", "time_s", "sample", "faps", "viseme", "expression"});
   const auto index = r.integer(r.member(j, at, "frame"), at + "/frame", 0, INT64_MAX, "frame-index");
@@ -186,7 +186,7 @@ std::string write_fap_json(const FapSequence& seq, const FapJsonOptions& options
   if (!rate.valid() || rate.numerator > kFapJsonMaxRate || rate.denominator > kFapJsonMaxRate)
     throw std::invalid_argument("JSON export: frame rate terms must be 1.." + std::to_string(kFapJsonMaxRate));
   if (options.sample_rate &&
-      (*options.sample_rate < 1 || *options.sample_rate > kFapJsonMaxRate ||
+      (options.sample_rate->hz < 1 || options.sample_rate->hz > kFapJsonMaxRate ||
        !timeline_fits(seq.frames.size(), rate, *options.sample_rate)))
     throw std::invalid_argument("JSON export: sample rate must be 1.." + std::to_string(kFapJsonMaxRate) + " Hz");
 
@@ -198,7 +198,7 @@ std::string write_fap_json(const FapSequence& seq, const FapJsonOptions& options
   header["frame_rate"] = Json{{"numerator", rate.numerator}, {"denominator", rate.denominator}};
   header["fps"] = rate.fps();
   header["frame_count"] = seq.frames.size();
-  if (options.sample_rate) header["sample_rate"] = *options.sample_rate;
+  if (options.sample_rate) header["sample_rate"] = options.sample_rate->hz;
   if (options.fapu) {
     Json fapu;
     for (const FapuKey& k : kFapuKeys) fapu[k.key] = (*options.fapu).*k.member;
@@ -252,7 +252,7 @@ FapJsonRead read_fap_json(std::string_view bytes, std::string_view source) {
     r.fail("frame-rate", "/fps", "disagrees with frame_rate " + std::to_string(rate.fps()));
 
   if (doc.contains("sample_rate"))
-    out.options.sample_rate = r.integer(doc["sample_rate"], "/sample_rate", 1, kFapJsonMaxRate, "sample-rate");
+    out.options.sample_rate = SampleRate{r.integer(doc["sample_rate"], "/sample_rate", 1, kFapJsonMaxRate, "sample-rate")};
   if (doc.contains("fapu")) {
     const Json& fapu = r.object(doc["fapu"], "/fapu");
     r.only_keys(fapu, "/fapu", {"MNS", "MW", "ENS", "ES", "IRISD"});

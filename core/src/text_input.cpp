@@ -1,5 +1,7 @@
 #include "fapcast/core/text_input.hpp"
 
+#include "fapcast/core/utf8.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <system_error>
@@ -34,28 +36,11 @@ std::uint64_t line_of(std::string_view text, std::size_t offset) {
 
 // The offset of the first byte that breaks UTF-8 (overlongs, surrogates, > U+10FFFF, NUL), or npos.
 std::size_t first_invalid_utf8(std::string_view s) {
-  std::size_t i = 0;
-  while (i < s.size()) {
-    const auto b = static_cast<unsigned char>(s[i]);
-    if (b == 0) return i;
-    if (b < 0x80) { ++i; continue; }
-    std::size_t n = 0;
-    char32_t c = 0;
-    if (b >= 0xC2 && b <= 0xDF) { n = 1; c = b & 0x1F; }
-    else if (b >= 0xE0 && b <= 0xEF) { n = 2; c = b & 0x0F; }
-    else if (b >= 0xF0 && b <= 0xF4) { n = 3; c = b & 0x07; }
-    else return i;
-    if (s.size() - i <= n) return i;
-    for (std::size_t k = 1; k <= n; ++k) {
-      const auto cb = static_cast<unsigned char>(s[i + k]);
-      if ((cb & 0xC0) != 0x80) return i;
-      c = (c << 6) | (cb & 0x3F);
-    }
-    if ((n == 2 && c < 0x800) || (n == 3 && (c < 0x10000 || c > 0x10FFFF)) ||
-        (c >= 0xD800 && c <= 0xDFFF)) {
-      return i;
-    }
-    i += n + 1;
+  for (std::size_t i = 0; i < s.size();) {
+    if (s[i] == 0) return i;
+    const Utf8CodePoint c = decode_utf8_at(s, i);
+    if (c.error) return i;
+    i += c.bytes;
   }
   return std::string_view::npos;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -20,6 +21,36 @@ using SndfilePtr = std::unique_ptr<SNDFILE, SndfileCloser>;
 
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& rule, const std::string& detail) {
   throw InputError({path.string(), std::nullopt, std::nullopt}, rule, detail);
+}
+
+// RIFF/WAVE only: the data chunk must hold the bytes its header claims. libsndfile reads a
+// truncated file silently as a shorter one (its log says "should be"); a cut-off recording is
+// bad input. A size of 0 or 0xFFFFFFFF is a streaming writer's "unknown" and passes.
+void check_wav_data_complete(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  char riff[12];
+  if (!in.read(riff, 12) || std::memcmp(riff, "RIFF", 4) != 0 || std::memcmp(riff + 8, "WAVE", 4) != 0)
+    return;
+  std::error_code ec;
+  const std::uint64_t file_size = std::filesystem::file_size(path, ec);
+  if (ec) return;
+  std::uint64_t at = 12;
+  for (int chunks = 0; chunks < 1024 && at + 8 <= file_size; ++chunks) {
+    unsigned char header[8];
+    in.seekg(static_cast<std::streamoff>(at));
+    if (!in.read(reinterpret_cast<char*>(header), 8)) return;
+    const std::uint64_t size = header[4] | (header[5] << 8) | (header[6] << 16) |
+                               (std::uint64_t{header[7]} << 24);
+    if (std::memcmp(header, "data", 4) == 0) {
+      const std::uint64_t held = file_size - at - 8;
+      if (size != 0 && size != 0xffffffffu && size > held)
+        throw InputError({path.string(), std::nullopt, at}, "wav-truncated",
+                         "the data chunk claims " + std::to_string(size) + " bytes, the file holds " +
+                             std::to_string(held));
+      return;
+    }
+    at += 8 + size + (size & 1);  // chunks are padded to an even size
+  }
 }
 
 // A growing byte buffer libsndfile writes into (its virtual I/O), so that the file itself is
@@ -61,8 +92,9 @@ Audio read_wav(const std::filesystem::path& path, std::int64_t max_instants) {
   if (!file) fail(path, "wav-open", std::string("cannot read as audio: ") + sf_strerror(nullptr));
   if (info.channels < 1 || info.channels > 1024) fail(path, "wav-channels", "unsupported channel count");
   if (info.samplerate < 1) fail(path, "wav-rate", "sample rate must be positive");
+  check_wav_data_complete(path);
   Audio audio;
-  audio.sample_rate_hz = info.samplerate;
+  audio.sample_rate = SampleRate{info.samplerate};
   audio.channels = info.channels;
   constexpr sf_count_t kChunkInstants = 4096;
   std::vector<std::int16_t> chunk(static_cast<std::size_t>(kChunkInstants) * info.channels);
@@ -86,13 +118,13 @@ Audio read_mono_wav(const std::filesystem::path& path, std::int64_t max_instants
 }
 
 std::string wav_bytes(const Audio& audio) {
-  if (audio.sample_rate_hz < 1 || audio.sample_rate_hz > 0x7fffffff)
-    throw std::invalid_argument("WAV: sample rate " + std::to_string(audio.sample_rate_hz) + " Hz out of range");
+  if (audio.sample_rate.hz < 1 || audio.sample_rate.hz > 0x7fffffff)
+    throw std::invalid_argument("WAV: sample rate " + std::to_string(audio.sample_rate.hz) + " Hz out of range");
   if (audio.channels < 1) throw std::invalid_argument("WAV: channel count must be positive");
   SF_VIRTUAL_IO io{memory_length, memory_seek, memory_read, memory_write, memory_tell};
   MemoryFile memory;
   SF_INFO info{};
-  info.samplerate = static_cast<int>(audio.sample_rate_hz);
+  info.samplerate = static_cast<int>(audio.sample_rate.hz);
   info.channels = audio.channels;
   info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_16;
   {

@@ -1,64 +1,22 @@
 #include "fapcast/corpus/alignment_phones.hpp"
 
 #include "fapcast/core/input_error.hpp"
-#include "fapcast/phonetics/phone_map.hpp"
 
 #include <algorithm>
-#include <stdexcept>
+#include <string>
 
 namespace fapcast {
-namespace {
 
-std::string lower(std::string_view s) {
-  std::string out(s);
-  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return out;
-}
-
-// ARPAbet first (CMUdict aligners: MFA, Gentle, the reference talker), then TIMIT/MOCHA.
-TimitPhone parse_label(const std::string& label, const std::string& where) {
-  if (label.empty()) return {Phone::SIL, false};
-  try {
-    return {parse_arpabet(label, where).phone, false};
-  } catch (const std::invalid_argument&) {
-  }
-  try {
-    return phone_from_timit(label, where);
-  } catch (const std::invalid_argument&) {
-  }
-  throw InputError({where, {}, {}}, "phone-label",
-                   "'" + label + "' is neither an ARPAbet nor a TIMIT phone label");
-}
-
-}  // namespace
-
-const LabelTier* phone_tier(const Alignment& alignment) {
-  const LabelTier* first = nullptr;
-  for (const LabelTier& t : alignment.tiers) {
-    if (t.kind != TierKind::intervals) continue;
-    const std::string name = lower(t.name);
-    if (name == "phones" || name == "phone") return &t;
-    if (first == nullptr) first = &t;
-  }
-  return first;
-}
-
-std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, std::int64_t sample_rate_hz,
-                                         const std::string& source) {
+std::vector<TimedPhone> timed_phones(const std::vector<AlignedSegment>& segments, SampleRate sample_rate,
+                                     const std::string& source) {
   std::vector<TimedPhone> out;
-  bool previous_closure = false;
-  for (std::size_t i = 0; i < tier.intervals.size(); ++i) {
-    const Interval& in = tier.intervals[i];
-    const std::string where = source + ": tier '" + tier.name + "' interval " + std::to_string(i + 1);
-    const TimitPhone p = parse_label(in.label, where);
-    const std::int64_t start = to_sample(in.start_s, sample_rate_hz);
-    const std::int64_t end = to_sample(in.end_s, sample_rate_hz);
-    if (previous_closure && !p.closure && out.back().phone == p.phone && out.back().end_sample == start) {
-      out.back().end_sample = end;  // closure + release: one phone
-    } else {
-      out.push_back({p.phone, start, end});
-    }
-    previous_closure = p.closure;
+  out.reserve(segments.size());
+  for (std::size_t i = 0; i < segments.size(); ++i) {
+    const AlignedSegment& s = segments[i];
+    const auto sample = [&](double seconds) {
+      return alignment_sample(seconds, sample_rate, source, "segment " + std::to_string(i + 1) + " '" + s.label + "'");
+    };
+    out.push_back({s.phone, sample(s.start_s), sample(s.end_s)});
   }
   return out;
 }

@@ -3,6 +3,8 @@
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/core/text_input.hpp"
 
+#include "segment_rows.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -47,9 +49,13 @@ LabFile read_lab(std::string_view bytes, const std::string& source, std::optiona
 
   // First pass: shape of each line, and whether every time is an integer (HTK) or not.
   bool all_integer = true;
+  std::int64_t segments = 0;
   for (const TextLine& line : lines) {
     const auto fields = split_whitespace(line.text);
     if (fields.empty()) continue;
+    if (++segments > static_cast<std::int64_t>(detail::kMaxSegments))
+      fail(line.number, "alignment-too-many-intervals",
+           "more than " + std::to_string(detail::kMaxSegments) + " segments");
     if (fields[0] == "#!MLF!#") fail(line.number, "lab-mlf", "an HTK master label file, not a .lab");
     if (fields.size() == 1 && fields[0] == "///") {
       fail(line.number, "lab-alternatives", "HTK alternative transcriptions (///) are not supported");

@@ -54,7 +54,6 @@ MarkerFrames<Millimetres> read_marker_csv(std::string_view bytes, const std::str
   }
 
   detail::MarkerRows rows(labels.size(), *mm, source, "csv");
-  std::int64_t first_frame = 1;
   double first_time = 0;
   double last_time = 0;
   for (++i; i < lines.size(); ++i) {
@@ -69,14 +68,11 @@ MarkerFrames<Millimetres> read_marker_csv(std::string_view bytes, const std::str
     if (!parse_count(trim(cells[0]), frame)) fail(lines[i].number, "csv-frame-number", "\"" + excerpt(cells[0]) + "\" is not a frame number");
     if (!parse_finite(trim(cells[1]), time)) fail(lines[i].number, "csv-bad-number", "time \"" + excerpt(cells[1]) + "\" is not a number");
     if (rows.frames() == 0) {
-      first_frame = frame;
       first_time = time;
     } else if (!(time > last_time)) {
       fail(lines[i].number, "csv-time-order", "time does not increase");
     }
-    if (frame != first_frame + static_cast<std::int64_t>(rows.frames())) {
-      fail(lines[i].number, "csv-frame-number", "frame " + std::to_string(frame) + " is out of sequence");
-    }
+    rows.check_frame_number(frame, lines[i].number);
     last_time = time;
     rows.add(std::span(cells).subspan(2), lines[i].number);
   }
@@ -84,7 +80,7 @@ MarkerFrames<Millimetres> read_marker_csv(std::string_view bytes, const std::str
     if (rows.frames() < 2) fail(header_line, "csv-no-rate", "no frame_rate_hz setting and fewer than 2 frames to derive it");
     rate_hz = static_cast<double>(rows.frames() - 1) / (last_time - first_time);
   }
-  return rows.finish(std::move(labels), *rate_hz, first_frame);
+  return rows.finish(std::move(labels), *rate_hz);
 }
 
 std::string write_marker_csv(const MarkerFrames<Millimetres>& markers) {
@@ -96,14 +92,7 @@ std::string write_marker_csv(const MarkerFrames<Millimetres>& markers) {
     }
     out += "," + label + ".x," + label + ".y," + label + ".z";
   }
-  out += "\n";
-  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
-    out += std::to_string(markers.first_frame + f) + "," +
-           shortest_decimal(static_cast<double>(f) / markers.frame_rate_hz);
-    if (markers.marker_count() > 0) out += "," + detail::marker_cells(markers, f, ',');
-    out += "\n";
-  }
-  return out;
+  return out + "\n" + detail::marker_row_lines(markers, ',');
 }
 
 }  // namespace fapcast

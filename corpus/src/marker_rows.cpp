@@ -40,25 +40,42 @@ void MarkerRows::add(std::span<const std::string_view> cells, std::uint64_t line
   ++frames_;
 }
 
-MarkerFrames<Millimetres> MarkerRows::finish(std::vector<std::string> labels, double frame_rate_hz,
-                                             std::int64_t first_frame) const {
+void MarkerRows::check_frame_number(std::int64_t frame, std::uint64_t line) {
+  if (frames_ == 0) {
+    first_frame_ = frame;
+    return;
+  }
+  // frame - first_frame_ rather than first_frame_ + frames_: numbers are non-negative, so the
+  // difference cannot overflow where the sum could (a first frame near 2^63).
+  if (frame < first_frame_ || static_cast<std::uint64_t>(frame - first_frame_) != frames_) {
+    throw InputError({source_, line, std::nullopt}, format_ + "-frame-number",
+                     "frame " + std::to_string(frame) + " is out of sequence (frame " +
+                         std::to_string(static_cast<std::uint64_t>(first_frame_) + frames_) + " comes next)");
+  }
+}
+
+MarkerFrames<Millimetres> MarkerRows::finish(std::vector<std::string> labels, double frame_rate_hz) const {
   MarkerFrames<Millimetres> out;
   out.labels = std::move(labels);
   out.frame_rate_hz = frame_rate_hz;
-  out.first_frame = first_frame;
+  out.first_frame = first_frame_;
   // values_ holds frame after frame of x y z per marker: the 3M x F layout, column by column.
   out.positions = Eigen::Map<const Eigen::MatrixXd>(values_.data(), static_cast<Eigen::Index>(3 * markers_),
                                                     static_cast<Eigen::Index>(frames_));
   return out;
 }
 
-std::string marker_cells(const MarkerFrames<Millimetres>& markers, Eigen::Index frame, char separator) {
+std::string marker_row_lines(const MarkerFrames<Millimetres>& markers, char separator) {
   std::string out;
-  for (Eigen::Index m = 0; m < markers.marker_count(); ++m) {
-    for (int k = 0; k < 3; ++k) {
-      if (m + k > 0) out += separator;
-      if (markers.present(m, frame)) out += shortest_decimal(markers.positions(3 * m + k, frame));
-    }
+  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
+    out += std::to_string(markers.first_frame + f) + separator +
+           shortest_decimal(static_cast<double>(f) / markers.frame_rate_hz);
+    for (Eigen::Index m = 0; m < markers.marker_count(); ++m)
+      for (int k = 0; k < 3; ++k) {
+        out += separator;
+        if (markers.present(m, f)) out += shortest_decimal(markers.positions(3 * m + k, f));
+      }
+    out += "\n";
   }
   return out;
 }

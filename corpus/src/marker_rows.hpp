@@ -20,8 +20,12 @@ class MarkerRows {
   void add(std::span<const std::string_view> cells, std::uint64_t line);
   std::size_t frames() const { return frames_; }
 
-  // The set of the frames added so far.
-  MarkerFrames<Millimetres> finish(std::vector<std::string> labels, double frame_rate_hz, std::int64_t first_frame) const;
+  // Checks the number of the frame about to be added: the first one sets the numbering, each later
+  // one must be the next. Throws InputError ("<format>-frame-number") otherwise.
+  void check_frame_number(std::int64_t frame, std::uint64_t line);
+
+  // The set of the frames added so far, numbered from the first frame's number.
+  MarkerFrames<Millimetres> finish(std::vector<std::string> labels, double frame_rate_hz) const;
 
  private:
   std::size_t markers_;
@@ -29,10 +33,12 @@ class MarkerRows {
   const std::string& source_;
   std::string format_;
   std::size_t frames_ = 0;
+  std::int64_t first_frame_ = 1;
   std::vector<double> values_;  // grows one frame at a time: never sized from a header count; NaN = missing
 };
 
-// The 3M cells of frame `frame` joined by `separator`: shortest decimals, empty where missing.
-std::string marker_cells(const MarkerFrames<Millimetres>& markers, Eigen::Index frame, char separator);
+// One line per frame: its number (first_frame + k), its time in seconds and its 3M cells,
+// joined by `separator`: shortest decimals, empty cells where a sample is missing.
+std::string marker_row_lines(const MarkerFrames<Millimetres>& markers, char separator);
 
 }  // namespace fapcast::detail

@@ -65,7 +65,6 @@ MarkerFrames<Millimetres> read_trc(std::string_view bytes, const std::string& so
   }
 
   detail::MarkerRows rows(labels.size(), *mm, source, "trc");
-  std::int64_t first_frame = 1;
   std::uint64_t implied_cells = 0;
   for (std::size_t i = kHeaderLines; i < lines.size(); ++i) {
     if (trim(lines[i].text).empty()) continue;  // Vicon leaves a blank line
@@ -74,10 +73,7 @@ MarkerFrames<Millimetres> read_trc(std::string_view bytes, const std::string& so
     if (!parse_count(trim(cells[0]), frame)) {
       fail(lines[i].number, "trc-frame-number", "\"" + excerpt(cells[0]) + "\" is not a frame number");
     }
-    if (rows.frames() == 0) first_frame = frame;
-    if (frame != first_frame + static_cast<std::int64_t>(rows.frames())) {
-      fail(lines[i].number, "trc-frame-number", "frame " + std::to_string(frame) + " is out of sequence");
-    }
+    rows.check_frame_number(frame, lines[i].number);
     const std::size_t coordinates = cells.size() < 2 ? 0 : cells.size() - 2;
     for (std::size_t c = 3 * labels.size(); c < coordinates; ++c) {
       if (!trim(cells[2 + c]).empty()) {
@@ -96,7 +92,7 @@ MarkerFrames<Millimetres> read_trc(std::string_view bytes, const std::string& so
     fail(3, "trc-frame-count", "NumFrames is " + std::to_string(frame_count) + " but " +
                                    std::to_string(rows.frames()) + " frames follow");
   }
-  return rows.finish(std::move(labels), rate_hz, first_frame);
+  return rows.finish(std::move(labels), rate_hz);
 }
 
 std::string write_trc(const MarkerFrames<Millimetres>& markers, std::string_view file_name) {
@@ -119,14 +115,7 @@ std::string write_trc(const MarkerFrames<Millimetres>& markers, std::string_view
     const std::string n = std::to_string(m);
     out += "\tX" + n + "\tY" + n + "\tZ" + n;
   }
-  out += "\n\n";
-  for (Eigen::Index f = 0; f < markers.frame_count(); ++f) {
-    out += std::to_string(markers.first_frame + f) + "\t" +
-           shortest_decimal(static_cast<double>(f) / markers.frame_rate_hz);
-    if (markers.marker_count() > 0) out += "\t" + detail::marker_cells(markers, f, '\t');
-    out += "\n";
-  }
-  return out;
+  return out + "\n\n" + detail::marker_row_lines(markers, '\t');
 }
 
 }  // namespace fapcast

@@ -1,5 +1,7 @@
 #include "fapcast/eval/svg_plot.hpp"
 
+#include "fapcast/core/xml_text.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -14,21 +16,6 @@ namespace {
 // Colour-blind-safe palette (Okabe-Ito), black first for the recording.
 constexpr std::array<const char*, 8> kColours{"#000000", "#0072B2", "#D55E00", "#009E73",
                                               "#CC79A7", "#E69F00", "#56B4E9", "#F0E442"};
-
-std::string escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // A coordinate with two decimals: enough for pixels, short files.
 std::string px(double v) {
@@ -88,14 +75,14 @@ std::string svg_line_plot(const LinePlot& plot) {
       << "\" viewBox=\"0 0 " << width << ' ' << px(height) << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"" << px(width / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
-      << escape(plot.title) << "</text>\n";
+      << escape_xml(plot.title) << "</text>\n";
   // Legend: one row under the title.
   double lx = left;
   for (std::size_t s = 0; s < legend.size(); ++s) {
     const char* colour = kColours[s % kColours.size()];
     svg << "<line x1=\"" << px(lx) << "\" y1=\"40\" x2=\"" << px(lx + 24) << "\" y2=\"40\" stroke=\""
         << colour << "\" stroke-width=\"2\"/>\n"
-        << "<text x=\"" << px(lx + 30) << "\" y=\"44\">" << escape(legend[s]) << "</text>\n";
+        << "<text x=\"" << px(lx + 30) << "\" y=\"44\">" << escape_xml(legend[s]) << "</text>\n";
     lx += 40 + 7.0 * static_cast<double>(legend[s].size());
   }
 
@@ -129,7 +116,7 @@ std::string svg_line_plot(const LinePlot& plot) {
     svg << "<rect x=\"" << px(left) << "\" y=\"" << px(y0) << "\" width=\"" << px(plot_w) << "\" height=\""
         << px(panel_h) << "\" fill=\"none\" stroke=\"black\"/>\n"
         << "<text transform=\"translate(" << px(18) << ',' << px(y0 + panel_h / 2)
-        << ") rotate(-90)\" text-anchor=\"middle\">" << escape(panel.y_label) << "</text>\n";
+        << ") rotate(-90)\" text-anchor=\"middle\">" << escape_xml(panel.y_label) << "</text>\n";
     for (std::size_t s = 0; s < panel.series.size(); ++s) {
       const auto& values = panel.series[s].values;
       const char* colour = kColours[s % kColours.size()];
@@ -141,13 +128,13 @@ std::string svg_line_plot(const LinePlot& plot) {
         for (bool first = true; i < values.size() && std::isfinite(values[i]); ++i, first = false)
           svg << (first ? "" : " ") << px(x_px(x_lo + static_cast<double>(i) * plot.x_step)) << ','
               << px(y_px(values[i]));
-        svg << "\"><title>" << escape(panel.series[s].name) << "</title></polyline>\n";
+        svg << "\"><title>" << escape_xml(panel.series[s].name) << "</title></polyline>\n";
       }
     }
     svg << "</g>\n";
   }
   svg << "<text x=\"" << px(left + plot_w / 2) << "\" y=\"" << px(height - 12)
-      << "\" text-anchor=\"middle\">" << escape(plot.x_label) << "</text>\n</svg>\n";
+      << "\" text-anchor=\"middle\">" << escape_xml(plot.x_label) << "</text>\n</svg>\n";
   return svg.str();
 }
 

@@ -41,7 +41,7 @@ std::vector<HeldOutUtterance> record_held_out(const FaceModel& actor, std::uint6
     HeldOutUtterance u;
     u.id = id;
     u.text = item.text;
-    u.targets = place_on_voice_grid(take.speech.phones, take.speech.audio.sample_rate_hz,
+    u.targets = place_on_voice_grid(take.speech.phones, take.speech.audio.sample_rate,
                                     static_cast<std::int64_t>(take.speech.audio.samples.size()), id)
                     .phones;
     u.speech = std::move(take.speech);

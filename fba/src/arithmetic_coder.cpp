@@ -20,11 +20,11 @@ constexpr auto kTotalReciprocals = [] {
   return r;
 }();
 
-// kTailIncrements[k]: kIncrement on the first k + 1 lanes of a block, 0 on the rest.
-const auto kTailIncrements = [] {
+// kTailMasks[k]: all ones on the first k + 1 lanes of a block, 0 on the rest.
+const auto kTailMasks = [] {
   std::array<FrequencyModel::Lanes, FrequencyModel::kLanes> t{};
   for (std::size_t k = 0; k < t.size(); ++k)
-    for (std::size_t j = 0; j <= k; ++j) t[k][j] = FrequencyModel::kIncrement;
+    for (std::size_t j = 0; j <= k; ++j) t[k][j] = -1;
   return t;
 }();
 
@@ -35,9 +35,10 @@ std::size_t whole_blocks(std::size_t entries) {
 
 }  // namespace
 
-void FrequencyModel::reset(int size) {
-  assert(size >= 1 && size <= kMaxSymbols);
+void FrequencyModel::reset(int size, int increment) {
+  assert(size >= 1 && size <= kMaxSymbols && increment >= 1 && increment <= kMaxIncrement);
   size_ = size;
+  increment_ = static_cast<std::int16_t>(increment);
   cumulative_.resize(whole_blocks(static_cast<std::size_t>(size) + 1));
   // Entry i is size - i (every count 1), the padding 0: a block at a time.
   static_assert(kLanes == 8, "the lane offsets below");
@@ -69,8 +70,9 @@ void FrequencyModel::halve() {
 void FrequencyModel::add_increment(int s) {
   const auto last = static_cast<std::size_t>(s);
   const std::size_t whole = last / kLanes * kLanes;
-  for (std::size_t b = 0; b < whole; b += kLanes) store(b, load(b) + kIncrement);
-  store(whole, load(whole) + kTailIncrements[last - whole]);
+  const Lanes increment = Lanes{} + increment_;
+  for (std::size_t b = 0; b < whole; b += kLanes) store(b, load(b) + increment);
+  store(whole, load(whole) + (increment & kTailMasks[last - whole]));
   total_reciprocal_ = kTotalReciprocals[cumulative_[0]];
 }
 
@@ -79,7 +81,7 @@ void ArithmeticEncoder::bit_plus_follow(int bit) {
   for (; pending_ > 0; --pending_) out_.put_bit(!bit);
 }
 
-void ArithmeticEncoder::encode(int s, FrequencyModel& model) {
+void ArithmeticEncoder::encode_only(int s, const FrequencyModel& model) {
   assert(s >= 0 && s < model.size());
   const std::uint32_t length = high_ - low_ + 1;
   high_ = low_ - 1 + model.scale(length, s);
@@ -101,7 +103,6 @@ void ArithmeticEncoder::encode(int s, FrequencyModel& model) {
     low_ = 2 * low_;
     high_ = 2 * high_ + 1;
   }
-  model.update(s);
 }
 
 void ArithmeticEncoder::flush() {
@@ -109,12 +110,14 @@ void ArithmeticEncoder::flush() {
   bit_plus_follow(low_ < kQuarter ? 0 : 1);
   low_ = 0;
   high_ = 65535;
+  out_.end_segment();
 }
 
-ArithmeticDecoder::ArithmeticDecoder(FbaBitReader& in) : in_(in), offset_(in_.lookahead_bits(kLookaheadBits)) {}
+ArithmeticDecoder::ArithmeticDecoder(FbaBitReader& in)
+    : in_((in.begin_segment(), in)), offset_(in_.lookahead_bits(kLookaheadBits)) {}
 
 void ArithmeticDecoder::finish() {
-  in_.unread(kGiveBackBits);
+  in_.end_segment(kGiveBackBits);
   if (in_.past_end()) in_.fail(fba_errc::truncated);
 }
 

@@ -2,9 +2,9 @@
 // The adaptive arithmetic coder of the FBA stream, after H.263 Annex E: 16-bit registers
 // (top 65535, quarter points 16384, 32768, 49152), cumulative-frequency tables descending with
 // the total first, every model starting uniform, all counts halved before the total would pass
-// 16383. fapcast: a coded symbol's count grows by kIncrement = 8, not 1 (spec/fba.md §7), so a
-// model learns a peaked distribution within the few symbols of one intra period. Encoder and
-// decoder mirror each other over one model type.
+// 16383. A coded symbol's count grows by the model's increment: 1 in the standard syntax, a power
+// of two the fapcast profile's intra header chooses (spec/fba.md). Encoder and decoder mirror each
+// other over one model type. Segments start and end the bit layer's stuffing scope (fba_bits.hpp).
 #include "exact_reciprocal.hpp"
 #include "fba_bits.hpp"
 
@@ -23,7 +23,7 @@ class FrequencyModel {
  public:
   static constexpr int kMaxSymbols = 4096;      // > 2*1860+1, the widest FAP range
   static constexpr std::uint16_t kMaxTotal = 16383;
-  static constexpr int kIncrement = 8;  // fapcast; the published FBA codec (spec/fba.md) adds 1
+  static constexpr int kMaxIncrement = 64;  // counts grow by 1..kMaxIncrement per coded symbol
   // The table is stored in blocks of kLanes entries (one 16-byte vector each), zero-padded to an
   // even number of blocks, so that searching and updating run over whole blocks without a scalar
   // tail.
@@ -33,14 +33,16 @@ class FrequencyModel {
   typedef std::int16_t Lanes __attribute__((vector_size(2 * kLanes)));
 
   FrequencyModel() = default;  // no symbols (size 0): a model nothing is coded with
-  explicit FrequencyModel(int size) { reset(size); }
-  // Uniform again over `size` symbols (1..kMaxSymbols).
-  void reset(int size);
+  explicit FrequencyModel(int size, int increment = 1) { reset(size, increment); }
+  // Uniform again over `size` symbols (1..kMaxSymbols); each coded symbol will add `increment`
+  // (1..kMaxIncrement) to its count.
+  void reset(int size, int increment = 1);
   int size() const { return size_; }
-  // Counts symbol s (0..size-1): + kIncrement, first halving every count (rounding up) when the
-  // total would otherwise pass kMaxTotal.
+  int increment() const { return increment_; }
+  // Counts symbol s (0..size-1): + increment, first halving every count (rounding up) when the
+  // total would otherwise pass kMaxTotal (with increment 1: when it is kMaxTotal).
   void update(int s) {
-    if (cumulative_[0] + kIncrement > kMaxTotal) halve();
+    if (cumulative_[0] + increment_ > kMaxTotal) halve();
     add_increment(s);
   }
   // cumulative(i): the total count of symbols i..size-1 (i = 0..size); cumulative(0) is the total.
@@ -89,11 +91,12 @@ class FrequencyModel {
   void store(std::size_t at, Lanes v) { std::memcpy(cumulative_.data() + at, &v, sizeof v); }
   int search(std::uint32_t target) const;  // binary search, for large tables
   void halve();
-  // Entries 0..s grow by kIncrement: whole blocks, then the block holding s through a mask.
+  // Entries 0..s grow by the increment: whole blocks, then the block holding s through a mask.
   void add_increment(int s);
 
   std::vector<std::uint16_t> cumulative_;  // size+1 entries, descending, last 0; zeros to a pair of blocks
   int size_ = 0;
+  std::int16_t increment_ = 1;
   ExactReciprocal total_reciprocal_;  // of cumulative_[0]
 };
 
@@ -122,9 +125,16 @@ constexpr ArithmeticInterval arithmetic_renormalise(std::uint32_t low, std::uint
 
 class ArithmeticEncoder {
  public:
-  explicit ArithmeticEncoder(FbaBitWriter& out) : out_(out) {}
+  // Starts a segment (the writer's stuffing scope, fba_bits.hpp).
+  explicit ArithmeticEncoder(FbaBitWriter& out) : out_(out) { out_.begin_segment(); }
   // Codes symbol s (0..model.size()-1) and counts it in the model.
-  void encode(int s, FrequencyModel& model);
+  void encode(int s, FrequencyModel& model) {
+    encode_only(s, model);
+    model.update(s);
+  }
+  // Codes symbol s without counting it: a caller that may still take the plane back counts it
+  // later (each model codes at most one symbol per plane, so the order does not matter).
+  void encode_only(int s, const FrequencyModel& model);
   // Ends the segment: one bit plus the pending opposite bits (2 + pending bits in all).
   void flush();
 
@@ -136,11 +146,17 @@ class ArithmeticEncoder {
 
 class ArithmeticDecoder {
  public:
-  // Starts a segment: reads 16 bits of look-ahead.
+  // Starts a segment (the reader's stuffing scope) and reads 16 bits of look-ahead.
   explicit ArithmeticDecoder(FbaBitReader& in);
   // Decodes one symbol (0..model.size()-1) and counts it in the model. Inline: it is the
   // decoder's inner loop.
   int decode(FrequencyModel& model) {
+    const int s = decode_only(model);
+    model.update(s);
+    return s;
+  }
+  // Decodes one symbol without counting it (the standard's intra models, uniform bit models).
+  int decode_only(const FrequencyModel& model) {
     const std::uint32_t length = high_ - low_ + 1;
     const std::uint32_t cum = ((offset_ + 1) * model.total() - 1) / length;
     const int i = model.find(cum);
@@ -150,11 +166,11 @@ class ArithmeticDecoder {
     offset_ = ((offset_ - below) << next.shifts) | in_.lookahead_bits(next.shifts);
     low_ = next.low;
     high_ = next.high;
-    model.update(i - 1);
     return i - 1;
   }
   // Ends the segment at the bits the encoder wrote: gives back the 14 look-ahead payload bits
-  // (counted after de-stuffing, so a stuffed bit in the look-ahead does not shift the reader).
+  // (counted after de-stuffing, so neither a stuffed bit in the look-ahead nor one the reader
+  // only thought it saw there shifts the reader).
   void finish();
 
  private:

@@ -4,7 +4,7 @@
 #include <cassert>
 #include <cstdint>
 #include <limits>
-#include <cstdlib>
+#include <numeric>
 
 namespace fapcast {
 
@@ -19,65 +19,140 @@ std::optional<int> fba_range_field(std::int64_t levels, int fap_quant) {
   return std::nullopt;
 }
 
-FbaRangeFields fba_default_range_fields(int fap) {
+FbaRangeLevels fba_default_range_levels(int fap, int fap_quant) {
   const FapInfo& info = fap_info(fap);
-  const auto i = static_cast<std::uint8_t>(info.range_i / kRangeFieldUnit);
-  const auto p = static_cast<std::uint8_t>(info.range_p / kRangeFieldUnit);
-  return {i, i, p, p};
+  const int i = fba_range_levels((info.range_i + kRangeFieldUnit - 1) / kRangeFieldUnit, fap_quant);
+  const int p = fba_range_levels((info.range_p + kRangeFieldUnit - 1) / kRangeFieldUnit, fap_quant);
+  return {-i, i, -p, p};
+}
+
+int fba_blend_levels(int fap_quant) {
+  return fap_quant <= 1 ? 63 : (63 + fap_quant / 2) / fap_quant;
 }
 
 FrameRate FbaRateFields::rate() const {
-  const auto fr = static_cast<std::uint32_t>(frame_rate);
-  const auto s = static_cast<std::uint32_t>(seconds);
-  return frequency_offset ? FrameRate{fr * 1000, s * 1001} : FrameRate{fr, s};
+  const auto sixteenths = static_cast<std::uint32_t>(16 * frame_rate + seconds);
+  const std::uint32_t num = frequency_offset ? sixteenths * 1000 : sixteenths;
+  const std::uint32_t den = frequency_offset ? 16 * 1001 : 16;
+  const std::uint32_t g = std::gcd(num, den);
+  return g == 0 ? FrameRate{0, 1} : FrameRate{num / g, den / g};
 }
 
 std::optional<FbaRateFields> fba_rate_fields(FrameRate rate) {
   if (!rate.valid()) return std::nullopt;
   for (bool offset : {false, true}) {
-    for (int seconds = 1; seconds <= 15; ++seconds) {
-      // frame_rate = rate * seconds (/ (1000/1001) with the offset), when it is a whole number.
-      std::uint64_t num = std::uint64_t{rate.numerator} * static_cast<std::uint64_t>(seconds);
-      std::uint64_t den = rate.denominator;
-      if (offset) {
-        num *= 1001;
-        den *= 1000;
-      }
-      if (num % den != 0) continue;
-      const std::uint64_t frame_rate = num / den;
-      if (frame_rate >= 1 && frame_rate <= 255) return FbaRateFields{static_cast<int>(frame_rate), seconds, offset};
+    // sixteenths = rate * 16 (* 1001/1000 with the offset), when it is a whole number 1..4095.
+    std::uint64_t num = std::uint64_t{rate.numerator} * 16;
+    std::uint64_t den = rate.denominator;
+    if (offset) {
+      num *= 1001;
+      den *= 1000;
     }
+    if (num % den != 0) continue;
+    const std::uint64_t sixteenths = num / den;
+    if (sixteenths >= 1 && sixteenths <= 16 * 255 + 15)
+      return FbaRateFields{static_cast<int>(sixteenths / 16), static_cast<int>(sixteenths % 16), offset};
   }
   return std::nullopt;
 }
 
-FbaCodedFaps::FbaCodedFaps(const FapMask& mask, const std::array<FbaRangeFields, kFapCount>& ranges, int fap_quant) {
+FbaCodedFaps::FbaCodedFaps(const FapMask& mask, const std::array<FbaRangeLevels, kFapCount>& ranges, int fap_quant) {
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
     if (!mask.test(fap)) continue;
     const auto i = static_cast<std::size_t>(fap - 1);
-    const FbaRangeFields& r = ranges[i];
-    faps_[static_cast<std::size_t>(count_++)] = {static_cast<std::uint8_t>(i), fba_step(fap, fap_quant),
-                                                 -fba_range_levels(r.i_min, fap_quant), fba_range_levels(r.i_max, fap_quant),
-                                                 -fba_range_levels(r.p_min, fap_quant), fba_range_levels(r.p_max, fap_quant)};
+    const FbaRangeLevels& r = ranges[i];
+    FbaCodedFap& f = faps_[static_cast<std::size_t>(count_++)];
+    f.index = static_cast<std::uint8_t>(i);
+    f.step = fba_step(fap, fap_quant);
+    f.intra_min = r.i_min;
+    f.intra_max = r.i_max;
+    f.predicted_min = r.p_min;
+    f.predicted_max = r.p_max;
   }
+}
+
+void FbaCodingState::reset_models() {
+  const bool escape = profile == FbaProfile::kFapcast;
+  for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
+    if (!mask.test(fap)) {
+      intra.fap[static_cast<std::size_t>(fap - 1)] = FrequencyModel{};
+      predicted.fap[static_cast<std::size_t>(fap - 1)] = FrequencyModel{};
+    }
+  }
+  for (const FbaCodedFap& f : coded) {
+    if (!escape) intra.fap[f.index].reset(f.intra_max - f.intra_min + 1);
+    predicted.fap[f.index].reset(f.predicted_max - f.predicted_min + 1 + (escape ? 1 : 0), increment);
+  }
+  const int blend = blend_levels;
+  intra.viseme_select1.reset(15);
+  intra.viseme_select2.reset(15);
+  intra.viseme_blend.reset(blend + 1);
+  intra.expression_select1.reset(7);
+  intra.expression_intensity1.reset(blend + 1);
+  intra.expression_select2.reset(7);
+  intra.expression_intensity2.reset(blend + 1);
+  predicted.viseme_select1.reset(29, increment);
+  predicted.viseme_select2.reset(29, increment);
+  predicted.viseme_blend.reset(2 * blend + 1, increment);
+  predicted.expression_select1.reset(13, increment);
+  predicted.expression_intensity1.reset(2 * blend + 1, increment);
+  predicted.expression_select2.reset(13, increment);
+  predicted.expression_intensity2.reset(2 * blend + 1, increment);
+  if (escape) {
+    escape_bits.reset(41, increment);
+  } else {
+    escape_bits = FrequencyModel{};
+  }
+  levels = {};
+}
+
+void FbaCodingState::begin_standard_intra(int new_fap_quant, const FapMask& new_mask, const FbaRangeFlags& flags,
+                                          const std::array<FbaRangeFields, kFapCount>& fields) {
+  profile = FbaProfile::kStandard;
+  have_intra = true;
+  fap_quant = new_fap_quant;
+  mask = new_mask;
+  increment = 1;
+  // The published decoder sets every range to its default while FAP 4's I range is 0..0.
+  const FbaRangeLevels& fap4 = ranges[3];
+  if (fap4.i_min == 0 && fap4.i_max == 0) {
+    for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
+      ranges[static_cast<std::size_t>(fap - 1)] = fba_default_range_levels(fap, fap_quant);
+  }
+  for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
+    if (!mask.test(fap)) continue;
+    const auto i = static_cast<std::size_t>(fap - 1);
+    FbaRangeLevels& r = ranges[i];
+    const FbaRangeFields& f = fields[i];
+    if (flags.i_max) r.i_max = fba_range_levels(f.i_max, fap_quant);
+    if (flags.i_min) r.i_min = -fba_range_levels(f.i_min, fap_quant);
+    if (flags.p_max) r.p_max = fba_range_levels(f.p_max, fap_quant);
+    if (flags.p_min) r.p_min = -fba_range_levels(f.p_min, fap_quant);
+  }
+  if (fap_quant != 0) blend_levels = fba_blend_levels(fap_quant);  // kept at 0, as the published decoder
+  prediction.predictor = {};
+  coded = FbaCodedFaps(mask, ranges, fap_quant);
+  reset_models();
+}
+
+void FbaCodingState::begin_fapcast_intra(int new_fap_quant, const FapMask& new_mask, int log2_increment,
+                                         const FbaCodedFaps& faps,
+                                         const std::array<std::uint8_t, kFapCount>& predictors) {
+  profile = FbaProfile::kFapcast;
+  have_intra = true;
+  fap_quant = new_fap_quant;
+  mask = new_mask;
+  increment = 1 << log2_increment;
+  blend_levels = fba_blend_levels(fap_quant);
+  coded = faps;
+  ranges = {};
+  for (const FbaCodedFap& f : coded) ranges[f.index] = {0, 0, f.predicted_min, f.predicted_max};
+  prediction.predictor = {};
+  for (const FbaCodedFap& f : coded) prediction.predictor[f.index] = predictors[f.index];
+  reset_models();
 }
 
 namespace {
-
-void reset_models(FbaModels& m, const FapMask& mask, const FbaCodedFaps& coded, bool intra) {
-  for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
-    if (!mask.test(fap)) m.fap[static_cast<std::size_t>(fap - 1)] = FrequencyModel{};
-  }
-  for (const FbaCodedFap& f : coded)
-    m.fap[f.index].reset(intra ? f.intra_max - f.intra_min + 1 : f.predicted_max - f.predicted_min + 1);
-  m.viseme_select1.reset(15);
-  m.viseme_select2.reset(15);
-  m.viseme_blend.reset(64);
-  m.expression_select1.reset(7);
-  m.expression_intensity1.reset(64);
-  m.expression_select2.reset(7);
-  m.expression_intensity2.reset(64);
-}
 
 struct Fnv {
   std::uint64_t h = 1469598103934665603ull;
@@ -87,8 +162,9 @@ struct Fnv {
       h *= 1099511628211ull;
     }
   }
+  void add_signed(std::int64_t v) { add(static_cast<std::uint64_t>(v)); }
   void add(const FrequencyModel& m) {
-    add(static_cast<std::uint64_t>(m.size()));
+    add(static_cast<std::uint64_t>(m.size()) << 8 | static_cast<std::uint64_t>(m.increment()));
     for (int i = 0; i <= m.size() && m.size() > 0; ++i) add(m.cumulative(i));  // size 0: an unused model
   }
   void add(const FbaModels& m) {
@@ -101,46 +177,32 @@ struct Fnv {
 
 }  // namespace
 
-void FbaCodingState::begin_intra(int new_fap_quant, const FapMask& new_mask,
-                                 const std::array<FbaRangeFields, kFapCount>& new_ranges,
-                                 const std::array<std::uint8_t, kFapCount>& new_predictors) {
-  have_intra = true;
-  prediction.predictor = new_predictors;
-  fap_quant = new_fap_quant;
-  mask = new_mask;
-  ranges = new_ranges;
-  for (int fap = 1; fap <= kFapCount; ++fap) {
-    if (fap < kFirstLowLevelFap || !mask.test(fap)) {  // carry no meaning
-      ranges[static_cast<std::size_t>(fap - 1)] = {};
-      prediction.predictor[static_cast<std::size_t>(fap - 1)] = 0;
-    }
-  }
-  coded = FbaCodedFaps(mask, ranges, fap_quant);
-  reset_models(intra, mask, coded, true);
-  reset_models(predicted, mask, coded, false);
-}
-
 std::uint64_t FbaCodingState::checksum() const {
   Fnv f;
+  f.add(static_cast<std::uint64_t>(profile));
   f.add(have_intra);
+  f.add(rate_known);
   f.add(rate.numerator);
   f.add(rate.denominator);
   f.add(static_cast<std::uint64_t>(fap_quant));
+  f.add_signed(blend_levels);
+  f.add_signed(increment);
   for (int fap = 1; fap <= kFapCount; ++fap) {
     const auto i = static_cast<std::size_t>(fap - 1);
     f.add(mask.test(fap));
-    f.add(static_cast<std::uint64_t>(ranges[i].i_max) << 24 | std::uint64_t{ranges[i].i_min} << 16 |
-          std::uint64_t{ranges[i].p_max} << 8 | ranges[i].p_min);
+    for (const std::int32_t r : {ranges[i].i_min, ranges[i].i_max, ranges[i].p_min, ranges[i].p_max}) f.add_signed(r);
     const FbaPrediction& p = prediction;
     f.add(p.predictor[i]);
-    for (const std::int32_t r : {p.r1[i], p.r2[i], p.r3[i]}) f.add(static_cast<std::uint64_t>(std::int64_t{r}));
+    for (const std::int32_t r : {p.r1[i], p.r2[i], p.r3[i]}) f.add_signed(r);
   }
+  for (const FbaCodedFap& c : coded) f.add_signed(std::int64_t{c.reference} << 32 | static_cast<std::uint16_t>(c.coefficient));
   f.add(std::uint64_t{viseme.select1} << 24 | std::uint64_t{viseme.select2} << 16 | std::uint64_t{viseme.blend} << 8 | viseme.def);
   f.add(std::uint64_t{expression.select1} << 40 | std::uint64_t{expression.intensity1} << 32 |
         std::uint64_t{expression.select2} << 24 | std::uint64_t{expression.intensity2} << 16 |
         std::uint64_t{expression.init_face} << 8 | expression.def);
   f.add(intra);
   f.add(predicted);
+  f.add(escape_bits);
   f.add(planes);
   return f.h;
 }

@@ -8,12 +8,12 @@ int fba_step(int fap, int fap_quant) {
   return fap_quant == 0 ? 1 : fap_info(fap).qp * fap_quant;
 }
 
-std::int32_t fba_quantise(std::int64_t value, int step) {
+std::int64_t fba_quantise(std::int64_t value, int step) {
   const std::int64_t magnitude = value < 0 ? -value : value;
   const std::int64_t half = step / 2;
   if (magnitude <= half) return 0;
   const std::int64_t level = (magnitude + half) / step;
-  return static_cast<std::int32_t>(value < 0 ? -level : level);
+  return value < 0 ? -level : level;
 }
 
 }  // namespace fapcast

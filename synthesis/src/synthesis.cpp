@@ -58,11 +58,11 @@ VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v) {
 }
 
 SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
-                            std::span<const TimedPhone> phones, std::int64_t sample_rate_hz,
+                            std::span<const TimedPhone> phones, SampleRate sample_rate,
                             std::int64_t end_sample, const SynthesisOptions& options,
                             const std::string& source) {
   SynthesizedTrack out;
-  out.timeline = place_on_voice_grid(phones, sample_rate_hz, end_sample, source);
+  out.timeline = place_on_voice_grid(phones, sample_rate, end_sample, source);
   const auto& targets = out.timeline.phones;
   if (targets.empty()) {
     out.pca_frames.resize(0, frame_coefficients.cols());

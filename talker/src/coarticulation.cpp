@@ -24,7 +24,7 @@ std::vector<PlacedPhone> place(const PhoneTimeline& timeline) {
   placed.reserve(timeline.phones.size());
   for (const auto& p : timeline.phones)
     placed.push_back({&phone_articulation(p.phone),
-                      0.5 * static_cast<double>(p.start_sample + p.end_sample) / timeline.sample_rate_hz});
+                      0.5 * static_cast<double>(p.start_sample + p.end_sample) / static_cast<double>(timeline.sample_rate.hz)});
   return placed;
 }
 
@@ -53,9 +53,9 @@ std::array<float, kChannelCount> ChannelTracks::frame(Eigen::Index k) const {
 }
 
 void validate_timeline(const PhoneTimeline& timeline) {
-  if (timeline.sample_rate_hz <= 0)
+  if (!timeline.sample_rate.valid())
     throw std::invalid_argument("phone timeline: sample rate " +
-                                std::to_string(timeline.sample_rate_hz) + " Hz is not positive");
+                                std::to_string(timeline.sample_rate.hz) + " Hz is not positive");
   std::int64_t previous_end = 0;
   for (std::size_t i = 0; i < timeline.phones.size(); ++i) {
     const auto& p = timeline.phones[i];
@@ -87,7 +87,7 @@ ChannelTracks coarticulate(const PhoneTimeline& timeline, const CoarticulationOp
   tracks.frame_rate_hz = options.frame_rate_hz;
   const std::int64_t end = timeline.phones.empty() ? 0 : timeline.phones.back().end_sample;
   const std::int64_t frames =
-      (end * options.frame_rate_hz + timeline.sample_rate_hz - 1) / timeline.sample_rate_hz;
+      (end * options.frame_rate_hz + timeline.sample_rate.hz - 1) / timeline.sample_rate.hz;
   tracks.values.resize(static_cast<int>(kChannelCount), frames);
   const auto phones = place(timeline);
   DominanceBlend blend(kChannelCount);

@@ -43,7 +43,7 @@ std::string phone_label(Phone p) { return p == Phone::SIL ? "sil" : std::string(
 
 PhoneTimeline timeline_of(const Speech& speech) {
   PhoneTimeline timeline;
-  timeline.sample_rate_hz = speech.audio.sample_rate_hz;
+  timeline.sample_rate = speech.audio.sample_rate;
   for (const auto& p : speech.phones)
     if (p.end_sample > p.start_sample) timeline.phones.push_back(p);
   return timeline;
@@ -59,7 +59,7 @@ FaceModel reference_actor(const FaceModel& generic, std::uint64_t seed) {
 }
 
 Alignment take_alignment(const Speech& speech) {
-  const int rate = speech.audio.sample_rate_hz;
+  const auto rate = static_cast<int>(speech.audio.sample_rate.hz);
   const double end = seconds(static_cast<std::int64_t>(speech.audio.samples.size()), rate);
   Alignment a{0.0, end, {}};
   LabelTier phones{"phones", TierKind::intervals, 0.0, end, {}, {}};
@@ -146,12 +146,12 @@ ReferenceCorpusSummary record_reference_corpus(
                                                                                       : "nonsense"},
                           {"files", {{"markers", stem + ".c3d"}, {"audio", stem + ".wav"}, {"alignment", stem + ".TextGrid"}}},
                           {"frame_rate_hz", 60},
-                          {"sample_rate_hz", take.audio.sample_rate_hz},
+                          {"sample_rate_hz", take.audio.sample_rate.hz},
                           {"effort", take.effort},
                           {"synthetic", true}});
     ++summary.utterances;
     summary.marker_frames += take.captured.frame_count();
-    summary.audio_seconds += seconds(static_cast<std::int64_t>(take.audio.samples.size()), take.audio.sample_rate_hz);
+    summary.audio_seconds += seconds(static_cast<std::int64_t>(take.audio.samples.size()), static_cast<int>(take.audio.sample_rate.hz));
     if (progress) progress(i + 1, total);
   }
   manifest["utterances"] = std::move(utterances);

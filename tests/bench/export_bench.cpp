@@ -81,7 +81,7 @@ void BM_BvhRead(benchmark::State& state) {
 }
 
 void BM_JsonExport(benchmark::State& state) {
-  const FapJsonOptions options{16000, std::nullopt, "bench"};
+  const FapJsonOptions options{SampleRate{16000}, std::nullopt, "bench"};
   std::size_t bytes = 0;
   for (auto _ : state) {
     const std::string text = write_fap_json(track(), options);
@@ -101,7 +101,7 @@ void BM_JsonPrintfBaseline(benchmark::State& state) {
     for (const FapFrame& f : track().frames) {
       int n = std::snprintf(buf, sizeof buf, "%lld %.17g %lld", static_cast<long long>(k),
                             static_cast<double>(k) / 25.0,
-                            static_cast<long long>(frame_to_sample(k, {25, 1}, 16000)));
+                            static_cast<long long>(frame_to_sample(k, {25, 1}, SampleRate{16000})));
       text.append(buf, static_cast<std::size_t>(n));
       for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
         if (!f.mask.test(fap)) continue;
@@ -120,7 +120,7 @@ void BM_JsonPrintfBaseline(benchmark::State& state) {
 }
 
 void BM_JsonRead(benchmark::State& state) {
-  const std::string text = write_fap_json(track(), {16000, std::nullopt, "bench"});
+  const std::string text = write_fap_json(track(), {SampleRate{16000}, std::nullopt, "bench"});
   for (auto _ : state)
     benchmark::DoNotOptimize(read_fap_json(text, "bench.json").sequence.frames.data());
   per_frame(state, text.size());

@@ -17,7 +17,7 @@ PhoneTimeline sentence() {  // "a pup strewn on the beach" at 22050 Hz, ~1.5 s
       {"sil", 150}, {"AH0", 70}, {"P", 70}, {"AH1", 100}, {"P", 80}, {"S", 90}, {"T", 50},
       {"R", 60},    {"UW1", 180}, {"N", 80}, {"AA1", 120}, {"N", 60}, {"DH", 40}, {"AH0", 60},
       {"B", 70},    {"IY1", 150}, {"CH", 110}, {"sil", 150}};
-  PhoneTimeline t{22050, {}};
+  PhoneTimeline t{SampleRate{22050}, {}};
   std::int64_t at = 0;
   for (const auto& [p, ms] : phones) {
     t.phones.push_back({parse_arpabet(p, "bench").phone, at, at + std::int64_t{ms} * 22050 / 1000});

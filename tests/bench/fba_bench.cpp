@@ -1,10 +1,11 @@
-// FBA stream: bitrate of the lip, jaw and tongue FAPs (groups 2, 6, 8) at fap_quant 1, 2, 4, 8
-// against gzip -9 and xz -9 of the .fap text holding the same quantised values, on the Xface
-// samples, on SYNTHETIC lip/jaw tracks (sums of low-frequency sinusoids and a low-passed random
-// walk, not motion capture) and on a SYNTHETIC track of the real synthesiser (`fapcast say` of a
-// one-minute text with the default voice); at the default intra period (1 s), 10 s and the archival
-// preset (20 s); and encode/decode speed against reading the same frames as .fap text and against
-// the frame-at-a-time decoder (one access unit per frame, as RTP carries them).
+// FBA stream: bitrates in both profiles (the standard syntax, default and archival intra periods;
+// the fapcast profile) at fap_quant 0, 1, 2, 4, 8 against gzip -9 and xz -9 of the strict .fap
+// text holding the same quantised values, on the Xface samples (every FAP they carry), on
+// SYNTHETIC lip/jaw/tongue tracks (sums of low-frequency sinusoids and a low-passed random walk,
+// not motion capture) and on a SYNTHETIC track of the real synthesiser (`fapcast say` of a
+// one-minute text with the default voice, every FAP it writes); and encode/decode speed against
+// reading the same frames as .fap text and against the frame-at-a-time decoder (one access unit
+// per frame, as RTP carries them).
 // Run: build/rel/tests/fba_bench   (counters: kbit/s at 25 fps, and ratios)
 #include "fapcast/codec/fap_text.hpp"
 #include "fapcast/fba/fba_quantiser.hpp"
@@ -35,19 +36,6 @@ FapMask lip_jaw_tongue() {
   for (int g : {2, 6, 8})
     for (int n = fap_group(g).first; n <= fap_group(g).last; ++n) m.set(n);
   return m;
-}
-
-// Keeps only groups 2, 6 and 8 of a sequence, at 25 fps.
-FapSequence restrict_to_lips(FapSequence seq) {
-  const FapMask keep = lip_jaw_tongue();
-  for (FapFrame& f : seq.frames) {
-    FapFrame g;
-    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n)
-      if (keep.test(n)) g.set(n, f.mask.test(n) ? f.value(n) : 0);
-    f = g;
-  }
-  seq.rate = {25, 1};
-  return seq;
 }
 
 // SYNTHETIC speech-like lip/jaw/tongue motion: a 4-5 Hz syllable rhythm with pauses, each FAP a
@@ -128,7 +116,7 @@ FapSequence say_track() {
   std::string log;
   for (int c; (c = std::fgetc(pipe)) != EOF;) log.push_back(static_cast<char>(c));
   if (::pclose(pipe) != 0) throw std::runtime_error("fapcast say failed: " + log);
-  FapSequence seq = restrict_to_lips(read_fap_text(read_text(out), out.string()).sequence);
+  FapSequence seq = read_fap_text(read_text(out), out.string()).sequence;
   fs::remove(out);
   return seq;
 }
@@ -137,7 +125,7 @@ std::vector<Source> sources() {
   std::vector<Source> out;
   for (const char* s : {"anger", "beg", "disgust", "fear", "happy-for", "hate", "joy", "pride"}) {
     const fs::path p = fs::path(FAPCAST_TEST_DATA) / "xface" / (std::string(s) + ".fap");
-    out.push_back({std::string("xface/") + s, restrict_to_lips(read_fap_text(read_text(p), p.string()).sequence)});
+    out.push_back({std::string("xface/") + s, read_fap_text(read_text(p), p.string()).sequence});
   }
   out.push_back({"SYNTHETIC-60s", synthetic_track(60, 1)});
   out.push_back({"SYNTHETIC-300s", synthetic_track(300, 2)});
@@ -155,73 +143,86 @@ const std::vector<Source>& all_sources() {
 
 double kbps(std::size_t bytes, std::size_t frames) { return 8.0 * static_cast<double>(bytes) / (static_cast<double>(frames) / kFps) / 1000.0; }
 
-// One row of the table: bitrates of FBA with the default options (intra period 25, predictors
-// chosen), without predictors (previous-value prediction, as the published FBA codec spec/fba.md draws on), with an intra
-// period of 250 (10 s), with the archival preset (20 s); and of gzip -9 and xz -9 of the same
-// quantised values as .fap text.
+// The strict .fap text of `seq` with every value on the fap_quant step grid (what the standard
+// syntax decodes to): the baseline gzip -9 and xz -9 compress.
+std::string quantised_text(const FapSequence& seq, int q) {
+  FapSequence quantised = seq;
+  quantised.name = "track";
+  for (FapFrame& f : quantised.frames)
+    for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
+      if (f.mask.test(fap)) f.set(fap, fba_quantise(f.value(fap), fba_step(fap, q)) * fba_step(fap, q));
+  return write_fap_text(quantised);
+}
+
+// Bytes of `seq` in the standard syntax with `options`, or 0 where it cannot code the values
+// (beyond +/-1860 at fap_quant 0).
+std::size_t standard_bytes(const FapSequence& seq, FbaEncoderOptions options) {
+  try {
+    return encode_fba(seq, options).size();
+  } catch (const FbaEncodeError&) {
+    return 0;
+  }
+}
+
+// One row of the table: bitrates of the standard syntax with the default options (intra period
+// 10 s, ranges sized to the data) and with the archival preset (20 s), of the fapcast profile
+// (20 s, predictors and references chosen), and of gzip -9 and xz -9 of the same quantised
+// values as strict .fap text. Ratios are xz bytes / FBA bytes (0: not codable in the standard).
 void BM_Bitrate(benchmark::State& state) {
   const Source& src = all_sources()[static_cast<std::size_t>(state.range(0))];
   const int q = static_cast<int>(state.range(1));
   state.SetLabel(src.name + " q" + std::to_string(q));
+  FbaEncoderOptions fapcast{.profile = FbaProfile::kFapcast, .fap_quant = q};
   std::vector<std::uint8_t> fba;
-  const FbaEncoderOptions defaults{.fap_quant = q};
   for (auto _ : state) {
-    fba = encode_fba(src.seq, defaults);
+    fba = encode_fba(src.seq, fapcast);
     benchmark::DoNotOptimize(fba.data());
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * src.seq.frames.size()));  // encode frames/s
-  const std::size_t fba_plain = encode_fba(src.seq, {.fap_quant = q, .choose_predictors = false}).size();
-  const std::size_t fba_long = encode_fba(src.seq, {.fap_quant = q, .intra_period = 250}).size();
-  const std::size_t fba_archive = encode_fba(src.seq, fba_archive_options(q, src.seq.rate)).size();
-  // The text holds the same quantised values: each value on the fap_quant step grid (what
-  // previous-value prediction decodes to; chosen predictors decode off the grid, which only
-  // makes text larger, so this is the fair baseline).
-  FapSequence quantised = src.seq;
-  quantised.name = "synthetic";
-  for (FapFrame& f : quantised.frames)
-    for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
-      if (f.mask.test(fap)) f.set(fap, fba_quantise(f.value(fap), fba_step(fap, q)) * fba_step(fap, q));
-  const std::string text = write_fap_text(quantised);
+  const std::size_t standard = standard_bytes(src.seq, {.fap_quant = q});
+  const std::size_t archive = standard_bytes(src.seq, fba_archive_options(FbaProfile::kStandard, q, src.seq.rate));
+  const std::string text = quantised_text(src.seq, q);
   const std::size_t gz = compressed_size(text, "gzip -9"), xz = compressed_size(text, "xz -9");
   const std::size_t n = src.seq.frames.size();
-  state.counters["fba_kbps"] = kbps(fba.size(), n);
-  state.counters["no_pred_kbps"] = kbps(fba_plain, n);
-  state.counters["fba_i250_kbps"] = kbps(fba_long, n);
+  const auto ratio = [&](std::size_t bytes) { return bytes == 0 ? 0.0 : static_cast<double>(xz) / static_cast<double>(bytes); };
+  state.counters["std_kbps"] = kbps(standard, n);
+  state.counters["std_archive_kbps"] = kbps(archive, n);
+  state.counters["fapcast_kbps"] = kbps(fba.size(), n);
   state.counters["gzip_kbps"] = kbps(gz, n);
   state.counters["xz_kbps"] = kbps(xz, n);
-  state.counters["xz_over_fba"] = static_cast<double>(xz) / static_cast<double>(fba.size());
-  state.counters["xz_over_i250"] = static_cast<double>(xz) / static_cast<double>(fba_long);
-  state.counters["archive_kbps"] = kbps(fba_archive, n);
-  state.counters["xz_over_archive"] = static_cast<double>(xz) / static_cast<double>(fba_archive);
+  state.counters["xz_over_std"] = ratio(standard);
+  state.counters["xz_over_std_archive"] = ratio(archive);
+  state.counters["xz_over_fapcast"] = ratio(fba.size());
 }
 
 void bitrate_args(benchmark::internal::Benchmark* b) {
   for (int s = 0; s < kSources; ++s)
-    for (int q : {1, 2, 4, 8}) b->Args({s, q});
+    for (int q : {0, 1, 2, 4, 8}) b->Args({s, q});
 }
 BENCHMARK(BM_Bitrate)->Apply(bitrate_args)->Unit(benchmark::kMillisecond);
 
 // Decoding speed on the 300 s synthetic track, frames/s; and the alternative: parsing .fap text.
 void BM_DecodeFba(benchmark::State& state) {
   const FapSequence& seq = all_sources()[9].seq;
-  const auto fba = encode_fba(seq, {.fap_quant = static_cast<int>(state.range(0))});
+  const auto fba = encode_fba(seq, {.profile = static_cast<FbaProfile>(state.range(1)), .fap_quant = static_cast<int>(state.range(0))});
   for (auto _ : state) {
     auto r = decode_fba(fba);
     benchmark::DoNotOptimize(r.sequence.frames.data());
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * seq.frames.size()));
 }
-BENCHMARK(BM_DecodeFba)->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DecodeFba)->Args({1, 0})->Args({8, 0})->Args({0, 1})->Args({1, 1})->Unit(benchmark::kMillisecond);
 
 // The same frames as access units (start code and alignment per frame), decoded one by one.
 void BM_DecodeAccessUnits(benchmark::State& state) {
   const FapSequence& seq = all_sources()[9].seq;
-  FbaFrameEncoder encoder({.fap_quant = static_cast<int>(state.range(0))}, seq.rate);
+  const auto profile = static_cast<FbaProfile>(state.range(1));
+  FbaFrameEncoder encoder({.profile = profile, .fap_quant = static_cast<int>(state.range(0))}, seq.rate);
   std::vector<FbaAccessUnit> units(seq.frames.size());
   for (std::size_t k = 0; k < units.size(); ++k)
     if (encoder.encode(seq.frames[k], units[k])) throw std::runtime_error("bench: encode");
   for (auto _ : state) {
-    FbaFrameDecoder decoder;
+    FbaFrameDecoder decoder(profile);
     FapFrame frame;
     for (const auto& u : units) {
       if (decoder.decode(u.bytes, frame)) throw std::runtime_error("bench: decode");
@@ -230,17 +231,17 @@ void BM_DecodeAccessUnits(benchmark::State& state) {
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * seq.frames.size()));
 }
-BENCHMARK(BM_DecodeAccessUnits)->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DecodeAccessUnits)->Args({1, 0})->Args({8, 0})->Args({1, 1})->Unit(benchmark::kMillisecond);
 
 void BM_EncodeFba(benchmark::State& state) {
   const FapSequence& seq = all_sources()[9].seq;
   for (auto _ : state) {
-    auto b = encode_fba(seq, {.fap_quant = static_cast<int>(state.range(0))});
+    auto b = encode_fba(seq, {.profile = static_cast<FbaProfile>(state.range(1)), .fap_quant = static_cast<int>(state.range(0))});
     benchmark::DoNotOptimize(b.data());
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * seq.frames.size()));
 }
-BENCHMARK(BM_EncodeFba)->Arg(1)->Arg(8)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EncodeFba)->Args({1, 0})->Args({8, 0})->Args({1, 1})->Unit(benchmark::kMillisecond);
 
 void BM_ReadFapText(benchmark::State& state) {
   const FapSequence& seq = all_sources()[9].seq;

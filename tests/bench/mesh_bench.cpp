@@ -3,7 +3,7 @@
 //    triangle maps onto their corners with no mesh structure: time and peak heap;
 //  - adapting one dense 3 x N target, and all 53 ICT expression targets (sparse);
 //  - .glb bytes per second of animation for k = 17 morph targets at 60 fps;
-//  - `voice retarget` (adapt_voice) of a voice shaped like the reference voice (k = 17, 21 RBF
+//  - `voice adapt` (adapt_voice) of a voice shaped like the reference voice (k = 17, 21 RBF
 //    centres, full ICT face) to the actor, against opening (mapping + verifying) the same voice.
 // Peak heap is counted by replacing global operator new/delete in this program only.
 #include <benchmark/benchmark.h>

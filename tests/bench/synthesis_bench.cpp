@@ -18,12 +18,14 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <random>
 
 namespace {
 using namespace fapcast;
 
 constexpr std::int64_t kRate = 22050;
+constexpr SampleRate kSampleRate{kRate};
 constexpr double kSentenceS = 10.0;
 constexpr Eigen::Index kK = 17;
 constexpr std::int64_t kMeshVertices = 26'719;  // ICT-FaceKit's full head, for the mesh baseline
@@ -82,7 +84,7 @@ void report(benchmark::State& state, const SynthesizedTrack& s) {
 SynthesisOptions options_of(const benchmark::State& state) {
   SynthesisOptions o;
   o.search.beta = static_cast<double>(state.range(0)) / 100.0;
-  if (state.range(1) > 0) o.search.max_active = static_cast<std::size_t>(state.range(1));
+  o.search.max_active = state.range(1) > 0 ? std::optional<std::size_t>(state.range(1)) : std::nullopt;
   o.search.prune_joins = state.range(2) != 0;
   return o;
 }
@@ -94,7 +96,7 @@ void BM_Synthesize(benchmark::State& state) {
   const auto options = options_of(state);
   SynthesizedTrack s;
   for (auto _ : state) {
-    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options);
     benchmark::DoNotOptimize(s.pca_frames.data());
   }
   report(state, s);
@@ -112,7 +114,7 @@ BENCHMARK(BM_Synthesize)
 void BM_SearchOnly(benchmark::State& state) {
   const World& w = world();
   const auto options = options_of(state);
-  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options);
   std::vector<VisemeClass> targets;
   for (const StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
   SynthesizedTrack s;
@@ -139,7 +141,7 @@ void BM_OpenAndSearchOnce(benchmark::State& state) {
   // dynamic thresholds do or not depending on the allocation order of the code measured.
   mallopt(M_MMAP_THRESHOLD, 64 << 20);
   mallopt(M_TRIM_THRESHOLD, 256 << 20);
-  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, {});
+  const auto track = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, {});
   std::vector<VisemeClass> targets;
   for (const StateId j : track.search.states) targets.push_back(w.voice.graph->state(j).viseme);
   SynthesizedTrack s;
@@ -159,7 +161,7 @@ void BM_PhonesToFaps(benchmark::State& state) {
   const auto options = options_of(state);
   SynthesizedTrack s;
   for (auto _ : state) {
-    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options);
     FapSequence seq{"bench", {60, 1}, pca_to_faps(s.pca_frames, w.basis)};
     auto out = resample_track(seq, {25, 1}, ResampleMode::kLinear);
     benchmark::DoNotOptimize(out.frames.data());
@@ -178,10 +180,8 @@ BENCHMARK(BM_PhonesToFaps)
 const SynthesizedTrack& default_track() {
   static const SynthesizedTrack s = [] {
     const World& w = world();
-    SynthesisOptions o;
-    o.search.beta = 0.1;
-    o.search.max_active = 64;
-    return synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, o);
+    const SynthesisOptions o;  // the shipped defaults: beta 0.1, cap 64
+    return synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, o);
   }();
   return s;
 }
@@ -191,7 +191,7 @@ void BM_AfterSearch(benchmark::State& state) {
   const SynthesizedTrack& s = default_track();
   for (auto _ : state) {
     // The bench graph covers every class, so the covered targets are the timeline's own.
-    const auto timeline = place_on_voice_grid(w.phones, kRate);
+    const auto timeline = place_on_voice_grid(w.phones, kSampleRate);
     auto pca = concatenate_units(*w.voice.graph, w.voice.frames, s.search, timeline.phones);
     auto tongue = tongue_track(timeline.phones, timeline.phone_of);
     benchmark::DoNotOptimize(pca.data());
@@ -221,7 +221,7 @@ void BM_TimeToFirstFrame(benchmark::State& state) {
   const World& w = world();
   const auto options = options_of(state);
   for (auto _ : state) {
-    auto s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kRate, 0, options);
+    auto s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options);
     auto first = pca_to_faps(s.pca_frames.topRows(1), w.basis);
     benchmark::DoNotOptimize(first.data());
   }

@@ -36,7 +36,7 @@ const std::vector<MediaUnit>& sample_units() {
     std::vector<MediaUnit> out;
     FbaEncoderOptions o;
     o.intra_period = 60;
-    (void)encode_track_units(seq, 48000, o, out);
+    (void)encode_track_units(seq, SampleRate{48000}, o, out);
     return out;
   }();
   return units;

@@ -13,11 +13,11 @@ namespace {
 
 TEST(EvalSynthCli, BadVoicesExitOneAndNameTheFile) {
   const std::string cut = std::string(FAPCAST_TEST_DATA) + "/voice/bad/bad.005.truncated.fapv";
-  auto r = run_command(fapcast("eval synth -q --count 1 --voice " + cut));
+  auto r = run_command(fapcast("eval synth -q --count 1 " + cut));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("bad.005.truncated.fapv: byte "), std::string::npos) << r.err;
   const std::string dir = make_temp_dir("eval-synth-cli");
-  r = run_command(fapcast("eval synth -q --count 1 --voice " + dir + "/none.fapv --json " + dir + "/out.json"));
+  r = run_command(fapcast("eval synth -q --count 1 " + dir + "/none.fapv --json-out " + dir + "/out.json"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("none.fapv"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/out.json")) << "nothing written on failure";
@@ -26,14 +26,15 @@ TEST(EvalSynthCli, BadVoicesExitOneAndNameTheFile) {
 
 TEST(EvalSynthCli, UsageMistakesExitTwo) {
   const std::string voice = std::string(FAPCAST_TEST_DATA) + "/voice/bad/bad.005.truncated.fapv";
-  for (const char* args : {"--count 0", "--count 21", "--beta -1", "--duration-weight -0.5", "--seed x", "--bogus"}) {
-    const auto r = run_command(fapcast("eval synth -q --voice " + voice + " " + std::string(args)));
+  for (const char* args : {"--count 0", "--count 21", "--beta -1", "--duration-weight -0.5", "--seed x", "--bogus",
+                           "--voice v.fapv", "--json out.json"}) {  // the voice is positional, outputs end in -out
+    const auto r = run_command(fapcast("eval synth -q " + voice + " " + std::string(args)));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;
   }
   const auto help = run_command(fapcast("eval synth --help"));
   EXPECT_EQ(help.exit_code, 0);
   EXPECT_NE(help.out.find("SYNTHETIC"), std::string::npos) << help.out;
-  EXPECT_NE(help.out.find("--plots"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("--plots-out"), std::string::npos) << help.out;
 }
 
 }  // namespace

@@ -61,7 +61,7 @@ TEST_P(ExportXface, JsonCarriesTheTrackExactlyWithSamplePositions) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const FapJsonRead back = read_fap_json(read_file(out), out);
   EXPECT_EQ(back.sequence, track_);
-  EXPECT_EQ(back.options.sample_rate, 16000);
+  EXPECT_EQ(back.options.sample_rate, SampleRate{16000});
   EXPECT_EQ(back.options.generator.rfind("fapcast ", 0), 0u) << back.options.generator;
 
   // JSON in, BVH out gives the same file as .fap in, BVH out.

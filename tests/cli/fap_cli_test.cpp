@@ -82,8 +82,9 @@ TEST(FapCli, BadInputExitsOneWithFileLineRule) {
 TEST(FapCli, BadUsageExitsTwo) {
   EXPECT_EQ(run_command(fapcast("fap info")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("fap")).exit_code, 2);
-  EXPECT_EQ(run_command(fapcast("fap convert '" + kJoy + "'")).exit_code, 2);
-  EXPECT_EQ(run_command(fapcast("fap convert '" + kJoy + "' /tmp/x.fap --dialect 70")).exit_code, 2);
+  EXPECT_EQ(run_command(fapcast("fap convert '" + kJoy + "'")).exit_code, 2);  // no -o
+  EXPECT_EQ(run_command(fapcast("fap convert '" + kJoy + "' /tmp/x.fap")).exit_code, 2);  // the output is -o
+  EXPECT_EQ(run_command(fapcast("fap convert '" + kJoy + "' -o /tmp/x.fap --dialect 70")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("fap info --help")).exit_code, 0);
   EXPECT_EQ(run_command(fapcast("fap convert --help")).exit_code, 0);
 }
@@ -93,7 +94,7 @@ TEST(FapCli, ConvertWritesBothDialectsThatReadBackTheSame) {
   const auto original = read_fap_text(read_file(kJoy), "joy.fap").sequence;
   for (const std::string dialect : {"strict", "69"}) {
     const std::string out = dir + "/joy-" + dialect + ".fap";
-    const auto r = run_command(fapcast("fap convert '" + kJoy + "' '" + out + "' --dialect " + dialect));
+    const auto r = run_command(fapcast("fap convert '" + kJoy + "' -o '" + out + "' --dialect " + dialect));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto back = read_fap_text(read_file(out), out);
     EXPECT_EQ(back.sequence.frames, original.frames);
@@ -108,17 +109,17 @@ TEST(FapCli, ConvertWritesBothDialectsThatReadBackTheSame) {
 TEST(FapCli, FailingConvertLeavesNoFileAndKeepsAnExistingOne) {
   const std::string dir = test::make_temp_dir("fapcli");
   const std::string bad = kData + "/fap/bad/bad.009.truncated.fap";
-  auto r = run_command(fapcast("fap convert '" + bad + "' '" + dir + "/new.fap'"));
+  auto r = run_command(fapcast("fap convert '" + bad + "' -o '" + dir + "/new.fap'"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find(":4: truncated:"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/new.fap"));
 
   write_file_atomically(dir + "/old.fap", "precious");
-  r = run_command(fapcast("fap convert '" + bad + "' '" + dir + "/old.fap'"));
+  r = run_command(fapcast("fap convert '" + bad + "' -o '" + dir + "/old.fap'"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(read_file(dir + "/old.fap"), "precious");
   // An unwritable destination is bad input too, and leaves nothing behind.
-  r = run_command(fapcast("fap convert '" + kJoy + "' '" + dir + "/missing-dir/x.fap'"));
+  r = run_command(fapcast("fap convert '" + kJoy + "' -o '" + dir + "/missing-dir/x.fap'"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}), 1);
 }
@@ -128,7 +129,7 @@ TEST(FapCli, ConvertTo69WarnsWhenItDropsVisemeFields) {
   std::string mask = "1 0";
   for (int i = 0; i < 66; ++i) mask += " 0";
   write_file_atomically(dir + "/v.fap", "2.1 v 25 1\n" + mask + "\n0 3 5 20 0\n");
-  const auto r = run_command(fapcast("fap convert '" + dir + "/v.fap' '" + dir + "/v69.fap' --dialect 69"));
+  const auto r = run_command(fapcast("fap convert '" + dir + "/v.fap' -o '" + dir + "/v69.fap' --dialect 69"));
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.err.find("1 frames have FAP 1/2 fields the 69-token dialect cannot carry"), std::string::npos)
       << r.err;

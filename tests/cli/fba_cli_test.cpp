@@ -32,8 +32,9 @@ struct CliCase {
 
 class FbaCli : public ::testing::TestWithParam<CliCase> {};
 
-// Every Xface sample encodes and decodes; each value comes back within step/2 (exact at 0).
-// At fap_quant 0 a sample whose head rotation goes beyond +/-1860 AU is refused instead.
+// Every Xface sample encodes and decodes in the standard syntax; each value comes back within
+// step/2 (exact at 0). At fap_quant 0 a sample whose head rotation goes beyond +/-1860 AU is refused
+// instead, and the message says to use the fapcast profile, which then codes it losslessly.
 TEST_P(FbaCli, XfaceSampleRoundTripsThroughTheCommandLine) {
   const auto& [sample, quant] = GetParam();
   const std::string dir = make_temp_dir("fba-cli");
@@ -45,14 +46,27 @@ TEST_P(FbaCli, XfaceSampleRoundTripsThroughTheCommandLine) {
     for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) beyond |= f.mask.test(n) && std::abs(f.value(n)) > 1860;
   if (quant == 0 && beyond) {
     EXPECT_EQ(enc.exit_code, 1);
-    EXPECT_NE(enc.err.find("beyond the codable range +/-1860 at fap_quant 0 (refused, never clipped)"), std::string::npos) << enc.err;
+    EXPECT_NE(enc.err.find("beyond the standard syntax's codable range +/-1860 at fap_quant 0 (refused, never clipped)"),
+              std::string::npos)
+        << enc.err;
+    EXPECT_NE(enc.err.find("use --profile fapcast to code every value losslessly"), std::string::npos) << enc.err;
     EXPECT_FALSE(fs::exists(fba));
+    const auto lossless = run_command(fapcast("encode " + in.string() + " -o " + fba + " --profile fapcast"));
+    ASSERT_EQ(lossless.exit_code, 0) << lossless.err;
+    EXPECT_NE(lossless.err.find("fapcast profile at fap_quant 0 (lossless)"), std::string::npos) << lossless.err;
+    ASSERT_EQ(run_command(fapcast("decode " + fba + " -o " + out)).exit_code, 0);
+    EXPECT_EQ(read_fap(out).frames, read_fap(in).frames);
+    const auto refused = run_command(fapcast("decode " + fba + " -o " + dir + "/refused.fap --profile standard"));
+    EXPECT_EQ(refused.exit_code, 1);
+    EXPECT_NE(refused.err.find("byte 0: fapcast-profile: a fapcast-profile stream"), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(dir + "/refused.fap"));
     return;
   }
   ASSERT_EQ(enc.exit_code, 0) << enc.err;
   ASSERT_LT(fs::file_size(fba), fs::file_size(in));
-  const auto dec = run_command(fapcast("decode " + fba + " -o " + out));
+  const auto dec = run_command(fapcast("decode " + fba + " -o " + out + " --profile standard"));
   ASSERT_EQ(dec.exit_code, 0) << dec.err;
+  EXPECT_NE(dec.err.find("standard FBA, fap_quant " + std::to_string(quant)), std::string::npos) << dec.err;
   const FapSequence a = read_fap(in), b = read_fap(out);
   ASSERT_EQ(a.frames.size(), b.frames.size());
   EXPECT_EQ(a.rate, b.rate);
@@ -84,7 +98,7 @@ TEST(FbaCliErrors, BadStreamIsReportedWithByteOffsetAndRule) {
   const fs::path bad = fs::path(FAPCAST_TEST_DATA) / "fba" / "bad" / "bad.004.bad-start-code.fba";
   const auto r = run_command(fapcast("decode " + bad.string() + " -o " + dir + "/x.fap"));
   EXPECT_EQ(r.exit_code, 1);
-  EXPECT_NE(r.err.find("byte 390: bad-start-code"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("byte 397: bad-start-code"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("frames lost"), std::string::npos) << r.err;
 }
 
@@ -119,7 +133,7 @@ namespace {
 TEST(FbaCliArchive, ArchivePresetIsSmallerAndDecodesWithinHalfAStep) {
   const std::string dir = make_temp_dir("fba-cli-archive");
   const std::string in = (fs::path(FAPCAST_TEST_DATA) / "xface" / "joy.fap").string();
-  ASSERT_EQ(run_command(fapcast("encode " + in + " -o " + dir + "/default.fba --quant 2")).exit_code, 0);
+  ASSERT_EQ(run_command(fapcast("encode " + in + " -o " + dir + "/default.fba --quant 2 --iperiod 25")).exit_code, 0);
   const auto enc = run_command(fapcast("encode " + in + " -o " + dir + "/archive.fba --quant 2 --archive"));
   ASSERT_EQ(enc.exit_code, 0) << enc.err;
   EXPECT_LT(fs::file_size(dir + "/archive.fba"), fs::file_size(dir + "/default.fba"));

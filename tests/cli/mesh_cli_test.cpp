@@ -77,8 +77,7 @@ TEST_F(MeshCli, ExpressionsThenAdaptToAScaledFace) {
   // The specific face: the generic one 1.5 times larger, moved.
   const Positions big = (1.5f * generic.vertices).colwise() + Eigen::Vector3f(1, 2, 3);
   write_file_atomically(dir_ + "/big.obj", write_obj_mesh(big, generic.faces));
-  r = run_command(fapcast("adapt --generic '" + kIct + "' --specific '" + dir_ + "/big.obj' --targets '" +
-                          two + "' -o '" + adapted + "'"));
+  r = run_command(fapcast("adapt '" + two + "' '" + kIct + "' '" + dir_ + "/big.obj' -o '" + adapted + "'"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("2 targets"), std::string::npos) << r.out;
   const auto big_joy = read_obj_mesh(adapted + "/joy.obj");
@@ -93,20 +92,18 @@ TEST_F(MeshCli, AdaptRefusesBadInputWithExitOneAndBadUsageWithTwo) {
   // A specific mesh with another topology: one triangle.
   write_file_atomically(dir_ + "/tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   write_file_atomically(targets + "/a.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
-  auto r = run_command(fapcast("adapt --generic '" + kIct + "' --specific '" + dir_ + "/tri.obj' --targets '" +
-                               targets + "' -o '" + out + "'"));
+  auto r = run_command(fapcast("adapt '" + targets + "' '" + kIct + "' '" + dir_ + "/tri.obj' -o '" + out + "'"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("tri.obj"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("topology-mismatch"), std::string::npos) << r.err;
   // A bad OBJ line: file, line and rule.
   write_file_atomically(targets + "/b.obj", "v 0 0 0\nv 1 0 0\nv 0 1\nf 1 2 3\n");
-  r = run_command(fapcast("adapt --generic '" + dir_ + "/tri.obj' --specific '" + dir_ + "/tri.obj' --targets '" +
-                          targets + "' -o '" + out + "'"));
+  r = run_command(fapcast("adapt '" + targets + "' '" + dir_ + "/tri.obj' '" + dir_ + "/tri.obj' -o '" + out + "'"));
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find("b.obj:3"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("vertex-arity"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out + "/a.obj"));  // nothing written when any target is bad
-  r = run_command(fapcast("adapt --generic '" + kIct + "' -o '" + out + "'"));
+  r = run_command(fapcast("adapt '" + targets + "' '" + kIct + "' -o '" + out + "'"));
   EXPECT_EQ(r.exit_code, 2);
   r = run_command(fapcast("render '" + dir_ + "/tri.obj' -o '" + out + "'"));
   EXPECT_EQ(r.exit_code, 1);
@@ -115,7 +112,7 @@ TEST_F(MeshCli, AdaptRefusesBadInputWithExitOneAndBadUsageWithTwo) {
 
 TEST_F(MeshCli, ExpressionTourAsGlbWithObjFrames) {
   const auto glb = dir_ + "/tour.glb", frames = dir_ + "/frames";
-  const auto r = run_command(fapcast("expressions -o '" + glb + "' --fps 20 --seconds 0.1 --obj-frames '" + frames + "'"));
+  const auto r = run_command(fapcast("expressions -o '" + glb + "' --fps 20 --seconds 0.1 --obj-frames-out '" + frames + "'"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto a = read_glb(read_file(glb), glb);
   EXPECT_EQ(a.targets_m.size(), 6u);

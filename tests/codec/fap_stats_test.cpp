@@ -49,7 +49,7 @@ TEST(FapStats, AgreesWithADirectScanOnRandomSequences) {
   for (int trial = 0; trial < 20; ++trial) {
     const FapSequence s = test::random_fap_sequence(rng, 40);
     const FapStats st = fap_stats(s);
-    EXPECT_EQ(st.duration_ms, frame_to_sample(40, s.rate, 1000));
+    EXPECT_EQ(st.duration_ms, frame_to_sample(40, s.rate, SampleRate{1000}));
     std::size_t i = 0;
     for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
       std::vector<std::int32_t> seen;

@@ -66,13 +66,13 @@ TEST(FrameRate, FramesLandOnTheSampleTimelineWithoutDrift) {
   const FrameRate ntsc{30000, 1001};
   // One hour of 29.97 fps at 48 kHz: the last frame is exactly where rational arithmetic puts it.
   const std::int64_t k = 107892;  // frames in one hour at 30000/1001
-  EXPECT_EQ(frame_to_sample(k, ntsc, 48000), 172799827);
+  EXPECT_EQ(frame_to_sample(k, ntsc, SampleRate{48000}), 172799827);
   for (std::int64_t f : {0, 1, 2, 999, 107891}) {
-    const auto s = frame_to_sample(f, ntsc, 48000);
-    EXPECT_EQ(sample_to_frame(s, ntsc, 48000), f);
-    EXPECT_EQ(sample_to_frame(s - 1, ntsc, 48000), f == 0 ? 0 : f - 1);
+    const auto s = frame_to_sample(f, ntsc, SampleRate{48000});
+    EXPECT_EQ(sample_to_frame(s, ntsc, SampleRate{48000}), f);
+    EXPECT_EQ(sample_to_frame(s - 1, ntsc, SampleRate{48000}), f == 0 ? 0 : f - 1);
   }
-  EXPECT_EQ(frame_to_sample(3, FrameRate{25, 1}, 22050), 2646);
+  EXPECT_EQ(frame_to_sample(3, FrameRate{25, 1}, SampleRate{22050}), 2646);
   EXPECT_EQ((FrameRate{50, 2}), (FrameRate{25, 1}));
 }
 

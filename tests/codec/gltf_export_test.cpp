@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
@@ -222,6 +223,13 @@ TEST(GltfExport, ReadGlbNamesTheRuleBroken) {
   std::string json = glb;
   json[20] = '[';
   EXPECT_EQ(rule_of(json), "glb-syntax");
+  // Key times 1/1,310,000 s apart (the fuzzer's input of issue #17: it read as 1.31 MHz, wrote
+  // back other times and `render` took it): outside the 1..1000 fps a .glb may claim.
+  EXPECT_EQ(rule_of(write_glb(square(5, {1'310'000, 1}))), "gltf-frame-rate");
+  EXPECT_EQ(rule_of(write_glb(square(5, {1001, 1}))), "gltf-frame-rate");
+  // A rate at the bound reads back as itself; ten minutes at 1000 fps are past float key times.
+  EXPECT_EQ(read_glb(write_glb(square(5, {1000, 1})), "k.glb").rate, (FrameRate{1000, 1}));
+  EXPECT_EQ(rule_of(write_glb(square(600'000, {1000, 1}))), "gltf-key-times");
 }
 
 }  // namespace
@@ -250,6 +258,29 @@ TEST(GltfExport, ReadsAGlbFromAnotherWriter) {
   const MorphAnimation b = read_glb(write_glb(a), "again.glb");
   EXPECT_EQ(b.targets_m[1], a.targets_m[1]);
   EXPECT_EQ(b.weights, a.weights);
+}
+
+
+// Inputs the fuzzer found (tests/data/gltf/fuzz-regressions/glb.NNN.<rule>.glb, also seeds of
+// glb_fuzz): each is refused with the rule in its name. glb.001: key times 1/1,310,000 s apart,
+// which read as 1.31 MHz, did not survive write-then-read, and `render` took (issue #17).
+TEST(GltfExport, RefusesTheFuzzersInputs) {
+  const std::filesystem::path dir = std::filesystem::path(FAPCAST_TEST_DATA) / "gltf" / "fuzz-regressions";
+  int seen = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();  // glb.NNN.<rule>.glb
+    const std::string rule = name.substr(8, name.size() - 8 - 4);
+    std::ifstream in(entry.path(), std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    try {
+      (void)read_glb(bytes, name);
+      ADD_FAILURE() << name << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.rule(), rule) << e.what();
+    }
+    ++seen;
+  }
+  EXPECT_GE(seen, 1);
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ FapSequence small_sequence() {
 }
 
 FapJsonOptions small_options() {
-  return {16000, measure_fapu(generic_adult_face().feature_points), "fapcast 0.1.0"};
+  return {SampleRate{16000}, measure_fapu(generic_adult_face().feature_points), "fapcast 0.1.0"};
 }
 
 TEST(FapJson, WritesTheGoldenFileByteForByte) {
@@ -46,7 +46,7 @@ TEST(FapJson, SpecExampleIsTheGoldenFile) {
 TEST(FapJson, ReadsTheGoldenFile) {
   const FapJsonRead r = read_fap_json(test::slurp(kDir / "small.json"), "small.json");
   EXPECT_EQ(r.sequence, small_sequence());
-  EXPECT_EQ(r.options.sample_rate, 16000);
+  EXPECT_EQ(r.options.sample_rate, SampleRate{16000});
   EXPECT_EQ(r.options.fapu, small_options().fapu);
   EXPECT_EQ(r.options.generator, "fapcast 0.1.0");
 }
@@ -66,10 +66,10 @@ TEST(FapJson, IsPlainJsonWithNamedFapsTimesAndSamples) {
 
 TEST(FapJson, SamplePositionsAreTheExactTimelineAtNtscRates) {
   FapSequence seq{"ntsc", {30000, 1001}, std::vector<FapFrame>(3000)};
-  const auto j = nlohmann::json::parse(write_fap_json(seq, {44100, std::nullopt, "t"}));
+  const auto j = nlohmann::json::parse(write_fap_json(seq, {SampleRate{44100}, std::nullopt, "t"}));
   for (std::int64_t k = 0; k < 3000; ++k) {
     ASSERT_EQ(j["frames"][static_cast<std::size_t>(k)]["sample"].get<std::int64_t>(),
-              frame_to_sample(k, {30000, 1001}, 44100));
+              frame_to_sample(k, {30000, 1001}, SampleRate{44100}));
     EXPECT_NEAR(j["frames"][static_cast<std::size_t>(k)]["time_s"].get<double>(),
                 k * 1001.0 / 30000.0, 1e-12);
   }
@@ -80,7 +80,7 @@ TEST(FapJson, SamplePositionsAreTheExactTimelineAtNtscRates) {
 TEST(FapJson, RandomSequencesRoundTripExactly) {
   const std::uint64_t s = test::test_seed();
   std::mt19937_64 rng(s);
-  const std::optional<std::int64_t> sample_rates[] = {std::nullopt, 8000, 44100, 48000};
+  const std::optional<SampleRate> sample_rates[] = {std::nullopt, SampleRate{8000}, SampleRate{44100}, SampleRate{48000}};
   for (int i = 0; i < 200; ++i) {
     FapSequence seq = test::random_fap_sequence(rng, rng() % 40);
     if (i % 2) seq.name = "escapes: \"quoted\" \\ tab\t \xc3\xa9";  // JSON string escaping
@@ -99,9 +99,9 @@ TEST(FapJson, RandomSequencesRoundTripExactly) {
 
 TEST(FapJson, WriterRefusesRatesItCannotPlaceOnATimeline) {
   EXPECT_THROW(write_fap_json(FapSequence{"x", {0, 1}, {}}), std::invalid_argument);
-  EXPECT_THROW(write_fap_json(FapSequence{"x", {25, 1}, {}}, {0, std::nullopt, "t"}),
+  EXPECT_THROW(write_fap_json(FapSequence{"x", {25, 1}, {}}, {SampleRate{0}, std::nullopt, "t"}),
                std::invalid_argument);
-  EXPECT_THROW(write_fap_json(FapSequence{"x", {25, 1}, {}}, {kFapJsonMaxRate + 1, std::nullopt, "t"}),
+  EXPECT_THROW(write_fap_json(FapSequence{"x", {25, 1}, {}}, {SampleRate{kFapJsonMaxRate + 1}, std::nullopt, "t"}),
                std::invalid_argument);
 }
 

@@ -33,7 +33,7 @@ TEST(WavFile, ReadsEveryInterleavedSampleExactly) {
   const std::vector<std::int16_t> samples{0, 1, -1, 32767, -32768, 100, -100, 7, 8};
   write_file_atomically(dir + "/three_ch.wav", canonical_wav(22050, 3, samples));
   const Audio audio = read_wav(dir + "/three_ch.wav");
-  EXPECT_EQ(audio.sample_rate_hz, 22050);
+  EXPECT_EQ(audio.sample_rate.hz, 22050);
   EXPECT_EQ(audio.channels, 3);
   EXPECT_EQ(audio.instants(), 3);
   EXPECT_EQ(audio.samples, samples);
@@ -41,7 +41,7 @@ TEST(WavFile, ReadsEveryInterleavedSampleExactly) {
 
 TEST(WavFile, ReadsTheSoxFixture) {
   const Audio audio = read_wav(kData / "tone_16k_mono.wav");
-  EXPECT_EQ(audio.sample_rate_hz, 16000);
+  EXPECT_EQ(audio.sample_rate.hz, 16000);
   EXPECT_EQ(audio.channels, 1);
   EXPECT_EQ(audio.instants(), 800);
 }
@@ -62,7 +62,7 @@ TEST_P(WavFromSox, RateChannelsAndLength) {
   const auto r = test::run_command("sox -n " + std::string(c.args) + " " + file + " synth 0.1 sine 300");
   if (r.exit_code != 0) GTEST_SKIP() << "sox failed: " << r.err;
   const Audio audio = read_wav(file);
-  EXPECT_EQ(audio.sample_rate_hz, c.rate);
+  EXPECT_EQ(audio.sample_rate.hz, c.rate);
   EXPECT_EQ(audio.channels, c.channels);
   EXPECT_EQ(audio.instants(), c.rate / 10);
 }

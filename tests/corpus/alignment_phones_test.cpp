@@ -1,9 +1,8 @@
-// Phones from alignments: ARPAbet and TIMIT labels, gaps, closure + release, bad labels.
+// Timed phones from alignment segments: ARPAbet and TIMIT labels, gaps, closure + release,
+// EMU compounds and aspiration, bad labels; and fitting them to the audio.
 #include "fapcast/corpus/alignment_phones.hpp"
 
 #include "fapcast/core/input_error.hpp"
-#include "fapcast/corpus/lab_file.hpp"
-#include "fapcast/corpus/textgrid.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,9 +15,10 @@ LabelTier tier(std::vector<Interval> intervals, std::string name = "phones") {
 }
 
 TEST(AlignmentPhones, ReadsArpabetTimitAndGaps) {
-  const auto p = phones_from_tier(tier({{0.0, 0.1, ""}, {0.1, 0.2, "HH"}, {0.2, 0.35, "AH0"}, {0.35, 0.4, "pau"},
-                                        {0.4, 0.45, "dcl"}, {0.45, 0.5, "d"}, {0.5, 0.6, "ix"}, {0.6, 0.7, "sil"}}),
-                                   16000, "a.TextGrid");
+  const LabelTier t = tier({{0.0, 0.1, ""}, {0.1, 0.2, "HH"}, {0.2, 0.35, "AH0"}, {0.35, 0.4, "pau"},
+                            {0.4, 0.45, "dcl"}, {0.45, 0.5, "d"}, {0.5, 0.6, "ix"}, {0.6, 0.7, "sil"}});
+  const auto segments = segments_of(t, LabelSet::timit, "a.TextGrid");
+  const auto p = timed_phones(segments, SampleRate{16000}, "a.TextGrid");
   ASSERT_EQ(p.size(), 7u);
   EXPECT_EQ(p[0].phone, Phone::SIL);
   EXPECT_EQ(p[1].phone, Phone::HH);
@@ -27,43 +27,58 @@ TEST(AlignmentPhones, ReadsArpabetTimitAndGaps) {
   EXPECT_EQ(p[4].phone, Phone::D) << "closure + release merged";
   EXPECT_EQ(p[4].start_sample, 6400);
   EXPECT_EQ(p[4].end_sample, 8000);
+  EXPECT_DOUBLE_EQ(segments[4].start_s, 0.4);
+  EXPECT_DOUBLE_EQ(segments[4].release_s, 0.45) << "the joined segment keeps where its release starts";
   EXPECT_EQ(p[5].phone, Phone::IH);
   EXPECT_EQ(p[6].end_sample, 11200);
 }
 
+TEST(AlignmentPhones, CompoundsSplitAndAspirationJoins) {
+  // EMU ae: "k H" is one K with its aspiration; "db" is D then B in halves of its interval.
+  const LabelTier t = tier({{0.0, 0.1, "k"}, {0.1, 0.14, "H"}, {0.14, 0.24, "db"}});
+  const auto p = timed_phones(segments_of(t, LabelSet::emu_ae, "e.lab"), SampleRate{10000}, "e.lab");
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p[0].phone, Phone::K);
+  EXPECT_EQ(p[0].end_sample, 1400);
+  EXPECT_EQ(p[1].phone, Phone::D);
+  EXPECT_EQ(p[1].end_sample, 1900);
+  EXPECT_EQ(p[2].phone, Phone::B);
+  EXPECT_EQ(p[2].start_sample, 1900);
+}
+
 TEST(AlignmentPhones, BadLabelNamesFileIntervalAndLabel) {
   try {
-    phones_from_tier(tier({{0.0, 0.1, "sil"}, {0.1, 0.2, "xyz"}}), 16000, "b.lab");
+    (void)segments_of(tier({{0.0, 0.1, "sil"}, {0.1, 0.2, "xyz"}}), LabelSet::arpabet, "b.lab");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_EQ(e.rule(), "phone-label");
-    const std::string what = e.what();
-    EXPECT_NE(what.find("b.lab"), std::string::npos) << what;
-    EXPECT_NE(what.find("interval 2"), std::string::npos) << what;
-    EXPECT_NE(what.find("'xyz'"), std::string::npos) << what;
+    EXPECT_EQ(e.rule(), "alignment-unknown-label");
+    EXPECT_STREQ(e.what(), "b.lab: alignment-unknown-label: interval 2 (0.1 to 0.2 s) of tier \"phones\": \"xyz\" is "
+                           "not an ARPAbet label (--phone-set names another set)");
   }
 }
 
-TEST(AlignmentPhones, FindsThePhoneTier) {
-  Alignment a;
-  a.tiers.push_back(tier({{0, 1, "hello"}}, "words"));
-  EXPECT_EQ(phone_tier(a), &a.tiers[0]) << "no phone tier: the first interval tier";
-  a.tiers.push_back(tier({{0, 1, "sil"}}, "Phones"));
-  EXPECT_EQ(phone_tier(a), &a.tiers[1]);
-  EXPECT_EQ(phone_tier(Alignment{}), nullptr);
-  // A .lab file's tier works the same.
-  const LabFile lab = read_lab("0 1000000 sil\n1000000 2500000 m\n2500000 4000000 aa\n", "c.lab");
-  const auto p = phones_from_tier(to_tier(lab, "phones"), 22050, "c.lab");
+TEST(AlignmentPhones, ALabFileReadsTheSameWay) {
+  const std::string lab = "0 1000000 sil\n1000000 2500000 m\n2500000 4000000 aa\n";
+  const AlignmentFile f = read_alignment_file(lab, "c.lab", {});
+  const auto p = timed_phones(f.segments, SampleRate{22050}, "c.lab");
   ASSERT_EQ(p.size(), 3u);
   EXPECT_EQ(p[1].phone, Phone::M);
-  EXPECT_EQ(p[2].end_sample, to_sample(0.4, 22050));
+  EXPECT_EQ(p[2].end_sample, to_sample(0.4, SampleRate{22050}));
 }
 
-}  // namespace
-}  // namespace fapcast
-
-namespace fapcast {
-namespace {
+TEST(AlignmentPhones, ATimeOffTheSampleGridIsTheFilesFault) {
+  std::vector<AlignedSegment> segments(1);
+  segments[0].end_s = 1e300;
+  segments[0].phone = Phone::AA;
+  segments[0].label = "aa";
+  try {
+    (void)timed_phones(segments, SampleRate{16000}, "huge.lab");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.rule(), "time-off-sample-grid");
+    EXPECT_STREQ(e.what(), "huge.lab: time-off-sample-grid: segment 1 'aa': time 1e+300 s is off the sample grid of 16000 Hz");
+  }
+}
 
 TEST(FitPhonesToAudio, CutsWithinToleranceRefusesBeyond) {
   std::vector<TimedPhone> p{{Phone::SIL, 0, 100}, {Phone::AA, 100, 200},

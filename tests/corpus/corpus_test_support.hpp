@@ -29,7 +29,7 @@ inline std::uint64_t test_seed() {
 }
 
 inline std::string reproduce_hint(std::uint64_t seed) {
-  return "reproduce: FAPCAST_SEED=" + std::to_string(seed) + " fapcast_synth_tests --gtest_filter=<this test>";
+  return "reproduce: FAPCAST_SEED=" + std::to_string(seed) + " fapcast_corpus_tests --gtest_filter=<this test>";
 }
 
 // A random label: ASCII, quotes, IPA, emoji and (for TextGrid) line breaks.

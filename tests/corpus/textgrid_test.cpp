@@ -149,10 +149,10 @@ TEST(TextGrid, SyntheticMarkSurvivesTheFile) {
 }
 
 TEST(LabelTier, SecondsToSamples) {
-  EXPECT_EQ(to_sample(0.31, 16000), 4960);
-  EXPECT_EQ(to_sample(1.0 / 32000, 16000), 1);  // half a sample rounds away from zero
-  EXPECT_EQ(to_sample(-0.5, 16000), -8000);
-  EXPECT_THROW(to_sample(1e300, 16000), std::out_of_range);
+  EXPECT_EQ(to_sample(0.31, SampleRate{16000}), 4960);
+  EXPECT_EQ(to_sample(1.0 / 32000, SampleRate{16000}), 1);  // half a sample rounds away from zero
+  EXPECT_EQ(to_sample(-0.5, SampleRate{16000}), -8000);
+  EXPECT_THROW(to_sample(1e300, SampleRate{16000}), std::out_of_range);
 }
 
 }  // namespace

@@ -12,17 +12,23 @@
 namespace fapcast {
 namespace {
 
-TEST(FbaArithmeticCoder, SegmentsAndRawFieldsInterleaveEvenWithStuffingInTheLookahead) {
+class FbaSegments : public testing::TestWithParam<FbaStuffing> {};
+
+// In either stuffing reading (spec/fba.md §2): segments and raw fields interleave, and segment
+// ends are counted in consumed bits, whatever stuffing (real, or only apparent to a reader that
+// counts on into the look-ahead) falls in the 14 bits given back.
+TEST_P(FbaSegments, SegmentsAndRawFieldsInterleaveEvenWithStuffingInTheLookahead) {
   const std::uint64_t seed = test::fba_seed();
-  SCOPED_TRACE(test::reproduce(seed, "FbaArithmeticCoder.*"));
+  SCOPED_TRACE(test::reproduce(seed, "*FbaSegments.*"));
   std::mt19937_64 rng(seed);
   int stuffed_in_lookahead = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const int size = 1 + static_cast<int>(rng() % 1200);
     std::vector<std::vector<int>> symbols(3);
     std::vector<int> zeros(3);
-    FbaBitWriter writer;
-    FrequencyModel enc_model(size);
+    FbaBitWriter writer(GetParam());
+    const int increment = 1 << (trial % 4);
+    FrequencyModel enc_model(size, increment);
     for (int seg = 0; seg < 3; ++seg) {
       ArithmeticEncoder ac(writer);
       const int count = static_cast<int>(rng() % 6);
@@ -38,9 +44,9 @@ TEST(FbaArithmeticCoder, SegmentsAndRawFieldsInterleaveEvenWithStuffingInTheLook
       writer.put_bit(1);
     }
     const std::uint64_t written = fba_bit_count(writer.position());
-    writer.align();
-    FbaBitReader reader(writer.bytes());
-    FrequencyModel dec_model(size);
+    writer.stuff_to_start_code();
+    FbaBitReader reader(writer.bytes(), GetParam());
+    FrequencyModel dec_model(size, increment);
     for (int seg = 0; seg < 3; ++seg) {
       ArithmeticDecoder ad(reader);
       for (const int s : symbols[static_cast<std::size_t>(seg)]) ASSERT_EQ(ad.decode(dec_model), s) << "trial " << trial;
@@ -54,10 +60,30 @@ TEST(FbaArithmeticCoder, SegmentsAndRawFieldsInterleaveEvenWithStuffingInTheLook
     EXPECT_EQ(fba_bit_count(reader.position()), written);  // one bit count, both sides
     ASSERT_TRUE(dec_model == enc_model);
   }
-  EXPECT_GT(stuffed_in_lookahead, 0) << "the case the consumed-bit count exists for was never met";
+  // Continuous reading: real stuffed bits fall in the look-ahead (the bits after a segment are
+  // counted on); reference reading: the next segment's count starts afresh, so only a reader
+  // counting on into the raw bits could see one there (FbaBits.MissingStuffedBitIsAnError).
+  if (GetParam() == FbaStuffing::kContinuous) {
+    EXPECT_GT(stuffed_in_lookahead, 0) << "the case the consumed-bit count exists for was never met";
+  }
 }
 
+INSTANTIATE_TEST_SUITE_P(Readings, FbaSegments, testing::Values(FbaStuffing::kReference, FbaStuffing::kContinuous),
+                         [](const auto& info) { return info.param == FbaStuffing::kReference ? "Reference" : "Continuous"; });
+
 TEST(FbaArithmeticCoder, ModelsHalveAtTheTotalLimitAndStayUsable) {
+  FrequencyModel one(2);  // the standard's +1: the total reaches 16383 exactly, then halves
+  for (int i = 0; i < 16381; ++i) one.update(0);
+  EXPECT_EQ(one.total(), 16383u);
+  one.update(1);  // (16382 + 1) / 2 + (1 + 1) / 2 = 8192, then + 1
+  EXPECT_EQ(one.total(), 8193u);
+  EXPECT_EQ(one.cumulative(1), 2u);
+  FrequencyModel eight(5, 8);
+  for (int i = 0; i < 5000; ++i) {
+    eight.update(i % 5);
+    ASSERT_LE(eight.total(), FrequencyModel::kMaxTotal);
+  }
+  EXPECT_EQ(eight.increment(), 8);
   FrequencyModel m(3);
   for (int i = 0; i < 40000; ++i) m.update(i % 7 == 0 ? 2 : 0);
   EXPECT_LT(m.cumulative(0), FrequencyModel::kMaxTotal + 1);
@@ -146,9 +172,42 @@ TEST(FbaBits, ReaderGivesZerosPastTheEndAndTheErrorSticks) {
 
 TEST(FbaBits, MissingStuffedBitIsAnError) {
   const std::vector<std::uint8_t> zeros{0, 0, 0, 0x80};  // 24 zeros: the 23rd should be a 1
-  FbaBitReader r(zeros);
+  FbaBitReader r(zeros, FbaStuffing::kContinuous);
   r.get(24);
   EXPECT_EQ(r.error(), fba_errc::stuffing_bit_missing);
+  // The reference reading: outside a segment nothing is stuffed; inside, the error stands only
+  // if the bit after the 22 zeros is one the encoder wrote (not given back at the segment end).
+  FbaBitReader raw(zeros, FbaStuffing::kReference);
+  EXPECT_EQ(raw.get(24), 0u);
+  EXPECT_FALSE(raw.error());
+  for (const int give_back : {0, 1}) {
+    FbaBitReader seg(zeros, FbaStuffing::kReference);
+    seg.begin_segment();
+    seg.lookahead_bits(16);
+    seg.lookahead_bits(7);  // payload bits 17..23: the 23rd is a 0 where a stuffed 1 belongs
+    seg.end_segment(give_back);
+    EXPECT_EQ(static_cast<bool>(seg.error()), give_back == 0) << "give back " << give_back;
+    EXPECT_EQ(seg.position().raw_bits, 23u - static_cast<unsigned>(give_back));
+  }
+}
+
+// The writer in both readings: reference stuffs only inside segments, from each segment's start,
+// before the coded bit that would be the 23rd zero; continuous stuffs everywhere, at once.
+TEST(FbaBits, WritersStuffWhereTheirReadingSays) {
+  FbaBitWriter ref(FbaStuffing::kReference), cont(FbaStuffing::kContinuous);
+  for (FbaBitWriter* w : {&ref, &cont}) {
+    w->put(0, 10);  // a raw field of zeros
+    w->begin_segment();
+    w->put(0, 22);
+    w->end_segment();  // 22 zeros end the segment: nothing follows them in it
+    w->begin_segment();
+    w->put(0, 23);
+    w->end_segment();
+  }
+  EXPECT_EQ(ref.stuffed_bits(), (std::vector<std::uint64_t>{54}));  // before the 23rd zero of segment 2
+  EXPECT_EQ(cont.stuffed_bits(), (std::vector<std::uint64_t>{22, 45}));  // counting the raw field's zeros
+  EXPECT_EQ(ref.position().raw_bits, 10u + 22 + 23 + 1);
+  EXPECT_EQ(cont.position().raw_bits, 10u + 22 + 23 + 2);
 }
 
 }  // namespace

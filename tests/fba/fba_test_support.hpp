@@ -21,7 +21,7 @@ inline std::uint64_t fba_seed(std::uint64_t fallback = 20261122) {
 // What to run to see a random failure again.
 inline std::string reproduce(std::uint64_t seed, const std::string& filter) {
   return "reproduce: FAPCAST_SEED=" + std::to_string(seed) +
-         " build/dev/tests/fapcast_codec_tests --gtest_filter='" + filter + "'";
+         " build/dev/tests/fapcast_fba_tests --gtest_filter='" + filter + "'";
 }
 
 // A smooth random walk per masked FAP (a low-passed random walk), values within +/-limit.
@@ -37,6 +37,25 @@ inline std::vector<FapFrame> smooth_track(std::mt19937_64& rng, const FapMask& m
       value[n] = std::clamp(0.98 * value[n] + velocity[n], -double(limit), double(limit));
       f.set(n, static_cast<std::int32_t>(std::lround(value[n])));
     }
+  }
+  return out;
+}
+
+// A random track: a random mask (FAP 1 and 2 included at random), smooth low-level values within
+// +/-limit, random viseme and expression fields, the mask the same in every frame.
+inline std::vector<FapFrame> random_track(std::mt19937_64& rng, std::size_t frames, int limit) {
+  FapMask mask;
+  for (int n = 1; n <= kFapCount; ++n) mask.set(n, rng() % 3 == 0);
+  std::vector<FapFrame> out = smooth_track(rng, mask, frames, limit);
+  for (FapFrame& f : out) {
+    f.mask = mask;
+    if (mask.test(1))
+      f.viseme = {static_cast<std::uint8_t>(rng() % 15), static_cast<std::uint8_t>(rng() % 15),
+                  static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0};
+    if (mask.test(2))
+      f.expression = {static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64),
+                      static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0,
+                      rng() % 2 == 0};
   }
   return out;
 }

@@ -16,7 +16,7 @@ namespace {
 
 std::string reproduce(std::uint64_t seed) {
   return "reproduce: FAPCAST_SEED=" + std::to_string(seed) +
-         " build/dev/tests/fapcast_synth_tests --gtest_filter='" +
+         " build/dev/tests/fapcast_pipeline_tests --gtest_filter='" +
          ::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name() + ".*'";
 }
 

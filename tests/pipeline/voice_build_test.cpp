@@ -200,6 +200,16 @@ TEST_F(VoiceBuild, RefusesBadCorporaNamingFileAndRule) {
     fs::remove_all(dir);
   }
   {
+    // A time no sample count holds: the alignment's fault (the rule `animate` uses, exit 1).
+    const fs::path dir = copy_corpus("huge");
+    write_file_atomically(dir / "utt0011.TextGrid", "File type = \"ooTextFile\"\nObject class = \"TextGrid\"\n\n0\n1e300\n"
+                                                    "<exists>\n1\n\"IntervalTier\"\n\"phones\"\n0\n1e300\n1\n0\n1e300\n\"sil\"\n");
+    const std::string message = refusal(dir);
+    EXPECT_NE(message.find("utt0011.TextGrid: time-off-sample-grid: its end: time 1e+300 s is off the sample grid of 60 Hz"),
+              std::string::npos) << message;
+    fs::remove_all(dir);
+  }
+  {
     const fs::path dir = copy_corpus("manifest");
     write_file_atomically(dir / "manifest.json", "{\"utterances\": 3}");
     EXPECT_NE(refusal(dir).find("manifest.json: corpus-manifest: "), std::string::npos) << refusal(dir);
@@ -343,7 +353,7 @@ TEST(VoiceCorpusBadCorpora, AreRefusedWithTheGoldenMessages) {
   }
   if (regenerate) {
     std::ofstream(root / "EXPECTED.txt") << "# Golden refusals of the named bad corpora (regenerate: FAPCAST_REGENERATE=1 "
-                                            "fapcast_synth_tests --gtest_filter=*BadCorpora*)\n"
+                                            "fapcast_pipeline_tests --gtest_filter=*BadCorpora*)\n"
                                          << regenerated;
   }
   EXPECT_EQ(golden.size(), names.size());

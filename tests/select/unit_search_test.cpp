@@ -363,7 +363,7 @@ TEST(UnitSearch, PrefersOneLongUnitOverPieces) {
   const Toy toy = make_toy({{0, 1, 5}, {3, 0, 1, 2, 4}, {2, 4, 3}}, rng);
   const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
   const std::vector<VisemeClass> targets = Vs({0, 1, 2, 4});
-  const SearchResult r = unit_search(g, targets);
+  const SearchResult r = unit_search(g, targets, {0.0, {}});  // fewest units alone
   ASSERT_EQ(r.units.size(), 1u);
   EXPECT_EQ(r.units[0], (Unit{4, 0, 4}));
   EXPECT_EQ(r.cost, 1.0);
@@ -388,7 +388,7 @@ TEST(UnitSearch, UncoverableVisemeIsNamed) {
   const PhoneGraph g(toy.states);
   const std::vector<VisemeClass> targets = Vs({0, 7});  // class 7: sibilant, never recorded
   try {
-    unit_search(g, targets);
+    unit_search(g, targets, {0.0, {}});
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("(target phone 1)"), std::string::npos) << e.what();
@@ -420,7 +420,7 @@ TEST(UnitSearch, HardJoinWhenADivisemeWasNeverRecorded) {
   const Toy toy = make_toy({{0, 1}, {2, 3}}, rng);
   const PhoneGraph g(toy.states);
   const std::vector<VisemeClass> targets = Vs({1, 3});  // "1 3" never occurs; no /3/ follows a /1/
-  const SearchResult r = unit_search(g, targets);
+  const SearchResult r = unit_search(g, targets, {0.0, {}});  // a graph without join features
   EXPECT_EQ(r.stats.hard_joins, 1u);
   EXPECT_EQ(r.states, (std::vector<StateId>{1, 3}));
 }

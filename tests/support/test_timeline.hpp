@@ -14,7 +14,7 @@ inline constexpr std::int32_t kRate = 22050;
 
 // Consecutive phones, each (symbol, duration_ms), starting at sample 0.
 inline PhoneTimeline timeline(const std::vector<std::pair<std::string, int>>& phones) {
-  PhoneTimeline t{kRate, {}};
+  PhoneTimeline t{SampleRate{kRate}, {}};
   std::int64_t at = 0;
   for (const auto& [phone, ms] : phones) {
     const std::int64_t end = at + std::int64_t{ms} * kRate / 1000;
@@ -26,7 +26,7 @@ inline PhoneTimeline timeline(const std::vector<std::pair<std::string, int>>& ph
 
 // Centre of phone i in seconds.
 inline double centre_s(const PhoneTimeline& t, std::size_t i) {
-  return 0.5 * static_cast<double>(t.phones[i].start_sample + t.phones[i].end_sample) / t.sample_rate_hz;
+  return 0.5 * static_cast<double>(t.phones[i].start_sample + t.phones[i].end_sample) / static_cast<double>(t.sample_rate.hz);
 }
 
 // The random seed for randomised tests: $FAPCAST_SEED, default 20061.

@@ -17,6 +17,7 @@ namespace fapcast {
 namespace {
 
 constexpr std::int64_t kRate = 22050;
+constexpr SampleRate kSampleRate{kRate};
 
 // Consecutive phones of `ms` milliseconds each from sample 0.
 std::vector<TimedPhone> phones(const std::vector<std::pair<Phone, int>>& spec, std::int64_t rate = kRate) {
@@ -41,21 +42,21 @@ std::string rule_of(const std::function<void()>& f) {
 
 TEST(VoiceFrameGrid, NoDriftOverAnHour) {
   const std::int64_t hour = 3600 * kVoiceFramesPerSecond;
-  EXPECT_EQ(frame_to_sample(hour, kVoiceFrameRate, 22050), 3600 * 22050);
-  EXPECT_EQ(frame_to_sample(hour, kVoiceFrameRate, 44100), 3600 * 44100);
-  EXPECT_EQ(first_frame_at(3600 * 22050, kVoiceFrameRate, 22050), hour);
+  EXPECT_EQ(frame_to_sample(hour, kVoiceFrameRate, SampleRate{22050}), 3600 * 22050);
+  EXPECT_EQ(frame_to_sample(hour, kVoiceFrameRate, SampleRate{44100}), 3600 * 44100);
+  EXPECT_EQ(first_frame_at(3600 * 22050, kVoiceFrameRate, SampleRate{22050}), hour);
   // 22050 / 60 = 367.5 samples per frame: odd frames round up, never accumulate.
-  EXPECT_EQ(frame_to_sample(hour + 1, kVoiceFrameRate, 22050), 3600 * 22050 + 368);
-  EXPECT_EQ(frame_to_sample(10 * hour + 3, kVoiceFrameRate, 22050), 36000 * 22050 + 1103);
+  EXPECT_EQ(frame_to_sample(hour + 1, kVoiceFrameRate, SampleRate{22050}), 3600 * 22050 + 368);
+  EXPECT_EQ(frame_to_sample(10 * hour + 3, kVoiceFrameRate, SampleRate{22050}), 36000 * 22050 + 1103);
 }
 
 TEST(PlaceOnVoiceGrid, ContiguousFromFrameZeroWithHolds) {
   const auto p = phones({{Phone::SIL, 100}, {Phone::M, 80}, {Phone::AA, 150}, {Phone::F, 90}, {Phone::SIL, 100}});
-  const TargetTimeline t = place_on_voice_grid(p, kRate);
+  const TargetTimeline t = place_on_voice_grid(p, kSampleRate);
   ASSERT_EQ(t.phones.size(), 5u);
   EXPECT_EQ(t.phones.front().first_frame, 0);
   for (std::size_t i = 1; i < t.phones.size(); ++i) EXPECT_EQ(t.phones[i].first_frame, t.phones[i - 1].end_frame);
-  EXPECT_EQ(t.frame_count(), first_frame_at(p.back().end_sample, kVoiceFrameRate, kRate));
+  EXPECT_EQ(t.frame_count(), first_frame_at(p.back().end_sample, kVoiceFrameRate, SampleRate{kRate}));
   EXPECT_TRUE(t.phones[1].hold);   // m
   EXPECT_FALSE(t.phones[2].hold);  // aa
   EXPECT_TRUE(t.phones[3].hold);   // f
@@ -66,7 +67,7 @@ TEST(PlaceOnVoiceGrid, ContiguousFromFrameZeroWithHolds) {
 
 TEST(PlaceOnVoiceGrid, GapsBecomeSilenceAndTheAudioTailToo) {
   std::vector<TimedPhone> p{{Phone::AA, 2205, 4410}, {Phone::T, 6615, 8820}};
-  const TargetTimeline t = place_on_voice_grid(p, kRate, 22050);
+  const TargetTimeline t = place_on_voice_grid(p, kSampleRate, 22050);
   ASSERT_EQ(t.phones.size(), 5u);  // sil aa sil t sil
   EXPECT_EQ(t.phone_of[0], Phone::SIL);
   EXPECT_EQ(t.phone_of[2], Phone::SIL);
@@ -82,7 +83,7 @@ TEST(PlaceOnVoiceGrid, ZeroAndSubFrameDurationsAreDropped) {
                             {Phone::T, 2206, 2206},   // zero
                             {Phone::D, 2206, 2500},   // 13 ms, no frame instant
                             {Phone::IY, 2500, 4410}};
-  const TargetTimeline t = place_on_voice_grid(p, kRate);
+  const TargetTimeline t = place_on_voice_grid(p, kSampleRate);
   ASSERT_EQ(t.phones.size(), 2u);
   EXPECT_EQ(t.dropped, 2u);
   EXPECT_EQ(t.phones[1].first_frame, t.phones[0].end_frame);
@@ -91,19 +92,19 @@ TEST(PlaceOnVoiceGrid, ZeroAndSubFrameDurationsAreDropped) {
 
 TEST(PlaceOnVoiceGrid, RefusesReversedOverlappingAndNegativePhones) {
   using P = std::vector<TimedPhone>;
-  EXPECT_EQ(rule_of([] { place_on_voice_grid(P{{Phone::AA, 100, 50}}, kRate); }), "phone-reversed");
-  EXPECT_EQ(rule_of([] { place_on_voice_grid(P{{Phone::AA, -5, 50}}, kRate); }), "phone-negative-start");
+  EXPECT_EQ(rule_of([] { place_on_voice_grid(P{{Phone::AA, 100, 50}}, kSampleRate); }), "phone-reversed");
+  EXPECT_EQ(rule_of([] { place_on_voice_grid(P{{Phone::AA, -5, 50}}, kSampleRate); }), "phone-negative-start");
   EXPECT_EQ(rule_of([] {
-              place_on_voice_grid(P{{Phone::AA, 0, 500}, {Phone::T, 400, 900}}, kRate);
+              place_on_voice_grid(P{{Phone::AA, 0, 500}, {Phone::T, 400, 900}}, kSampleRate);
             }), "phone-overlap");
   try {
-    place_on_voice_grid(P{{Phone::AA, 0, 500}, {Phone::T, 400, 900}}, kRate, 0, "x.lab");
+    place_on_voice_grid(P{{Phone::AA, 0, 500}, {Phone::T, 400, 900}}, kSampleRate, 0, "x.lab");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("x.lab"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("phone 1 'T'"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(place_on_voice_grid(P{}, 0), std::invalid_argument);
+  EXPECT_THROW(place_on_voice_grid(P{}, SampleRate{0}), std::invalid_argument);
 }
 
 TEST(CoveredViseme, FallsBackToTheNearestRecordedShape) {
@@ -126,7 +127,7 @@ TEST(Synthesize, ReachesTheTargetShapesAndKeepsClosures) {
   SynthesisOptions options;
   options.search.beta = 0.1;
   options.search.max_active = 32;
-  const SynthesizedTrack s = synthesize(*g.graph, g.frames, p, kRate, 0, options);
+  const SynthesizedTrack s = synthesize(*g.graph, g.frames, p, kSampleRate, 0, options);
   const auto& t = s.timeline.phones;
   ASSERT_EQ(s.pca_frames.rows(), s.timeline.frame_count());
   ASSERT_EQ(s.pca_frames.cols(), 3);
@@ -151,7 +152,7 @@ TEST(Synthesize, SubstitutesMissingClassesAndCountsThem) {
   using V = VisemeClass;
   const auto g = test::synthetic_voice_graph(20, 10, 4, 2, 9, 0.0f, {V::kSilence, V::kAlveolar, V::kOpenUnrounded});
   const auto p = phones({{Phone::SIL, 100}, {Phone::L, 100}, {Phone::AA, 100}, {Phone::SIL, 100}});
-  const SynthesizedTrack s = synthesize(*g.graph, g.frames, p, kRate);
+  const SynthesizedTrack s = synthesize(*g.graph, g.frames, p, kSampleRate);
   EXPECT_EQ(s.substituted, 1u);
   EXPECT_EQ(s.timeline.phones[1].viseme, V::kLateral) << "the timeline keeps the phone asked for";
   const auto mid = (s.timeline.phones[1].first_frame + s.timeline.phones[1].end_frame) / 2;
@@ -160,11 +161,11 @@ TEST(Synthesize, SubstitutesMissingClassesAndCountsThem) {
 
 TEST(Synthesize, EmptyPhonesGiveAnEmptyTrackAndBadPhonesAnError) {
   const auto g = test::synthetic_voice_graph(5, 10, 4, 2, 3);
-  const SynthesizedTrack s = synthesize(*g.graph, g.frames, {}, kRate);
+  const SynthesizedTrack s = synthesize(*g.graph, g.frames, {}, kSampleRate);
   EXPECT_EQ(s.pca_frames.rows(), 0);
   EXPECT_EQ(s.tongue.rows(), 0);
   std::vector<TimedPhone> bad{{Phone::AA, 10, 5}};
-  EXPECT_THROW(synthesize(*g.graph, g.frames, bad, kRate), InputError);
+  EXPECT_THROW(synthesize(*g.graph, g.frames, bad, kSampleRate), InputError);
 }
 
 TEST(Tongue, TableMatchesSpec) {
@@ -188,7 +189,7 @@ TEST(Tongue, TableMatchesSpec) {
 
 // Tongue values at the middle of each target phone.
 Eigen::MatrixXf tongue_at_centres(const std::vector<std::pair<Phone, int>>& spec) {
-  const TargetTimeline t = place_on_voice_grid(phones(spec), kRate);
+  const TargetTimeline t = place_on_voice_grid(phones(spec), kSampleRate);
   const Eigen::MatrixXf track = tongue_track(t.phones, t.phone_of);
   Eigen::MatrixXf out(static_cast<Eigen::Index>(t.phones.size()), 5);
   for (std::size_t i = 0; i < t.phones.size(); ++i)
@@ -219,7 +220,7 @@ TEST(Tongue, IsTheDominanceWeightedMeanOfTheTargets) {
   const TargetTimeline t = place_on_voice_grid(
       phones({{Phone::SIL, 30}, {Phone::T, 20}, {Phone::IY, 60}, {Phone::K, 25}, {Phone::SIL, 2000},
               {Phone::R, 70}, {Phone::UW, 120}, {Phone::S, 40}, {Phone::SIL, 40}}),
-      kRate);
+      kSampleRate);
   const Eigen::MatrixXf track = tongue_track(t.phones, t.phone_of);
   ASSERT_EQ(track.rows(), t.frame_count());
   for (Eigen::Index n = 0; n < track.rows(); ++n) {
@@ -244,7 +245,7 @@ TEST(Tongue, IsTheDominanceWeightedMeanOfTheTargets) {
 
 TEST(Tongue, CoarticulatesAndFollowsTheTimeline) {
   // Anticipation: the tip is already rising in the vowel just before /t/.
-  const TargetTimeline t = place_on_voice_grid(phones({{Phone::AA, 300}, {Phone::T, 80}, {Phone::AA, 300}}), kRate);
+  const TargetTimeline t = place_on_voice_grid(phones({{Phone::AA, 300}, {Phone::T, 80}, {Phone::AA, 300}}), kSampleRate);
   const Eigen::MatrixXf track = tongue_track(t.phones, t.phone_of);
   const auto before = t.phones[1].first_frame - 1, early = t.phones[0].first_frame + 2;
   EXPECT_GT(track(before, 1), track(early, 1) + 100.0f);

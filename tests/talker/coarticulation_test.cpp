@@ -120,7 +120,7 @@ TEST(Coarticulation, TongueAndJawFollowThePhones) {
 TEST(Coarticulation, RandomUtterancesAreContinuousAndInRange) {
   const auto seed = test::test_seed();
   SCOPED_TRACE("reproduce: FAPCAST_SEED=" + std::to_string(seed) +
-               " fapcast_synth_tests --gtest_filter='Coarticulation.*'");
+               " fapcast_talker_tests --gtest_filter='Coarticulation.*'");
   PortableRandom random(seed);
   const auto phones = articulation_phones();
   const ShapeMapper mapper(ict_face_model());
@@ -146,15 +146,15 @@ TEST(Coarticulation, RandomUtterancesAreContinuousAndInRange) {
 }
 
 TEST(Coarticulation, RefusesBadTimelines) {
-  EXPECT_THROW((void)coarticulate(PhoneTimeline{0, {}}), std::invalid_argument);
-  EXPECT_THROW((void)coarticulate(PhoneTimeline{16000, {{Phone::AA, 100, 100}}}), std::invalid_argument);
+  EXPECT_THROW((void)coarticulate(PhoneTimeline{SampleRate{0}, {}}), std::invalid_argument);
+  EXPECT_THROW((void)coarticulate(PhoneTimeline{SampleRate{16000}, {{Phone::AA, 100, 100}}}), std::invalid_argument);
   try {
-    (void)coarticulate(PhoneTimeline{16000, {{Phone::AA, 0, 100}, {Phone::P, 50, 150}}});
+    (void)coarticulate(PhoneTimeline{SampleRate{16000}, {{Phone::AA, 0, 100}, {Phone::P, 50, 150}}});
     FAIL();
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("phone 1 'P'"), std::string::npos) << e.what();
   }
-  EXPECT_EQ(coarticulate(PhoneTimeline{16000, {}}).frame_count(), 0);
+  EXPECT_EQ(coarticulate(PhoneTimeline{SampleRate{16000}, {}}).frame_count(), 0);
 }
 
 }  // namespace

@@ -104,7 +104,7 @@ TEST(ReferenceTalker, CorpusDirectoryHasManifestAndSaysSynthetic) {
     EXPECT_TRUE(files.count(stem + ".c3d")) << stem;
     EXPECT_TRUE(files.count(stem + ".TextGrid")) << stem;
     EXPECT_TRUE(std::filesystem::exists(dir / (stem + ".wav"))) << stem;
-    EXPECT_EQ(read_wav(dir / (stem + ".wav")).sample_rate_hz, u["sample_rate_hz"]);
+    EXPECT_EQ(read_wav(dir / (stem + ".wav")).sample_rate.hz, u["sample_rate_hz"]);
   }
   EXPECT_EQ(manifest["utterances"][2]["section"], "nonsense");
   std::filesystem::remove_all(dir);

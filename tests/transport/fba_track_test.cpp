@@ -38,10 +38,10 @@ TEST(FbaTrack, UnitsSitOnTheWavTimelineWithIntraAtThePeriod) {
   FbaEncoderOptions o;
   o.intra_period = 12;
   std::vector<MediaUnit> units;
-  ASSERT_FALSE(encode_track_units(seq, 44100, o, units));
+  ASSERT_FALSE(encode_track_units(seq, SampleRate{44100}, o, units));
   ASSERT_EQ(units.size(), 100u);
   for (std::size_t k = 0; k < units.size(); ++k) {
-    EXPECT_EQ(units[k].sample, frame_to_sample(static_cast<std::int64_t>(k), {30000, 1001}, 44100));
+    EXPECT_EQ(units[k].sample, frame_to_sample(static_cast<std::int64_t>(k), {30000, 1001}, SampleRate{44100}));
     EXPECT_EQ(units[k].intra, k % 12 == 0) << k;
   }
 }
@@ -64,11 +64,12 @@ TEST_P(FbaOverLossyRtp, DecodedFramesAreExactAndGapsHold) {
   o.fap_quant = 0;
   o.intra_period = 15;
   std::vector<MediaUnit> units;
-  ASSERT_FALSE(encode_track_units(seq, clock, o, units));
+  ASSERT_FALSE(encode_track_units(seq, SampleRate{clock}, o, units));
   ReceiverOptions ro;
-  ro.clock_rate = clock;
+  ro.clock_rate = SampleRate{clock};
+  ro.make_validator = make_fba_unit_validator;
   RtpStreamReceiver rx(ro);
-  ReceivedTrack track(clock, 100000);
+  ReceivedTrack track(SampleRate{clock}, 3600);
   RtpStreamIds ids{99, 65000, 4'294'000'000u};
   std::vector<ReceivedUnit> out;
   Clock::time_point now{};
@@ -76,7 +77,7 @@ TEST_P(FbaOverLossyRtp, DecodedFramesAreExactAndGapsHold) {
   std::vector<bool> sent(units.size());
   for (std::size_t i = 0; i < units.size(); ++i) {
     now += std::chrono::milliseconds(1);
-    if (i > 0 && drop(rng)) continue;  // frame 0 always arrives so positions are absolute
+    if (i > 1 && drop(rng)) continue;  // frames 0 and 1 arrive: the source is validated at 0
     sent[i] = true;
     std::vector<std::uint8_t> packet;
     ASSERT_FALSE(pack_animation_packet(units[i], i, ids, 96, packet));
@@ -115,17 +116,18 @@ TEST(ReceivedTrack, HostileTimestampsCannotGrowTheTrack) {
   FbaEncoderOptions o;
   o.intra_period = 1;
   std::vector<MediaUnit> units;
-  ASSERT_FALSE(encode_track_units(seq, 48000, o, units));
-  ReceivedTrack track(48000, 20);
+  ASSERT_FALSE(encode_track_units(seq, SampleRate{48000}, o, units));
+  ReceivedTrack track(SampleRate{48000}, 1.0);  // 60 frames at the stream's 60 fps
   for (std::size_t i = 0; i < units.size(); ++i) {
     ReceivedUnit u;
     u.bytes = units[i].bytes;
     u.intra = true;
-    u.timestamp = static_cast<std::uint32_t>(i * 0x3fffffffull);  // ~6 h apart
+    // Pairs 9.9 s apart (each confirms the jump before it would be filled), 6 h between pairs.
+    u.timestamp = static_cast<std::uint32_t>((i / 2) * 0x3fffffffull + (i % 2) * 475'000);
     (void)track.add(u);
   }
-  EXPECT_LE(track.sequence().frames.size(), 20u);
-  EXPECT_GT(track.stats().discontinuities, 0u);
+  EXPECT_LE(track.sequence().frames.size(), 60u);
+  EXPECT_TRUE(track.full());
   EXPECT_GT(track.stats().over_limit, 0u);
 }
 
@@ -133,10 +135,29 @@ class TrackFileRoundTrip : public testing::TestWithParam<const char*> {};
 TEST_P(TrackFileRoundTrip, WritesAndReadsBackTheSameFrames) {
   const auto seq = smooth_track(40, {25, 1});
   const std::string path = test::make_temp_dir("track") + "/t" + GetParam();
-  write_track_file(path, seq, 48000);
+  TrackWriteOptions options;
+  options.sample_rate = SampleRate{48000};
+  const auto notes = write_track_file(path, seq, options);
   const auto back = read_track_file(path);
   EXPECT_EQ(back.frames, seq.frames);
   EXPECT_EQ(back.rate, seq.rate);
+  if (std::string(GetParam()) == ".fba") {
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0], "standard FBA at fap_quant 0 (lossless)");
+  }
+}
+
+// An .fba track file is lossless whatever the values: the standard syntax where it reaches them,
+// else the fapcast profile, and the note says which.
+TEST(TrackFile, FbaIsLosslessBeyondTheStandardRange) {
+  auto seq = smooth_track(40, {25, 1});
+  seq.frames[7].set(47, 2955);  // tongue_roll as `say` makes it: beyond +/-1860
+  const std::string path = test::make_temp_dir("track") + "/wide.fba";
+  const auto notes = write_track_file(path, seq);
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("fapcast profile (lossless)"), std::string::npos) << notes[0];
+  EXPECT_NE(notes[0].find("frame 7, FAP 47 tongue_roll"), std::string::npos) << notes[0];
+  EXPECT_EQ(read_track_file(path).frames, seq.frames);
 }
 INSTANTIATE_TEST_SUITE_P(Formats, TrackFileRoundTrip, testing::Values(".fap", ".fba", ".json"),
                          [](const auto& info) { return std::string(info.param + 1); });

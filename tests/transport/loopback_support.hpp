@@ -8,6 +8,7 @@
 #include "fapcast/transport/udp_receiver.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <random>
 #include <set>
 #include <thread>
@@ -37,6 +38,8 @@ struct ReceiverThread {
   RtpStreamReceiver stream;
   std::vector<ReceivedUnit> units;
   std::uint64_t filtered = 0;
+  ReceiveReport report;
+  std::chrono::steady_clock::time_point ended;  // when run() returned
   std::thread thread;
 
   ReceiverThread(udp::endpoint listen, ReceiverOptions options,
@@ -47,7 +50,9 @@ struct ReceiverThread {
       ReceiveLimits limits;
       limits.idle_timeout = idle;
       limits.max_duration = std::chrono::seconds(30);
-      filtered = receiver.run(stream, limits, [this](ReceivedUnit&& u) { units.push_back(std::move(u)); });
+      report = receiver.run(stream, limits, [this](ReceivedUnit&& u) { units.push_back(std::move(u)); });
+      filtered = report.filtered;
+      ended = std::chrono::steady_clock::now();
     });
   }
   void join() {
@@ -58,12 +63,15 @@ struct ReceiverThread {
 
 // Forwards datagrams from its own port to `to`, dropping each with p_loss, sending a copy
 // again with p_dup, and holding one back behind its successor with p_swap. Remembers the
-// sequence numbers it forwarded.
+// sequence numbers it forwarded. `port` 0: any free port; `drop_first` datagrams are dropped
+// before any random choice (a lost start).
 class LossyShim {
  public:
-  LossyShim(udp::endpoint to, double p_loss, double p_dup, double p_swap, std::uint64_t seed)
-      : in_(io_, udp::endpoint(asio::ip::make_address("127.0.0.1"), 0)),
-        out_(io_, udp::v4()), to_(to), p_loss_(p_loss), p_dup_(p_dup), p_swap_(p_swap), rng_(seed) {}
+  LossyShim(udp::endpoint to, double p_loss, double p_dup, double p_swap, std::uint64_t seed,
+            std::uint16_t port = 0, int drop_first = 0)
+      : in_(io_, udp::endpoint(asio::ip::make_address("127.0.0.1"), port)),
+        out_(io_, udp::v4()), to_(to), p_loss_(p_loss), p_dup_(p_dup), p_swap_(p_swap), rng_(seed),
+        drop_first_(drop_first) {}
   udp::endpoint endpoint() const { return in_.local_endpoint(); }
   void start(std::chrono::milliseconds idle) {
     thread_ = std::thread([this, idle] { run(idle); });
@@ -100,6 +108,11 @@ class LossyShim {
           if (ec) return;
           last = std::chrono::steady_clock::now();
           Bytes p(buf.begin(), buf.begin() + static_cast<std::ptrdiff_t>(n));
+          if (drop_first_ > 0) {
+            --drop_first_;
+            ++dropped;
+            return;
+          }
           if (u(rng_) < p_loss_) {
             ++dropped;
             return;
@@ -138,6 +151,7 @@ class LossyShim {
   udp::endpoint to_;
   double p_loss_, p_dup_, p_swap_;
   std::mt19937_64 rng_;
+  int drop_first_;
   std::thread thread_;
 };
 

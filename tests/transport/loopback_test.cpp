@@ -1,6 +1,7 @@
 // RTP over real UDP sockets on loopback: exact delivery, recovery from loss, reordering and
 // duplication, multicast, audio with sender reports, hostile datagrams, and a tshark capture.
 #include "fapcast/transport/l16.hpp"
+#include "fapcast/transport/rtcp_compound.hpp"
 #include "fapcast/transport/rtcp_sender_report.hpp"
 #include "fapcast/transport/rtp_streamer.hpp"
 #include "fapcast/transport/udp_receiver.hpp"
@@ -88,10 +89,16 @@ TEST_P(LossyLoopback, RecoversAtTheNextIntraUnitAndCountsTheLoss) {
   std::set<int> got;
   for (const auto seq : shim.forwarded) got.insert(index_of(seq));
   ASSERT_FALSE(got.empty());
+  // The stream starts where the source was validated (two in sequence, RFC 3550 A.1); what was
+  // forwarded before that is discarded on probation or late.
+  ASSERT_TRUE(rx.stream.first_sequence());
+  const int start = index_of(static_cast<std::uint16_t>(*rx.stream.first_sequence()));
+  std::uint64_t before_start = 0;
+  for (const int i : got) before_start += i < start;
   std::vector<int> expected;
   std::uint64_t expected_lost = 0;
   bool need_intra = true;
-  for (int i = *got.begin(); i <= *got.rbegin(); ++i) {
+  for (int i = start; i <= *got.rbegin(); ++i) {
     if (!got.contains(i)) {
       ++expected_lost;
       need_intra = true;
@@ -112,8 +119,8 @@ TEST_P(LossyLoopback, RecoversAtTheNextIntraUnitAndCountsTheLoss) {
   const ReceiverStats& s = rx.stream.stats();
   EXPECT_EQ(delivered, expected) << s << "\n  reproduce: FAPCAST_SEED=" << seed;
   EXPECT_EQ(s.lost, expected_lost) << s;
-  EXPECT_EQ(s.duplicates, shim.duplicates_sent) << s;
-  EXPECT_EQ(s.late, 0u) << s;
+  EXPECT_LE(s.duplicates, shim.duplicates_sent) << s;  // a duplicate of a discarded one is late
+  EXPECT_LE(s.late, before_start + shim.duplicates_sent) << s;
   EXPECT_GT(shim.dropped, 0u);
   std::cerr << "[loss] " << c.name << ": dropped " << shim.dropped << ", swapped " << shim.swaps
             << ", duplicated " << shim.duplicates_sent << "; receiver: " << s << "\n";
@@ -130,7 +137,7 @@ TEST(Loopback, MulticastOnTheLoopbackInterface) {
   std::unique_ptr<ReceiverThread> rx;
   try {
     rx = std::make_unique<ReceiverThread>(udp::endpoint(group, 0), ReceiverOptions{},
-                                          ReceiverSocketOptions{std::nullopt, lo, std::nullopt});
+                                          ReceiverSocketOptions{std::nullopt, lo});
   } catch (const std::system_error& e) {
     GTEST_SKIP() << "cannot join 239.255.70.7 on 127.0.0.1 in this sandbox: " << e.what();
   }
@@ -191,12 +198,12 @@ TEST(Loopback, HostileDatagramsDoNotDisturbTheStream) {
   const ReceiverStats& s = rx.stream.stats();
   EXPECT_EQ(rx.units.size(), units.size()) << s;
   EXPECT_EQ(s.malformed, sent_hostile) << s;
-  EXPECT_EQ(s.foreign_ssrc, foreign) << s;
+  EXPECT_EQ(s.foreign_ssrc + s.probation_discarded, foreign) << s;  // the first one is on probation
   EXPECT_EQ(s.lost, 0u);
 }
 
 TEST(Loopback, SourceFilterRefusesOtherAddresses) {
-  ReceiverThread rx(loopback(), {}, ReceiverSocketOptions{asio::ip::make_address("127.0.0.2"), std::nullopt, std::nullopt});
+  ReceiverThread rx(loopback(), {}, ReceiverSocketOptions{asio::ip::make_address("127.0.0.2"), std::nullopt});
   rx.start(300ms);
   asio::io_context io;
   RtpStreamer streamer(io, rx.receiver.local_endpoint(), fixed_options(false));
@@ -232,16 +239,19 @@ std::vector<std::vector<std::uint8_t>> collect(asio::io_context& io, std::vector
                                                std::vector<std::vector<std::vector<std::uint8_t>>>& per_socket,
                                                std::chrono::milliseconds idle,
                                                std::array<std::uint32_t, 2> ssrcs) {
-  std::array<std::uint8_t, 2048> buf;
+  // One buffer per socket: the reactor reads every ready socket before any handler runs, so
+  // with one shared buffer a report arriving with an audio packet overwrote it.
+  std::vector<std::array<std::uint8_t, 2048>> buffers(sockets.size());
   auto last = std::chrono::steady_clock::now();
-  udp::endpoint from;
+  std::vector<udp::endpoint> from(sockets.size());
   std::vector<bool> pending(sockets.size(), false);
   for (;;) {
     for (std::size_t k = 0; k < sockets.size(); ++k)
       if (!pending[k]) {
         pending[k] = true;
-        sockets[k].async_receive_from(asio::buffer(buf), from, [&, k](const boost::system::error_code& ec, std::size_t n) {
+        sockets[k].async_receive_from(asio::buffer(buffers[k]), from[k], [&, k](const boost::system::error_code& ec, std::size_t n) {
           pending[k] = false;
+          const auto& buf = buffers[k];
           if (ec) return;
           const std::size_t at = k % 2 == 0 ? 8 : 4;
           if (n < at + 4) return;
@@ -270,7 +280,7 @@ TEST(Loopback, AudioAndSenderReportsShareOneClock) {
   if (sockets.empty()) GTEST_SKIP() << "could not bind four consecutive loopback ports";
   const auto base = sockets[0].local_endpoint();
   Audio audio;
-  audio.sample_rate_hz = 48000;
+  audio.sample_rate = SampleRate{48000};
   audio.channels = 2;
   for (int i = 0; i < 48000 * 2 / 5; ++i) audio.samples.push_back(static_cast<std::int16_t>(i * 37));  // 0.2 s
   const auto units = test::synthetic_units(12, 6, 800);  // 60 fps over 0.2 s
@@ -311,6 +321,7 @@ TEST(Loopback, AudioAndSenderReportsShareOneClock) {
   ASSERT_EQ(got[1].size(), got[3].size());
   SenderReport first_a;
   ASSERT_FALSE(parse_sender_report(got[1][0], first_a));
+  bool closing = false;
   for (std::size_t k = 0; k < got[1].size(); ++k) {
     SenderReport a, b;
     ASSERT_FALSE(parse_sender_report(got[1][k], a));
@@ -318,17 +329,29 @@ TEST(Loopback, AudioAndSenderReportsShareOneClock) {
     EXPECT_EQ(a.ssrc, animation_ssrc);
     EXPECT_EQ(b.ssrc, audio_ssrc);
     EXPECT_EQ(a.ntp, b.ntp);
-    // Compound packets: SR then SDES with the same CNAME on both streams.
+    // Compound packets: SR then SDES with the same CNAME on both streams (the SDES items after
+    // its SSRC, up to its length); the last one ends with each stream's own BYE.
     ASSERT_GT(got[1][k].size(), 36u);
     EXPECT_EQ(got[1][k][29], 202);
-    EXPECT_EQ(std::vector<std::uint8_t>(got[1][k].begin() + 36, got[1][k].end()),
-              std::vector<std::uint8_t>(got[3][k].begin() + 36, got[3][k].end()));
+    const auto sdes_end = [](const std::vector<std::uint8_t>& d) {
+      return std::min<std::size_t>(d.size(), 28 + 4 * (((std::size_t{d[30]} << 8) | d[31]) + 1));
+    };
+    EXPECT_EQ(std::vector<std::uint8_t>(got[1][k].begin() + 36, got[1][k].begin() + sdes_end(got[1][k])),
+              std::vector<std::uint8_t>(got[3][k].begin() + 36, got[3][k].begin() + sdes_end(got[3][k])));
+    RtcpCompound ca, cb;
+    ASSERT_FALSE(parse_rtcp_compound(got[1][k], ca));
+    ASSERT_FALSE(parse_rtcp_compound(got[3][k], cb));
+    // The closing reports (repeated, against loss) carry each stream's BYE; none before them.
+    if (!ca.bye_sources.empty()) closing = true;
+    EXPECT_EQ(ca.bye_sources, closing ? std::vector<std::uint32_t>{animation_ssrc} : std::vector<std::uint32_t>{});
+    EXPECT_EQ(cb.bye_sources, closing ? std::vector<std::uint32_t>{audio_ssrc} : std::vector<std::uint32_t>{});
     const std::uint32_t pos_a = a.rtp_timestamp - 4'294'960'000u;
     const std::uint32_t pos_b = b.rtp_timestamp - 7u;
     EXPECT_EQ(pos_a, pos_b);  // the same instant on both media clocks
     const auto elapsed = from_ntp(a.ntp) - from_ntp(first_a.ntp);
     EXPECT_NEAR(std::chrono::duration<double>(elapsed).count(), pos_a / 48000.0, 1e-6);
   }
+  EXPECT_TRUE(closing) << "no closing report with BYE";
   SenderReport last_a, last_b;
   ASSERT_FALSE(parse_sender_report(got[1].back(), last_a));
   ASSERT_FALSE(parse_sender_report(got[3].back(), last_b));

@@ -82,12 +82,12 @@ TEST(L16, NetworkByteOrderRoundTrip) {
 TEST(L16, PacketsFitOneDatagram) {
   for (const int channels : {1, 2, 6, 255})
     for (const std::int64_t rate : {8000, 44100, 48000, 96000, 192000}) {
-      const std::size_t n = l16_frames_per_packet(rate, channels);
+      const std::size_t n = l16_frames_per_packet(SampleRate{rate}, channels);
       EXPECT_GE(n, 1u);
       EXPECT_LE(n, static_cast<std::size_t>(rate / 100));
       EXPECT_LE(12 + 2 * n * static_cast<std::size_t>(channels), 1452u) << rate << " Hz x" << channels;
     }
-  EXPECT_EQ(l16_frames_per_packet(48000, 1), 480u);  // 10 ms
+  EXPECT_EQ(l16_frames_per_packet(SampleRate{48000}, 1), 480u);  // 10 ms
 }
 
 struct UrlCase {

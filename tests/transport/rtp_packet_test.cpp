@@ -133,10 +133,17 @@ TEST(RtpPacket, CorruptionsStayInBounds) {
 TEST(FbaPayload, IntraFlagRoundTripsAndEmptyPayloadIsRefused) {
   for (const bool intra : {false, true}) {
     Bytes payload;
-    pack_fba_payload(intra, Bytes{1, 2, 3}, payload);
+    pack_fba_payload(intra, false, Bytes{1, 2, 3}, payload);
     EXPECT_EQ(payload[0], intra ? 0x80 : 0x00);
     FbaPayload parsed;
     ASSERT_FALSE(parse_fba_payload(payload, parsed));
+    EXPECT_EQ(parsed.intra, intra);
+    EXPECT_FALSE(parsed.fapcast);
+    Bytes profiled;
+    pack_fba_payload(intra, true, Bytes{1, 2, 3}, profiled);
+    EXPECT_EQ(profiled[0], intra ? 0xC0 : 0x40);  // F: the fapcast profile
+    ASSERT_FALSE(parse_fba_payload(profiled, parsed));
+    EXPECT_TRUE(parsed.fapcast);
     EXPECT_EQ(parsed.intra, intra);
     EXPECT_EQ(Bytes(parsed.access_unit.begin(), parsed.access_unit.end()), (Bytes{1, 2, 3}));
   }

@@ -25,7 +25,7 @@ Bytes packet(std::uint16_t seq, bool intra, std::uint32_t ssrc = kSsrc, std::uin
   h.timestamp = 1000u + 800u * seq;
   h.ssrc = ssrc;
   Bytes payload;
-  pack_fba_payload(intra, Bytes{static_cast<std::uint8_t>(seq), static_cast<std::uint8_t>(seq >> 8)}, payload);
+  pack_fba_payload(intra, false, Bytes{static_cast<std::uint8_t>(seq), static_cast<std::uint8_t>(seq >> 8)}, payload);
   Bytes out;
   EXPECT_FALSE(pack_rtp(h, payload, out));
   return out;
@@ -107,17 +107,21 @@ TEST(RtpStreamReceiver, AGapIsHeldNoLongerThanTheBufferAllows) {
   o.reorder_delay = milliseconds(1000);
   Feed f(o);
   (void)f.offer(packet(0, true));
-  for (std::uint16_t s = 2; s < 6; ++s) (void)f.offer(packet(s, s == 5));
+  (void)f.offer(packet(1, false));  // a run of two: the source is validated
+  for (std::uint16_t s = 3; s < 7; ++s) (void)f.offer(packet(s, s == 6));
   EXPECT_LE(f.rx.held_packets(), 4u);
-  EXPECT_EQ(f.rx.stats().lost, 1u);  // the buffer filled: seq 1 declared lost without waiting
-  EXPECT_EQ(f.delivered(), (std::vector<std::uint16_t>{0, 5}));
+  EXPECT_EQ(f.rx.stats().lost, 1u);  // the buffer filled: seq 2 declared lost without waiting
+  EXPECT_EQ(f.delivered(), (std::vector<std::uint16_t>{0, 1, 6}));
 }
 
 TEST(RtpStreamReceiver, LocksOnOneSourceAndOnePayloadType) {
   Feed f;
   EXPECT_FALSE(f.offer(packet(0, true)));
-  EXPECT_EQ(f.offer(packet(1, true, kSsrc + 1)), make_error_code(RtpErrc::kForeignSsrc));
-  EXPECT_EQ(f.offer(packet(1, true, kSsrc, 97)), make_error_code(RtpErrc::kWrongPayloadType));
+  EXPECT_FALSE(f.rx.locked_ssrc());  // one packet is no run (RFC 3550 A.1 MIN_SEQUENTIAL 2)
+  EXPECT_FALSE(f.offer(packet(1, false)));
+  EXPECT_EQ(f.rx.locked_ssrc(), kSsrc);
+  EXPECT_EQ(f.offer(packet(2, true, kSsrc + 1)), make_error_code(RtpErrc::kForeignSsrc));
+  EXPECT_EQ(f.offer(packet(2, true, kSsrc, 97)), make_error_code(RtpErrc::kWrongPayloadType));
   EXPECT_EQ(f.rx.locked_ssrc(), kSsrc);
   ReceiverOptions given;
   given.ssrc = 42;
@@ -179,7 +183,7 @@ TEST(RtpStreamReceiver, HostileDatagramsAreBoundedAndCounted) {
   const ReceiverStats& s = f.rx.stats();
   EXPECT_EQ(s.datagrams, 50000u);
   EXPECT_EQ(s.datagrams, s.accepted + s.late + s.duplicates + s.malformed + s.foreign_ssrc +
-                             s.wrong_payload_type + s.sequence_jumps);
+                             s.wrong_payload_type + s.sequence_jumps + s.probation_discarded);
   EXPECT_EQ(f.rx.held_packets(), 0u);
 }
 

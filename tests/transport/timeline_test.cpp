@@ -24,20 +24,20 @@ FapSequence numbered_track(FrameRate rate, std::int64_t n) {
 }
 
 TEST(Timeline, FramesCarryTheirFirstSample) {
-  const auto timed = place_on_timeline(numbered_track({30000, 1001}, 5), 48000);
+  const auto timed = place_on_timeline(numbered_track({30000, 1001}, 5), SampleRate{48000});
   ASSERT_EQ(timed.size(), 5u);
   EXPECT_EQ(timed[0].sample, 0);
   EXPECT_EQ(timed[1].sample, 1602);  // 48000 * 1001 / 30000 = 1601.6
   EXPECT_EQ(timed[4].sample, 6406);  // 6406.4
   for (const auto& t : timed)
-    EXPECT_EQ(sample_to_frame(t.sample, {30000, 1001}, 48000), t.frame.value(3));
+    EXPECT_EQ(sample_to_frame(t.sample, {30000, 1001}, SampleRate{48000}), t.frame.value(3));
 }
 
 TEST(Timeline, DurationSampleConversionIsExactOverDays) {
   const std::int64_t two_days = 2 * 86400ll * 192000;
-  EXPECT_EQ(samples_to_duration(two_days, 192000), std::chrono::hours(48));
-  EXPECT_EQ(duration_to_samples(std::chrono::hours(48), 192000), two_days);
-  EXPECT_EQ(samples_to_duration(1, 48000), std::chrono::nanoseconds(20833));
+  EXPECT_EQ(samples_to_duration(two_days, SampleRate{192000}), std::chrono::hours(48));
+  EXPECT_EQ(duration_to_samples(std::chrono::hours(48), SampleRate{192000}), two_days);
+  EXPECT_EQ(samples_to_duration(1, SampleRate{48000}), std::chrono::nanoseconds(20833));
 }
 
 struct RateCase {

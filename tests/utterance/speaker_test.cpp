@@ -37,7 +37,7 @@ TEST(Speaker, OneSentenceIsItsAudioWithFramesAndWeightsAtTheOutputRate) {
   ASSERT_GT(s.audio.samples.size(), 0u);
   ASSERT_FALSE(s.phones.empty());
   const auto samples = static_cast<std::int64_t>(s.audio.samples.size());
-  EXPECT_EQ(static_cast<std::int64_t>(s.faps.frames.size()), frames_shown(samples, {25, 1}, s.audio.sample_rate_hz));
+  EXPECT_EQ(static_cast<std::int64_t>(s.faps.frames.size()), frames_shown(samples, {25, 1}, s.audio.sample_rate));
   EXPECT_EQ(s.weights.rows(), static_cast<Eigen::Index>(s.faps.frames.size()));
   EXPECT_EQ(s.weights.cols(), speaker.components());
   EXPECT_GT(s.speech_time.count(), 0);
@@ -47,7 +47,7 @@ TEST(Speaker, OneSentenceIsItsAudioWithFramesAndWeightsAtTheOutputRate) {
   EXPECT_TRUE(moved);
   // The weights are the synthesiser's: frame 0 is the track's first 60 fps frame.
   const SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), s.phones,
-                                            s.audio.sample_rate_hz, samples, settings.synthesis, "t");
+                                            s.audio.sample_rate, samples, settings.synthesis, "t");
   EXPECT_TRUE(s.weights.row(0).isApprox(track.pca_frames.row(0)));
   EXPECT_TRUE(s.weights.row(5).isApprox(track.pca_frames.row(12)));  // 5 * 60 / 25 = 12 exactly
 }
@@ -73,6 +73,24 @@ TEST(Speaker, AnExpressionPutsFap2InEveryFrame) {
     EXPECT_EQ(f.expression.intensity1, 40);
   }
   EXPECT_EQ(s.weights.cols(), speaker.components()) << "the weights are the PCA ones; the expression is the session's";
+}
+
+// The front-end's options reach espeak-ng: SSML markup is parsed, not spoken.
+TEST(Speaker, SpeaksSsmlWhenTheSettingsSaySo) {
+  const Voice voice = Voice::open(test::spoken_voice_file());
+  SpeakerSettings ssml;
+  ssml.speech.ssml = true;
+  const SpokenSentence marked = Speaker(voice, ssml, "test voice").speak("<speak>Bob bought a boat.</speak>");
+  const SpokenSentence plain = Speaker(voice, {}, "test voice").speak("Bob bought a boat.");
+  const auto spoken = [](const SpokenSentence& s) {  // the phones, silences left out
+    std::vector<Phone> phones;
+    for (const TimedPhone& p : s.phones)
+      if (p.phone != Phone::SIL) phones.push_back(p.phone);
+    return phones;
+  };
+  ASSERT_FALSE(spoken(plain).empty());
+  EXPECT_EQ(spoken(marked), spoken(plain));
+  EXPECT_FALSE(marked.faps.frames.empty());
 }
 
 }  // namespace

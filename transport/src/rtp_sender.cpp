@@ -2,6 +2,7 @@
 
 #include "fapcast/transport/fba_payload.hpp"
 #include "fapcast/transport/l16.hpp"
+#include "fapcast/transport/rtcp_compound.hpp"
 #include "fapcast/transport/rtp_error.hpp"
 
 #include <random>
@@ -14,13 +15,14 @@ udp::endpoint offset_port(udp::endpoint e, int offset) {
 std::uint32_t rtp_timestamp(const RtpStreamIds& ids, std::int64_t sample) {
   return ids.first_timestamp + static_cast<std::uint32_t>(sample);  // modulo 2^32 by design
 }
-udp::endpoint checked(udp::endpoint destination) {
+}  // namespace
+
+udp::endpoint checked_rtp_destination(udp::endpoint destination) {
   if (destination.port() == 0 || destination.port() > 65532)
     throw std::system_error(make_error_code(RtpErrc::kBadEndpoint),
                             "destination port must be 1..65532 (P..P+3 are used)");
   return destination;
 }
-}  // namespace
 
 std::string default_cname() {
   boost::system::error_code ec;
@@ -48,13 +50,13 @@ std::error_code pack_animation_packet(const MediaUnit& unit, std::size_t index,
   h.ssrc = ids.ssrc;
   std::vector<std::uint8_t> payload;
   payload.reserve(unit.bytes.size() + 1);
-  pack_fba_payload(unit.intra, unit.bytes, payload);
+  pack_fba_payload(unit.intra, unit.fapcast, unit.bytes, payload);
   return pack_rtp(h, payload, out);
 }
 
 RtpSender::RtpSender(asio::io_context& io, udp::endpoint destination, RtpSenderOptions options, bool with_audio)
     : options_(std::move(options)),
-      destination_(checked(destination)),
+      destination_(checked_rtp_destination(destination)),
       animation_rtp_(io, destination, options_.socket),
       animation_rtcp_(io, offset_port(destination, 1), options_.socket) {
   if (with_audio) {
@@ -103,12 +105,13 @@ void RtpSender::send_audio(std::span<const std::int16_t> interleaved, int channe
   audio_.payload_octets += static_cast<std::uint32_t>(payload_.size());
 }
 
-void RtpSender::send_reports(std::int64_t sample, NtpTimestamp ntp, std::error_code& ec) {
+void RtpSender::send_reports(std::int64_t sample, NtpTimestamp ntp, bool bye, std::error_code& ec) {
   packet_.clear();
   pack_sender_report({options_.animation_ids.ssrc, ntp, rtp_timestamp(options_.animation_ids, sample),
                       animation_.packets, animation_.payload_octets},
                      packet_);
   pack_sdes_cname(options_.animation_ids.ssrc, options_.cname, packet_);
+  if (bye) pack_bye(options_.animation_ids.ssrc, packet_);
   send_protected(animation_rtcp_, true, ec);
   if (ec) return;
   ++animation_.sender_reports;
@@ -118,11 +121,12 @@ void RtpSender::send_reports(std::int64_t sample, NtpTimestamp ntp, std::error_c
                       audio_.payload_octets},
                      packet_);
   pack_sdes_cname(options_.audio_ids.ssrc, options_.cname, packet_);
+  if (bye) pack_bye(options_.audio_ids.ssrc, packet_);
   send_protected(*audio_rtcp_, true, ec);
   if (!ec) ++audio_.sender_reports;
 }
 
-std::size_t RtpSender::audio_instants_per_packet(std::int64_t sample_rate, int channels) const {
+std::size_t RtpSender::audio_instants_per_packet(SampleRate sample_rate, int channels) const {
   return l16_frames_per_packet(sample_rate, channels, srtp_ ? kSrtpRtpOverheadBytes : 0);
 }
 

@@ -1,10 +1,14 @@
 #include "fapcast/transport/rtp_stream_receiver.hpp"
 
 #include "fapcast/transport/fba_payload.hpp"
+#include "fapcast/transport/rtcp_compound.hpp"
 #include "fapcast/transport/rtp_error.hpp"
 #include "fapcast/transport/timeline.hpp"
 
+#include <algorithm>
 #include <cstdlib>
+#include <iterator>
+#include <tuple>
 
 namespace fapcast {
 namespace {
@@ -13,7 +17,25 @@ namespace {
 constexpr std::int64_t kMaxDropout = 3000;
 constexpr std::int64_t kMaxMisorder = 100;
 constexpr std::uint64_t kFirstCycle = 1ull << 16;  // first extended sequence lies in cycle 1
+
+// The extended number of `sequence` relative to `highest`, or nullopt when it is too far away.
+std::optional<std::uint64_t> extend(std::uint64_t highest, std::uint16_t sequence) {
+  const auto delta = static_cast<std::int16_t>(sequence - static_cast<std::uint16_t>(highest));
+  if (delta > kMaxDropout || delta < -kMaxMisorder) return std::nullopt;
+  const std::int64_t ext = static_cast<std::int64_t>(highest) + delta;
+  if (ext < 0) return std::nullopt;
+  return static_cast<std::uint64_t>(ext);
+}
 }  // namespace
+
+struct RtpStreamReceiver::Candidate {
+  std::uint32_t ssrc = 0;
+  std::uint64_t highest = 0;              // highest extended sequence held
+  std::map<std::uint64_t, Held> packets;  // at most reorder_capacity
+  std::unique_ptr<UnitValidator> validator;
+  Clock::time_point last_arrival{};
+  bool decoded = false;  // one of its packets decoded (the start of a run): evicted last
+};
 
 std::ostream& operator<<(std::ostream& out, const ReceiverStats& s) {
   return out << "datagrams " << s.datagrams << ", accepted " << s.accepted << ", delivered "
@@ -21,18 +43,32 @@ std::ostream& operator<<(std::ostream& out, const ReceiverStats& s) {
              << s.duplicates << ", malformed " << s.malformed << ", foreign ssrc "
              << s.foreign_ssrc << ", wrong payload type " << s.wrong_payload_type
              << ", sequence jumps " << s.sequence_jumps << ", skipped waiting intra "
-             << s.skipped_waiting_intra << ", jitter " << s.jitter;
+             << s.skipped_waiting_intra << ", probation discarded " << s.probation_discarded
+             << ", validations " << s.validations << ", sender reports " << s.sender_reports
+             << ", byes " << s.byes << ", rtcp refused " << s.rtcp_refused << ", jitter "
+             << s.jitter;
 }
 
-RtpStreamReceiver::RtpStreamReceiver(ReceiverOptions options) : options_(options) {
+RtpStreamReceiver::RtpStreamReceiver(ReceiverOptions options) : options_(std::move(options)) {
   if (options_.reorder_capacity == 0) options_.reorder_capacity = 1;
   if (options_.reorder_capacity > kHistory / 2) options_.reorder_capacity = kHistory / 2;
-  if (options_.clock_rate < 1) options_.clock_rate = 1;
-  ssrc_ = options_.ssrc;
+  if (!options_.clock_rate.valid()) options_.clock_rate = SampleRate{1};
+  options_.min_sequential = std::clamp(options_.min_sequential, 1,
+                                       static_cast<int>(options_.reorder_capacity));
+}
+
+RtpStreamReceiver::~RtpStreamReceiver() = default;
+RtpStreamReceiver::RtpStreamReceiver(RtpStreamReceiver&&) noexcept = default;
+RtpStreamReceiver& RtpStreamReceiver::operator=(RtpStreamReceiver&&) noexcept = default;
+
+std::optional<std::uint32_t> RtpStreamReceiver::locked_ssrc() const { return ssrc_; }
+
+bool RtpStreamReceiver::source_left(Clock::time_point now) const {
+  return bye_at_ && now - *bye_at_ >= options_.reorder_delay;
 }
 
 double RtpStreamReceiver::jitter_seconds() const {
-  return stats_.jitter / static_cast<double>(options_.clock_rate);
+  return stats_.jitter / static_cast<double>(options_.clock_rate.hz);
 }
 
 std::error_code RtpStreamReceiver::on_datagram(std::span<const std::uint8_t> datagram,
@@ -49,7 +85,7 @@ std::error_code RtpStreamReceiver::on_datagram(std::span<const std::uint8_t> dat
     ++stats_.wrong_payload_type;
     return RtpErrc::kWrongPayloadType;
   }
-  if (ssrc_ && *ssrc_ != h.ssrc) {
+  if ((options_.ssrc && *options_.ssrc != h.ssrc) || (ssrc_ && *ssrc_ != h.ssrc && !source_left(arrival))) {
     ++stats_.foreign_ssrc;
     return RtpErrc::kForeignSsrc;
   }
@@ -63,38 +99,33 @@ std::error_code RtpStreamReceiver::on_datagram(std::span<const std::uint8_t> dat
       return ec;
     }
     unit.intra = payload.intra;
+    unit.fapcast = payload.fapcast;
     unit.bytes.assign(payload.access_unit.begin(), payload.access_unit.end());
   } else {
     unit.intra = true;  // every unit of a stateless format is a resumption point
     unit.bytes.assign(packet.payload.begin(), packet.payload.end());
   }
-  if (!ssrc_) ssrc_ = h.ssrc;
+  if (ssrc_ && *ssrc_ != h.ssrc) release_source(out);  // the validated source said BYE
+  if (!ssrc_) return on_probation(h, std::move(unit), arrival, out);
 
-  // Extend the sequence number relative to the highest one seen (RFC 3550 A.1).
-  std::uint64_t ext = kFirstCycle + h.sequence;
-  if (have_highest_) {
-    const auto delta = static_cast<std::int16_t>(h.sequence - static_cast<std::uint16_t>(highest_));
-    if (delta > kMaxDropout || delta < -kMaxMisorder) {
-      if (probation_ != h.sequence) {
-        probation_ = static_cast<std::uint16_t>(h.sequence + 1);
-        ++stats_.sequence_jumps;
-        return RtpErrc::kSequenceJump;
-      }
-      // Two packets in a row agree: the sender restarted its numbering.
-      flush(out);
-      restart();
-      ext = kFirstCycle + h.sequence;
-    } else {
-      const std::int64_t candidate = static_cast<std::int64_t>(highest_) + delta;
-      if (candidate < 0) {
-        ++stats_.late;
-        return RtpErrc::kLate;
-      }
-      ext = static_cast<std::uint64_t>(candidate);
+  // Extend the sequence number relative to the highest one accepted (RFC 3550 A.1).
+  std::uint64_t ext = 0;
+  if (const auto e = extend(highest_, h.sequence)) {
+    ext = *e;
+  } else {
+    if (probation_ != h.sequence) {
+      probation_ = static_cast<std::uint16_t>(h.sequence + 1);
+      ++stats_.sequence_jumps;
+      return RtpErrc::kSequenceJump;
     }
+    // Two packets in a row agree: the sender restarted its numbering. The new numbers continue
+    // in a later cycle so that extended numbers keep increasing.
+    flush(out);
+    restart(((highest_ >> 16) + 2) << 16 | h.sequence);
+    ext = highest_;
   }
   probation_.reset();
-  if (started_ && ext < next_) {
+  if (ext < next_) {
     const bool recent = next_ - ext <= kHistory;
     if (recent && received_history_.test(ext % kHistory)) {
       ++stats_.duplicates;
@@ -107,13 +138,154 @@ std::error_code RtpStreamReceiver::on_datagram(std::span<const std::uint8_t> dat
     ++stats_.duplicates;
     return RtpErrc::kDuplicate;
   }
-  if (!have_highest_ || ext > highest_) highest_ = ext;
-  have_highest_ = true;
+  highest_ = std::max(highest_, ext);
   ++stats_.accepted;
   update_jitter(h.timestamp, arrival);
   unit.extended_sequence = ext;
   held_.emplace(ext, Held{std::move(unit), arrival});
   release(out, arrival);
+  return {};
+}
+
+std::error_code RtpStreamReceiver::on_probation(const RtpHeader& h, ReceivedUnit&& unit,
+                                                Clock::time_point arrival,
+                                                std::vector<ReceivedUnit>& out) {
+  auto it = std::find_if(candidates_.begin(), candidates_.end(),
+                         [&](const Candidate& c) { return c.ssrc == h.ssrc; });
+  if (it == candidates_.end()) {
+    if (candidates_.size() >= kMaxCandidates) {
+      // Room for the newcomer: the least recent source none of whose packets decoded (junk
+      // under random SSRCs), else the least recent one.
+      const auto oldest = std::min_element(
+          candidates_.begin(), candidates_.end(), [](const Candidate& a, const Candidate& b) {
+            return std::tie(a.decoded, a.last_arrival) < std::tie(b.decoded, b.last_arrival);
+          });
+      stats_.probation_discarded += oldest->packets.size();
+      candidates_.erase(oldest);
+    }
+    Candidate c;
+    c.ssrc = h.ssrc;
+    c.highest = kFirstCycle + h.sequence;
+    if (options_.make_validator) c.validator = options_.make_validator();
+    candidates_.push_back(std::move(c));
+    it = std::prev(candidates_.end());
+  }
+  Candidate& c = *it;
+  c.last_arrival = arrival;
+  std::uint64_t ext = 0;
+  if (const auto e = extend(c.highest, h.sequence)) {
+    ext = *e;
+  } else {  // far from the run so far: a new run starts here
+    stats_.probation_discarded += c.packets.size();
+    c.packets.clear();
+    ext = c.highest = kFirstCycle + h.sequence;
+  }
+  if (c.packets.contains(ext)) {
+    ++stats_.duplicates;
+    return RtpErrc::kDuplicate;
+  }
+  c.highest = std::max(c.highest, ext);
+  unit.extended_sequence = ext;
+  c.packets.emplace(ext, Held{std::move(unit), arrival});
+  while (c.packets.size() > options_.reorder_capacity) {
+    c.packets.erase(c.packets.begin());
+    ++stats_.probation_discarded;
+  }
+  const auto at = c.packets.find(ext);
+  if (at == c.packets.end()) return RtpErrc::kOutOfRun;  // older than everything held
+
+  // The block of consecutive sequence numbers around the new packet, decoded from its start: a
+  // run of min_sequential packets that decode validates the source.
+  auto first = at;
+  while (first != c.packets.begin() && std::prev(first)->first + 1 == first->first) --first;
+  auto last = at;
+  while (std::next(last) != c.packets.end() && std::next(last)->first == last->first + 1) ++last;
+  if (c.validator) c.validator->restart();
+  std::uint64_t run_start = first->first;
+  int run = 0;
+  bool packet_decodes = false;
+  for (auto p = first;; ++p) {
+    if (!c.validator || c.validator->decodes(p->second.unit)) {
+      if (run == 0) run_start = p->first;
+      if (p == at) packet_decodes = true;
+      c.decoded = true;
+      if (++run >= options_.min_sequential) {
+        validate(c, run_start, arrival, out);
+        return {};
+      }
+    } else {
+      run = 0;
+      if (c.validator) c.validator->restart();
+    }
+    if (p == last) break;
+  }
+  return packet_decodes ? std::error_code{} : make_error_code(RtpErrc::kUndecodable);
+}
+
+void RtpStreamReceiver::validate(Candidate& c, std::uint64_t run_start, Clock::time_point arrival,
+                                 std::vector<ReceivedUnit>& out) {
+  ssrc_ = c.ssrc;
+  first_sequence_ = run_start;
+  ++stats_.validations;
+  bye_at_.reset();
+  last_report_.reset();
+  anchor_report_.reset();
+  received_history_.reset();
+  probation_.reset();
+  highest_ = c.highest;
+  next_ = run_start;
+  need_intra_ = true;
+  after_loss_ = true;
+  for (auto& [seq, held] : c.packets) {
+    if (seq < run_start) {
+      ++stats_.probation_discarded;
+      continue;
+    }
+    ++stats_.accepted;
+    update_jitter(held.unit.timestamp, held.arrival);
+    held_.emplace(seq, std::move(held));
+  }
+  for (const Candidate& other : candidates_)
+    if (&other != &c) stats_.probation_discarded += other.packets.size();
+  candidates_.clear();
+  release(out, arrival);
+}
+
+void RtpStreamReceiver::release_source(std::vector<ReceivedUnit>& out) {
+  flush(out);
+  ssrc_.reset();
+  bye_at_.reset();
+  have_transit_ = false;
+}
+
+std::error_code RtpStreamReceiver::on_rtcp(std::span<const std::uint8_t> datagram,
+                                           Clock::time_point arrival) {
+  RtcpCompound rtcp;
+  if (const auto ec = parse_rtcp_compound(datagram, rtcp)) {
+    ++stats_.rtcp_refused;
+    return ec;
+  }
+  bool ours = false;
+  if (ssrc_ && rtcp.sender_report && rtcp.sender_report->ssrc == *ssrc_) {
+    // Reports may arrive out of order: the latest is the one with the highest count.
+    if (!last_report_ || rtcp.sender_report->packet_count >= last_report_->packet_count)
+      last_report_ = rtcp.sender_report;
+    const bool closing = std::find(rtcp.bye_sources.begin(), rtcp.bye_sources.end(), *ssrc_) !=
+                         rtcp.bye_sources.end();
+    if (!anchor_report_ && !closing) anchor_report_ = rtcp.sender_report;
+    ++stats_.sender_reports;
+    ours = true;
+  }
+  for (const std::uint32_t s : rtcp.bye_sources)
+    if (ssrc_ && s == *ssrc_) {
+      if (!bye_at_) bye_at_ = arrival;
+      ++stats_.byes;
+      ours = true;
+    }
+  if (!ours) {
+    ++stats_.rtcp_refused;
+    return RtpErrc::kForeignSsrc;
+  }
   return {};
 }
 
@@ -138,7 +310,11 @@ void RtpStreamReceiver::poll(Clock::time_point now, std::vector<ReceivedUnit>& o
   release(out, now);
 }
 
-void RtpStreamReceiver::flush(std::vector<ReceivedUnit>& out) { release(out, std::nullopt); }
+void RtpStreamReceiver::flush(std::vector<ReceivedUnit>& out) {
+  release(out, std::nullopt);
+  for (const Candidate& c : candidates_) stats_.probation_discarded += c.packets.size();
+  candidates_.clear();
+}
 
 void RtpStreamReceiver::release(std::vector<ReceivedUnit>& out,
                                 std::optional<Clock::time_point> now) {
@@ -147,12 +323,6 @@ void RtpStreamReceiver::release(std::vector<ReceivedUnit>& out,
   };
   while (!held_.empty()) {
     auto first = held_.begin();
-    if (!started_) {
-      // The first packets may arrive out of order: wait before deciding where the stream starts.
-      if (held_.size() < options_.reorder_capacity && !expired(first->second)) return;
-      started_ = true;
-      next_ = first->first;
-    }
     if (first->first != next_) {
       // A gap: wait for it while the buffer has room and the oldest held packet may still wait.
       bool must_skip = held_.size() >= options_.reorder_capacity || !now;
@@ -194,9 +364,9 @@ void RtpStreamReceiver::deliver(ReceivedUnit&& unit, std::vector<ReceivedUnit>& 
   out.push_back(std::move(unit));
 }
 
-void RtpStreamReceiver::restart() {
-  have_highest_ = false;
-  started_ = false;
+void RtpStreamReceiver::restart(std::uint64_t ext) {
+  highest_ = ext;
+  next_ = ext;
   probation_.reset();
   need_intra_ = true;
   after_loss_ = true;

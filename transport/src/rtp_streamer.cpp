@@ -1,18 +1,19 @@
 #include "fapcast/transport/rtp_streamer.hpp"
 
-#include "fapcast/transport/rtp_error.hpp"
+#include "wait_until.hpp"
+
 #include "fapcast/transport/timeline.hpp"
 
 #include <algorithm>
 
 namespace fapcast {
+namespace {
+constexpr int kClosingReports = 3;
+constexpr std::chrono::milliseconds kClosingGap{10};
+}  // namespace
 
 RtpStreamer::RtpStreamer(asio::io_context& io, udp::endpoint destination, StreamOptions options)
-    : io_(io), options_(std::move(options)), destination_(destination) {
-  if (destination.port() == 0 || destination.port() > 65532)
-    throw std::system_error(make_error_code(RtpErrc::kBadEndpoint),
-                            "destination port must be 1..65532 (P..P+3 are used)");
-}
+    : io_(io), options_(std::move(options)), destination_(checked_rtp_destination(destination)) {}
 
 StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Audio* audio) {
   std::error_code ec;
@@ -27,8 +28,8 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
   ec.clear();
   StreamReport report;
   RtpSender sender(io_, destination_, options_, audio != nullptr);
-  const std::int64_t clock = std::max<std::int64_t>(1, options_.clock_rate);
-  const std::size_t audio_step = audio ? sender.audio_instants_per_packet(audio->sample_rate_hz, audio->channels) : 1;
+  const std::int64_t clock = std::max<std::int64_t>(1, options_.clock_rate.hz);
+  const std::size_t audio_step = audio ? sender.audio_instants_per_packet(audio->sample_rate, audio->channels) : 1;
   const std::int64_t audio_instants = audio ? audio->instants() : 0;
   const std::int64_t rtcp_step =
       options_.rtcp_interval.count() > 0 ? clock * options_.rtcp_interval.count() / 1000 : 0;
@@ -37,7 +38,7 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
   // and reported as wallclock wall_start + s/clock, the same instant for both streams.
   const Clock::time_point start = Clock::now();
   const auto wall_start = std::chrono::system_clock::now();
-  const auto media_time = [clock](std::int64_t s) { return samples_to_duration(s, clock); };
+  const auto media_time = [clock](std::int64_t s) { return samples_to_duration(s, SampleRate{clock}); };
   const auto wallclock = [&](std::int64_t s) {
     return to_ntp(wall_start + std::chrono::duration_cast<std::chrono::system_clock::duration>(media_time(s)));
   };
@@ -60,19 +61,9 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
     if (!media_left) break;
     const std::int64_t report_at = rtcp_step > 0 ? next_report : kNever;
     const std::int64_t at = std::min({unit_at, audio_at, report_at});
-    if (options_.pace) {
-      const Clock::time_point deadline = start + media_time(at);
-      const Clock::time_point now = Clock::now();
-      if (now < deadline) {
-        timer.expires_at(deadline);
-        boost::system::error_code wait_error;
-        timer.wait(wait_error);
-      } else {
-        report.late_total += now - deadline;
-      }
-    }
+    if (options_.pace) report.late_total += detail::wait_until(timer, start + media_time(at));
     if (at == report_at) {
-      sender.send_reports(at, wallclock(at), ec);
+      sender.send_reports(at, wallclock(at), false, ec);
       next_report += rtcp_step;
     } else if (at == unit_at) {
       sender.send_animation(animation[next_unit], ec);
@@ -88,11 +79,20 @@ StreamReport RtpStreamer::run(const std::vector<MediaUnit>& animation, const Aud
     }
     if (ec) return finish();
   }
-  // A closing report so that a receiver has counts for the whole stream.
+  // A closing report with BYE (RFC 3550 6.6) so that a receiver has counts for the whole stream
+  // and knows it ended; sent kClosingReports times, kClosingGap apart when paced, since one lost
+  // datagram would otherwise cost the receiver the stream's last frames and its end.
   if (rtcp_step > 0) {
     const std::int64_t end_sample =
         std::max(audio_instants, animation.empty() ? 0 : animation.back().sample);
-    sender.send_reports(end_sample, wallclock(end_sample), ec);
+    for (int i = 0; i < kClosingReports && !ec; ++i) {
+      if (i > 0 && options_.pace) {
+        timer.expires_after(kClosingGap);
+        boost::system::error_code wait_error;
+        timer.wait(wait_error);
+      }
+      sender.send_reports(end_sample, wallclock(end_sample), true, ec);
+    }
   }
   return finish();
 }

@@ -8,17 +8,17 @@ __extension__ typedef __int128 Int128;
 constexpr std::int64_t kNanosPerSecond = 1'000'000'000;
 }  // namespace
 
-std::chrono::nanoseconds samples_to_duration(std::int64_t sample, std::int64_t sample_rate) {
+std::chrono::nanoseconds samples_to_duration(std::int64_t sample, SampleRate sample_rate) {
   return std::chrono::nanoseconds(
-      static_cast<std::int64_t>(static_cast<Int128>(sample) * kNanosPerSecond / sample_rate));
+      static_cast<std::int64_t>(static_cast<Int128>(sample) * kNanosPerSecond / sample_rate.hz));
 }
 
-std::int64_t duration_to_samples(std::chrono::nanoseconds t, std::int64_t sample_rate) {
-  return static_cast<std::int64_t>(static_cast<Int128>(t.count()) * sample_rate / kNanosPerSecond);
+std::int64_t duration_to_samples(std::chrono::nanoseconds t, SampleRate sample_rate) {
+  return static_cast<std::int64_t>(static_cast<Int128>(t.count()) * sample_rate.hz / kNanosPerSecond);
 }
 
 std::vector<TimedFrame> place_on_timeline(const FapSequence& seq,
-                                          std::int64_t sample_rate) {
+                                          SampleRate sample_rate) {
   std::vector<TimedFrame> out;
   out.reserve(seq.frames.size());
   for (std::size_t k = 0; k < seq.frames.size(); ++k)

@@ -41,38 +41,51 @@ FapSequence read_track_file(const std::filesystem::path& path) {
   throw std::logic_error("unreachable");
 }
 
-void write_track_file(const std::filesystem::path& path, const FapSequence& seq,
-                      std::optional<std::int64_t> sample_rate) {
+TrackFileBytes track_file_bytes(const std::filesystem::path& path, const FapSequence& seq,
+                                const TrackWriteOptions& options) {
   const auto format = track_format_of(path);
   if (!format) throw std::runtime_error(path.string() + ": track-format: expected .fap, .fba or .json");
   switch (*format) {
-    case TrackFormat::kFapText:
-      write_file_atomically(path, write_fap_text(seq));
-      return;
+    case TrackFormat::kFapText: {
+      TrackFileBytes out;
+      try {
+        out.bytes = write_fap_text(seq, options.fap);
+      } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(path.string() + ": " + e.what());
+      }
+      out.notes = fap_text_player_notes(seq, options.fap);
+      return out;
+    }
     case TrackFormat::kJson: {
-      FapJsonOptions options;
-      options.sample_rate = sample_rate;
-      write_file_atomically(path, write_fap_json(seq, options));
-      return;
+      FapJsonOptions json;
+      json.sample_rate = options.sample_rate;
+      return {write_fap_json(seq, json), {}};
     }
     case TrackFormat::kFba: {
-      // fap_quant 0 is lossless but has a narrower codable range; values it refuses were received
-      // as multiples of QP[fap] * the sender's fap_quant (>= 1), which fap_quant 1 codes exactly
-      // with previous-value prediction (chosen predictors would predict off that grid).
-      FbaEncoderOptions options;
-      options.fap_quant = 0;
-      std::vector<std::uint8_t> bytes;
-      try {
-        bytes = encode_fba(seq, options);
-      } catch (const FbaEncodeError&) {
-        options.fap_quant = 1;
-        options.choose_predictors = false;
-        bytes = encode_fba(seq, options);
+      // Lossless: the standard syntax at fap_quant 0 where it reaches every value, else the
+      // fapcast profile (which standard decoders refuse at its first bytes).
+      FbaEncoderOptions fba;
+      fba.fap_quant = 0;
+      std::vector<std::string> notes;
+      if (const auto refusal = fba_standard_refusal(seq, 0)) {
+        fba.profile = FbaProfile::kFapcast;
+        notes.push_back("written in the fapcast profile (lossless), which standard FBA decoders refuse: the standard "
+                        "syntax cannot code " + *refusal);
+      } else {
+        notes.push_back("standard FBA at fap_quant 0 (lossless)");
       }
-      write_file_atomically(path, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
-      return;
+      const std::vector<std::uint8_t> bytes = encode_fba(seq, fba);
+      return {{reinterpret_cast<const char*>(bytes.data()), bytes.size()}, std::move(notes)};
     }
   }
+  throw std::logic_error("unreachable");
+}
+
+std::vector<std::string> write_track_file(const std::filesystem::path& path, const FapSequence& seq,
+                                          const TrackWriteOptions& options) {
+  TrackFileBytes out = track_file_bytes(path, seq, options);
+  write_file_atomically(path, out.bytes);
+  return std::move(out.notes);
 }
 
 }  // namespace fapcast

@@ -35,12 +35,12 @@ FapSequence fap_track(const SynthesizedTrack& track, const FeaturePointBasis& ba
                                : resample_track(voice_rate, options.rate, ResampleMode::kLinear);
   // The 60 fps grid ends on the first instant at or after the audio's end; at another rate that
   // can leave one frame shown after the sound has ended.
-  const auto shown = static_cast<std::size_t>(frames_shown(end_sample, options.rate, track.timeline.sample_rate_hz));
+  const auto shown = static_cast<std::size_t>(frames_shown(end_sample, options.rate, track.timeline.sample_rate));
   if (out.frames.size() > shown) out.frames.resize(shown);
   return out;
 }
 
-std::int64_t frames_shown(std::int64_t end_sample, FrameRate rate, std::int64_t sample_rate) {
+std::int64_t frames_shown(std::int64_t end_sample, FrameRate rate, SampleRate sample_rate) {
   return end_sample > 0 ? sample_to_frame(end_sample - 1, rate, sample_rate) + 1 : 0;
 }
 

@@ -1,6 +1,5 @@
 #include "fapcast/utterance/speaker.hpp"
 
-#include "fapcast/frontend/text_frontend.hpp"
 #include "fapcast/utterance/fap_track.hpp"
 #include "fapcast/utterance/voice_face.hpp"
 #include "fapcast/voice/voice_frame_grid.hpp"
@@ -22,7 +21,7 @@ Speaker::Speaker(const Voice& voice, SpeakerSettings settings, const std::string
 SpokenSentence Speaker::speak(std::string_view text) const {
   SpokenSentence out;
   const Clock::time_point t0 = Clock::now();
-  Speech speech = fapcast::speak(text);
+  Speech speech = fapcast::speak(text, settings_.speech);
   const Clock::time_point t1 = Clock::now();
   out.speech_time = t1 - t0;
   out.audio = std::move(speech.audio);
@@ -30,7 +29,7 @@ SpokenSentence Speaker::speak(std::string_view text) const {
   if (out.phones.empty()) return out;
   const auto samples = static_cast<std::int64_t>(out.audio.samples.size());
   SynthesizedTrack track = synthesize(voice_.graph(), voice_.frame_coefficients(), out.phones,
-                                      out.audio.sample_rate_hz, samples, settings_.synthesis, source_);
+                                      out.audio.sample_rate, samples, settings_.synthesis, source_);
   AnimationOptions animation;
   animation.rate = settings_.rate;
   animation.viseme = settings_.viseme;

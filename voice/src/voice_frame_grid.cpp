@@ -21,16 +21,16 @@ void append(TargetTimeline& out, Phone phone, std::int64_t first, std::int64_t e
 
 }  // namespace
 
-TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, std::int64_t sample_rate_hz,
+TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, SampleRate sample_rate,
                                    std::int64_t end_sample, const std::string& source) {
-  if (sample_rate_hz < 1)
-    throw std::invalid_argument("voice grid: sample rate " + std::to_string(sample_rate_hz) + " Hz");
+  if (!sample_rate.valid())
+    throw std::invalid_argument("voice grid: sample rate " + std::to_string(sample_rate.hz) + " Hz");
   TargetTimeline out;
-  out.sample_rate_hz = sample_rate_hz;
+  out.sample_rate = sample_rate;
   std::int64_t previous_end = 0;
   std::int64_t frame = 0;  // where the next target starts
   auto fill_silence_to = [&](std::int64_t sample) {
-    const std::int64_t to = first_frame_at(sample, kVoiceFrameRate, sample_rate_hz);
+    const std::int64_t to = first_frame_at(sample, kVoiceFrameRate, sample_rate);
     if (to > frame) {
       append(out, Phone::SIL, frame, to);
       ++out.gaps_filled;
@@ -48,7 +48,7 @@ TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, std::int6
                        describe(phones, i) + " starts before the previous phone ends (sample " +
                            std::to_string(previous_end) + "): phones must be in time order");
     fill_silence_to(p.start_sample);
-    const std::int64_t end = first_frame_at(p.end_sample, kVoiceFrameRate, sample_rate_hz);
+    const std::int64_t end = first_frame_at(p.end_sample, kVoiceFrameRate, sample_rate);
     if (end <= frame) {
       ++out.dropped;  // zero duration, or between two frame instants
     } else {

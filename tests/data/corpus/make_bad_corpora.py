@@ -3,7 +3,7 @@
 (synth/voice_corpus.hpp) refuses in TRC/CSV/.lab corpora, named bad.NNN.<rule>. Markers are
 made-up numbers on the 39 sites of spec/markers.tsv (not a face): these corpora are refused
 before any geometry matters. Golden messages: bad-corpora/EXPECTED.txt (regenerate with
-FAPCAST_REGENERATE=1 fapcast_synth_tests --gtest_filter=*BadCorpora*)."""
+FAPCAST_REGENERATE=1 fapcast_pipeline_tests --gtest_filter=*BadCorpora*)."""
 import json, os, shutil
 
 HERE = os.path.dirname(os.path.abspath(__file__))

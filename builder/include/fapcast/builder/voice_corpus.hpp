@@ -39,7 +39,9 @@ enum class CorpusPhoneSet {
 struct CorpusUtterance {
   std::string id;
   std::filesystem::path markers;    // .c3d, .trc or .csv (marker CSV)
-  std::filesystem::path alignment;  // .TextGrid or .lab
+  std::filesystem::path alignment;  // .TextGrid or .lab; empty when the take is aligned from:
+  std::filesystem::path speech;     //   its recording (.wav) and
+  std::filesystem::path transcript; //   what it says (.txt), by forced alignment (spec/recognise.md)
   // The manifest's frame_rate_hz for it (utterance, else session), which the marker file's rate
   // must agree with; nullopt when not stated.
   std::optional<double> frame_rate_hz;
@@ -60,7 +62,8 @@ inline constexpr std::string_view kMarkerExtensions[] = {".c3d", ".trc", ".csv"}
 inline constexpr std::string_view kAlignmentExtensions[] = {".textgrid", ".lab"};
 
 // Lists the corpus in `directory`: its manifest.json when present, else, sorted by stem, every
-// marker file (kMarkerExtensions) with the one alignment (kAlignmentExtensions) of the same stem.
+// marker file (kMarkerExtensions) with the one alignment (kAlignmentExtensions) of the same stem,
+// or, when it has none, with the .wav and .txt of the same stem (the take's speech and transcript).
 // There is no precedence between formats: two marker files or two alignments of one stem are
 // refused. Throws InputError: corpus-missing (no such directory), corpus-manifest (bad JSON or
 // field, naming it), corpus-empty (no utterance), corpus-file-missing (a listed or paired file
@@ -80,8 +83,9 @@ struct CorpusTake {
 
 // Reads utterance `index`: the marker file (resampled to 60 fps by resample_markers when its
 // rate differs; markers mapped through the listing's marker_map to marker_sites() labels) and
-// the alignment (the TextGrid's "phones" tier, or the .lab's segments) in the listing's phone
-// set, each interval on frames [round(start x 60), round(end x 60)), empty ones dropped; a TIMIT
+// the alignment (the TextGrid's "phones" tier, or the .lab's segments, or the phones SpeechAligner
+// finds in the take's speech from its transcript: noises and unmatched speech as silence) in the
+// listing's phone set, each interval on frames [round(start x 60), round(end x 60)), empty ones dropped; a TIMIT
 // stop closure (bcl ... kcl) is merged with the release of the same stop right after it. Throws
 // InputError: the readers' own rules, corpus-frame-rate (below kMinCaptureFramesPerSecond, or
 // not the manifest's frame_rate_hz), corpus-markers (a site has no marker), corpus-alignment (no

@@ -4,6 +4,7 @@
 #include "fapcast/codec/fap_frame.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,6 +38,8 @@ struct FapTextInfo {
   bool skipped_frames = false;    // frame numbers skipped; the previous frame was held
   bool real_valued_tokens = false;
   bool header_count_short = false;  // the file holds slightly fewer frames than the header says
+  bool single_fap12 = false;  // 68-token masks with FAP 1 and FAP 2 as one integer each (Greta, VREng)
+  bool one_based = false;     // frames numbered 1..N under a count of N, read as 0..N-1
   std::vector<std::string> warnings;  // "joy.fap:14: real-value: 3.6 rounded to 4", ...
   std::uint64_t warning_count = 0;    // all warnings, including those beyond kFapTextMaxWarnings
 
@@ -59,6 +62,24 @@ FapTextRead read_fap_text(std::string_view bytes, std::string_view source);
 // has no exact decimal form the reader maps back to it (fap_text_fps), or for more than
 // kFapTextMaxFrames frames: the writer writes only what the reader reads back.
 std::string write_fap_text(const FapSequence& seq, FapTextDialect dialect = FapTextDialect::kStrict);
+
+// The players whose own parsers fapcast writes for (spec/fap-text.md, "Players").
+enum class FapPlayer { kXface, kGreta, kVreng };
+// "xface", "greta", "vreng" (nullopt for any other name), and back.
+std::optional<FapPlayer> fap_player_from_name(std::string_view name);
+const char* fap_player_name(FapPlayer player);
+struct FapTextWriteOptions {
+  FapTextDialect dialect = FapTextDialect::kStrict;
+  // nullopt: the strict standard layout. A player: exactly what that player parses as intended
+  // (Xface: the strict layout, an integer fps; Greta and VREng: FAP 1 and FAP 2 one integer each).
+  std::optional<FapPlayer> player;
+};
+// As write_fap_text(seq, dialect), for a player. Throws std::invalid_argument where the player
+// cannot read `seq` as intended (Xface and a rate that is not a whole number of frames a second).
+std::string write_fap_text(const FapSequence& seq, const FapTextWriteOptions& options);
+// How the three players would read `seq` written with `options` otherwise than intended, one
+// note each; empty when Xface, Greta and VREng all read it as written.
+std::vector<std::string> fap_text_player_notes(const FapSequence& seq, const FapTextWriteOptions& options);
 
 // The header's name token for `name`: invalid UTF-8 becomes U+FFFD, every space, tab or
 // control character becomes '_', and an empty name becomes "unnamed" — so that readers that

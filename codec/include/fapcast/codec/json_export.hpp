@@ -3,6 +3,7 @@
 // rate, frame count, optional sample rate and FAPU) and one object per frame with its time in
 // seconds, its WAV sample when a sample rate is given, its named FAP values and the viseme and
 // expression fields. Output is deterministic: fixed key order, FAPs in FAP-number order.
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/fapu_values.hpp"
@@ -20,7 +21,7 @@ inline constexpr int kFapJsonVersion = 1;
 inline constexpr std::int64_t kFapJsonMaxRate = 1'000'000;
 
 struct FapJsonOptions {
-  std::optional<std::int64_t> sample_rate;  // Hz; adds each frame's WAV sample (frame_to_sample)
+  std::optional<SampleRate> sample_rate;  // adds each frame's WAV sample (frame_to_sample)
   std::optional<FapuValues> fapu;           // the face's FAPU lengths, when known
   std::string generator = "fapcast";        // who wrote the file
 };

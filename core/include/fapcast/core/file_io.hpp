@@ -1,8 +1,10 @@
 #pragma once
 // Whole-file reads with a size limit, and atomic writes (temporary file + rename), so that a
-// crash or a full disk never leaves a half-written output where a good one was.
+// crash or a full disk never leaves a half-written output where a good one was, and a killed
+// run's temporary files are swept by the next write to the same directory.
 #include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 
@@ -17,9 +19,46 @@ inline constexpr std::uint64_t kDefaultMaxFileBytes = 1ull << 30;  // 1 GiB
 std::string read_file(const std::filesystem::path& path,
                       std::uint64_t max_bytes = kDefaultMaxFileBytes);
 
-// Writes `bytes` to `path` atomically: a temporary file in the same directory, flushed and
-// fsync'ed, then renamed over `path`. On failure the temporary file is removed, `path` is
-// untouched, and std::runtime_error names the file and the failing step.
+// An output being written: the temporary file `.NAME.fapcast-tmpNNN` (NNN decimal digits) beside `path`
+// is created and locked (flock) at construction, so a command learns that it cannot write its
+// output before it does its work; commit() writes it out, fsyncs and renames it over `path`.
+// A file never committed is removed by the destructor, on every failure path that unwinds.
+// The first file created in a directory sweeps that directory's stale temporary files: names
+// of exactly that pattern, regular files, older than this process and locked by no one (a
+// killed run's; a running fapcast holds the lock on its own).
+class AtomicFile {
+ public:
+  // Throws std::runtime_error naming `path` when the temporary file cannot be created.
+  explicit AtomicFile(std::filesystem::path path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  // Appends bytes to the temporary file. Throws std::runtime_error naming `path`.
+  void write(std::string_view bytes);
+  // fsync, close, rename over path(). Throws std::runtime_error naming `path` and the step.
+  void commit();
+  const std::filesystem::path& path() const { return path_; }
+  const std::filesystem::path& temporary() const { return tmp_; }
+
+ private:
+  [[noreturn]] void abandon(const std::string& step, int err);
+  std::filesystem::path path_;
+  std::filesystem::path tmp_;
+  int fd_ = -1;
+  bool committed_ = false;
+};
+
+// Commits `files` in order, after all of them were written: outputs that belong together (a
+// .glb and its WAV) appear together. When one rename fails, the ones renamed before it are
+// removed again, so neither appears (a file they replaced is gone then: it was being replaced).
+void commit_together(std::initializer_list<AtomicFile*> files);
+
+// Writes `bytes` to `path` atomically (AtomicFile). On failure the temporary file is removed,
+// `path` is untouched, and std::runtime_error names the file and the failing step.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+
+// Whether the sweep would remove `file`: a stale temporary file of a killed run.
+bool is_stale_temporary(const std::filesystem::path& file);
 
 }  // namespace fapcast

@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace fapcast {
 
@@ -15,6 +16,11 @@ struct InputLocation {
   std::optional<std::uint64_t> line;    // 1-based, for text formats
   std::optional<std::uint64_t> offset;  // 0-based byte offset, for binary formats
 };
+
+// `text` with every byte that is neither printable ASCII nor part of well-formed UTF-8 written
+// as \xNN (control characters, stray bytes), so a message never echoes raw garbage to a terminal.
+// InputError applies it to every detail.
+std::string escape_for_message(std::string_view text);
 
 class InputError : public std::runtime_error {
  public:

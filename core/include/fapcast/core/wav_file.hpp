@@ -17,7 +17,8 @@ inline constexpr std::int64_t kMaxWavInstants = std::int64_t{1} << 31;
 // Reads a whole sound file, every channel. Throws InputError naming the file and the rule:
 // wav-open (not a sound file libsndfile reads), wav-channels (none, or more than 1024), wav-rate
 // (not positive), wav-too-long (more than `max_instants` sampling instants), wav-read (a read
-// error part way). Reads in chunks and never allocates from the header's claimed length.
+// error part way), wav-truncated (a RIFF/WAVE data chunk shorter than its header says, at the
+// chunk's byte offset). Reads in chunks and never allocates from the header's claimed length.
 Audio read_wav(const std::filesystem::path& path, std::int64_t max_instants = kMaxWavInstants);
 
 // read_wav, refusing audio of more than one channel (rule wav-mono): speech to animate.

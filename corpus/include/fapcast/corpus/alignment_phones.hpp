@@ -1,8 +1,8 @@
 #pragma once
-// Timed phones from a phone alignment (a TextGrid's phone tier or a .lab file) on the WAV
-// timeline, for synthesis from recorded speech (`fapcast animate`).
+// Timed phones from a phone alignment on the WAV timeline, for synthesis from recorded speech
+// (`fapcast animate`).
 #include "fapcast/core/input_error.hpp"
-#include "fapcast/corpus/alignment.hpp"
+#include "fapcast/corpus/alignment_file.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
 
 #include <cstdint>
@@ -11,17 +11,12 @@
 
 namespace fapcast {
 
-// The tier that holds the phones: the first interval tier named "phones" or "phone"
-// (any case), else the first interval tier; nullptr when the alignment has none.
-const LabelTier* phone_tier(const Alignment& alignment);
-
-// One TimedPhone per interval (times rounded to samples with to_sample). Labels: ARPAbet with
-// or without stress ("AH0", "sil"), TIMIT/MOCHA labels ("h#", "pau", "sp", "dcl"), and the empty
-// label of an unlabelled gap, which is silence. A TIMIT closure ("dcl") directly followed by its
-// release ("d") becomes one phone, as the front-end's closures are. Throws InputError (source,
-// rule "phone-label") naming the interval and its label when a label is none of these.
-std::vector<TimedPhone> phones_from_tier(const LabelTier& tier, std::int64_t sample_rate_hz,
-                                         const std::string& source);
+// One TimedPhone per segment of an alignment file (alignment_file.hpp), times rounded to
+// samples with to_sample: phones as they are, silence and noise as SIL. A closure joined with its
+// release is one phone from the closure's start (as the front-end's closures are). Throws InputError (source, rule "time-off-sample-grid") naming the segment
+// when a time is beyond what a sample count holds.
+std::vector<TimedPhone> timed_phones(const std::vector<AlignedSegment>& segments, SampleRate sample_rate,
+                                     const std::string& source);
 
 // An alignment and its WAV rarely end on the same sample. Phones running past the audio's
 // `audio_samples` by at most `tolerance_samples` are cut at its end (phones starting there are

@@ -3,6 +3,8 @@
 // points (events). Times are seconds on the utterance's WAV timeline, kept as the double the file
 // spelled (readers parse the shortest decimal, writers print the shortest decimal that reads back
 // to the same double, so a round trip is exact); `to_sample` puts them on the sample grid.
+#include "fapcast/core/sample_rate.hpp"
+
 #include <cstdint>
 #include <ostream>
 #include <string>
@@ -39,9 +41,13 @@ struct LabelTier {
   bool operator==(const LabelTier&) const = default;
 };
 
-// The sample at time `seconds` on a timeline of `sample_rate_hz` Hz: round(seconds * rate),
+// The sample at time `seconds` on a timeline of `sample_rate`: round(seconds * rate),
 // halves away from zero. Throws std::out_of_range if the result does not fit in int64.
-std::int64_t to_sample(double seconds, std::int64_t sample_rate_hz);
+std::int64_t to_sample(double seconds, SampleRate sample_rate);
+
+// to_sample for a time read from the file `source`: a time no sample count holds is the file's
+// fault, InputError (source, rule "time-off-sample-grid", detail `what`: to_sample's reason).
+std::int64_t alignment_sample(double seconds, SampleRate sample_rate, const std::string& source, const std::string& what);
 
 std::ostream& operator<<(std::ostream& out, const Interval& interval);
 std::ostream& operator<<(std::ostream& out, const TimePoint& point);

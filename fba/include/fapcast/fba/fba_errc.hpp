@@ -15,16 +15,21 @@ enum class fba_errc {
   unsupported_object,         // fba_object_mask other than 1 (FAP only)
   dct_coding_unsupported,     // coding_type 1: the DCT (segment) coding is not implemented
   predicted_without_intra,    // a P plane with no intra plane to predict from
-  bad_frame_rate,             // frame_rate 0 or seconds 0
+  bad_frame_rate,             // frame_rate 0 and seconds 0 (no rate)
   bad_time_code,              // minutes or seconds above 59
   skip_too_long,              // more skipped frames than kMaxSkipFrames
-  bad_alignment_bits,         // the byte-alignment bits after a plane are not all 1
   trailing_bytes,             // bytes after the end of a plane's bits
   missing_object_start_code,  // a file that does not open with 0x000001BA
   missing_end_code,           // a file that does not close with 0x000001B1
   uncodable_value,            // encoder: a value beyond the codable range (never clipped)
   uncodable_frame_rate,       // encoder: a rate frame_rate(8)/seconds(4)[*1000/1001] cannot hold
   bad_frame_number,           // an intra plane's frame_number is not the frame it lands on
+  bad_stuffing,               // a start code not after next_start_code() stuffing (0, then 1s)
+  viseme_range,               // a P plane takes a viseme field out of its range
+  expression_range,           // a P plane takes an expression field out of its range
+  fapcast_profile,            // the standard-only path met a fapcast-profile stream
+  bad_profile_version,        // a fapcast-profile stream of a version this decoder does not know
+  bad_field,                  // a fapcast-profile header field out of its range
 };
 
 const std::error_category& fba_category();

@@ -10,6 +10,6 @@ inline constexpr int kMaxFapQuant = 31;      // fap_quant is 5 bits; 0 = lossles
 // Quantiser step of FAP `fap` (3..68) at `fap_quant` (0..31): QP * fap_quant, 1 when lossless.
 int fba_step(int fap, int fap_quant);
 // Quantisation level of `value` (FAPU) at `step` (>= 1): 0 within step/2, else rounded away.
-std::int32_t fba_quantise(std::int64_t value, int step);
+std::int64_t fba_quantise(std::int64_t value, int step);
 
 }  // namespace fapcast

@@ -1,11 +1,14 @@
 #pragma once
 // Frame-at-a-time FBA coding for live transport: each frame becomes one byte-aligned, self-
-// delimiting access unit (a plane start code, one object plane, alignment), so that RTP can carry
-// one per packet and a receiver that lost packets resumes at the next intra access unit.
-// spec/fba.md defines the bits. The whole-file coder shares the coder state and the plane coding
-// but packs P planes without start codes (spec/fba.md §1).
+// delimiting access unit (a plane start code, one object plane, next_start_code() stuffing), so
+// that RTP can carry one per packet and a receiver that lost packets resumes at the next intra
+// access unit. Both profiles (spec/fba.md §1, §9): a standard unit is what the standard syntax
+// allows ("a start code before every plane"); a fapcast-profile unit follows the profile's syntax
+// and is told apart by the RTP payload header, not by its bits. The whole-file coder shares the
+// coder state and the plane coding but packs P planes without start codes.
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/fba/fba_errc.hpp"
+#include "fapcast/fba/fba_profile.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -19,12 +22,20 @@ namespace fapcast {
 struct FbaCodingState;  // private: fba/src/fba_coding_state.hpp (white-box tests include it)
 
 struct FbaEncoderOptions {
+  FbaProfile profile = FbaProfile::kStandard;
   int fap_quant = 1;      // 0 (lossless) .. 31; quantiser step = QP[fap] * fap_quant
-  int intra_period = 25;  // an intra frame at least every this many frames (>= 1)
-  // Whole files only: choose each FAP's P predictor per intra period (spec/fba.md §6); false
-  // predicts every P value from the previous one, as the published FBA codec of spec/fba.md does.
+  // An intra plane at least every this many frames (>= 1); 0 = the default: files 10 s of frames
+  // (standard) or 20 s (fapcast profile), frame-at-a-time coders 1 s.
+  int intra_period = 0;
+  // fapcast profile: choose each FAP's temporal predictor and reference FAP per intra period
+  // (spec/fba.md §10); false predicts every P value from the previous one alone.
   bool choose_predictors = true;
+  // Standard: a time code in every intra plane (spec/fba.md §3).
+  bool time_codes = true;
 };
+
+// The intra period `options` ask for at `rate`, in frames (>= 1).
+int fba_intra_period(const FbaEncoderOptions& options, FrameRate rate, bool whole_file);
 
 struct FbaAccessUnit {
   std::vector<std::uint8_t> bytes;  // starts with the object-plane start code, byte-aligned end
@@ -45,8 +56,11 @@ class FbaFrameEncoder {
   const std::string& error_detail() const;
   // The coder state after the last frame (tests compare it with the decoder's).
   const FbaCodingState& coding_state() const;
-  // Bits of the last access unit before byte alignment, start code and stuffing included.
+  // Bits of the last access unit before its stuffing, start code included.
   std::uint64_t last_bits() const;
+  // Standard: frames coded as intra planes although P planes were due, so that every standard
+  // decoder reads them alike (spec/fba.md §2).
+  std::uint64_t recoded_intra() const;
 
  private:
   struct State;
@@ -55,7 +69,7 @@ class FbaFrameEncoder {
 
 class FbaFrameDecoder {
  public:
-  FbaFrameDecoder();
+  explicit FbaFrameDecoder(FbaProfile profile = FbaProfile::kStandard);
   ~FbaFrameDecoder();
   FbaFrameDecoder(FbaFrameDecoder&&) noexcept;
   FbaFrameDecoder& operator=(FbaFrameDecoder&&) noexcept;
@@ -63,18 +77,23 @@ class FbaFrameDecoder {
   // Decodes one access unit. A predicted unit before any intra unit (or after reset()) is
   // refused with an error and decodes nothing; a corrupt unit leaves the decoder needing intra.
   std::error_code decode(std::span<const std::uint8_t> access_unit, FapFrame& out);
-  // Forget the prediction state (after loss): the next decodable unit is an intra one.
-  void reset();
+  // Forget the prediction state (after loss): the next decodable unit is an intra one. A
+  // different profile than before switches the decoder to it.
+  void reset(FbaProfile profile);
+  void reset() { reset(profile()); }
+  FbaProfile profile() const;
   bool needs_intra() const;
   FrameRate rate() const;  // from the last intra unit
-  // The coder state after the last unit, and the bits it consumed before byte alignment.
+  int fap_quant() const;   // of the last intra unit
+  // The coder state after the last unit, and the bits it consumed before the stuffing.
   const FbaCodingState& coding_state() const;
   std::uint64_t last_bits() const;
-  // Frames the last unit says were skipped before it (skip_frames), 0..255.
+  // Frames the last unit says are skipped after it (skip_frames), 0..255.
   int last_skip_frames() const;
   // After an error: the bit offset in the unit where it was noticed.
   std::uint64_t error_bit() const;
-  // The frame_number an intra unit carries (its frame index modulo 65536); -1 for a P unit.
+  // fapcast profile: the frame_number an intra unit carries (its frame index modulo 65536); -1
+  // for a P unit or a standard unit.
   int last_frame_number() const;
 
  private:

@@ -1,6 +1,6 @@
 #pragma once
-// The text front-end: English text in, speech audio and a phone timeline out, from espeak-ng
-// (en-us voice) through its C API. Positions are samples of the returned audio, taken from the
+// The text front-end: text in any espeak-ng language (or SSML) in, speech audio and a phone
+// timeline out, from espeak-ng through its C API. Positions are samples of the returned audio, taken from the
 // events' exact `sample` field (their millisecond field is rounded).
 //
 // Segments: espeak-ng's phoneme events mark where each phone's sound starts; for a stop that
@@ -9,14 +9,20 @@
 // closure found in the audio (find_closure). The timeline is contiguous: each phone ends where
 // the next begins.
 //
+// Phones: en-us (the default) maps espeak-ng's mnemonics through phone_from_espeak; every other
+// language runs espeak-ng in IPA mode and maps each phoneme's IPA through its features
+// (ipa_features.hpp). Texts longer than kChunkBytes are synthesised sentence by sentence in
+// chunks of at most kChunkBytes (no length limit; espeak-ng's buffers stay bounded).
+//
 // Input rules (spec/phones.md, "Text front-end"):
-//  - valid UTF-8 of at most kMaxTextBytes bytes; no control characters except TAB, LF, CR;
+//  - valid UTF-8, any length; no control characters except TAB, LF, CR;
 //    anything else throws InputError (input_error.hpp) naming the byte offset;
 //  - empty or whitespace-only text gives empty speech (no samples, no phones) without espeak;
 //  - text espeak-ng says nothing for (e.g. "...") gives a short stretch of silence, phones all SIL;
 //  - emoji and non-Latin characters are read out by espeak-ng by name ("grinning face").
 // espeak-ng is not thread-safe: calls are serialised by a process-wide mutex.
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -29,9 +35,12 @@
 
 namespace fapcast {
 
-// Longest accepted text: 32 KiB is about 5,000 words, half an hour of speech, 80 MB of audio.
-// Longer texts must be split by the caller (e.g. per paragraph).
-inline constexpr std::size_t kMaxTextBytes = 32 * 1024;
+// Texts up to this size go to espeak-ng in one call; longer ones in chunks of whole sentences of
+// at most this size (a sentence longer than this is cut at a space, else at a code point).
+inline constexpr std::size_t kChunkBytes = 4 * 1024;
+
+// The default language: its phones come from the hand-checked mnemonic map.
+inline constexpr std::string_view kDefaultLanguage = "en-us";
 
 inline constexpr int kNoWord = -1;
 
@@ -40,7 +49,7 @@ struct PhoneEvent {
   std::int64_t event_sample;    // where espeak-ng's phoneme event put the phone
   std::int64_t release_sample;  // end of the closure's quiet stretch; = the phone's start for other phones
   int word;                     // index into Speech::words, kNoWord for silence
-  std::string espeak;           // the espeak-ng mnemonic reported
+  std::string espeak;           // the espeak-ng mnemonic reported (IPA for languages other than en-us)
   friend bool operator==(const PhoneEvent&, const PhoneEvent&) = default;
 };
 
@@ -66,12 +75,46 @@ struct SpeakOptions {
   // Speaking rate relative to espeak-ng's default of 175 words per minute (1.1 = 10 % faster);
   // the reference talker varies it per utterance. Clamped to espeak-ng's 80..450 wpm.
   double rate_factor = 1.0;
+  // espeak-ng language (voice) code as `espeak-ng --voices` lists it: "ru", "de", "cmn", "en-gb".
+  std::string language = std::string(kDefaultLanguage);
+  // espeak-ng voice variant (`espeak-ng --voices=variant`, the file name under !v/: "f2",
+  // "klatt", "Alex"); empty: the language's own voice.
+  std::string variant{};
+  // The text is SSML (espeakSSML): espeak-ng parses the markup; tags are not spoken. SSML is
+  // never split into chunks.
+  bool ssml = false;
+  // What input errors name as the text's source ("text: byte 12: ..."): a file name, "<stdin>".
+  std::string source = "text";
 };
 
-// Synthesises `text` (UTF-8) with espeak-ng en-us and segments it into phones and words.
-// Throws InputError for text that breaks the input rules above, std::runtime_error
-// if espeak-ng fails (e.g. its data is missing).
+// An installed espeak-ng language.
+struct EspeakLanguage {
+  std::string code;  // "ru", "en-us"
+  std::string name;  // "Russian", "English (America)"
+};
+// Every language the installed espeak-ng lists (its voices), in its order.
+std::vector<EspeakLanguage> espeak_languages();
+// Every voice variant the installed espeak-ng lists ("adam", "f2", ...).
+std::vector<std::string> espeak_variants();
+
+// Byte offsets where `text` is cut into chunks of at most `max_bytes` (the first is 0, the
+// last < text.size(); empty text gives none): after the white space that follows a sentence end
+// (. ! ? and their CJK forms, or a line break), packed greedily; a longer sentence is cut after
+// the last space that fits, else at the last code point boundary that fits.
+std::vector<std::size_t> chunk_offsets(std::string_view text, std::size_t max_bytes);
+
+// Synthesises `text` (UTF-8) with espeak-ng and segments it into phones and words.
+// Throws InputError for text that breaks the input rules above, std::invalid_argument for an
+// unknown language or variant ("espeak-ng: unknown language 'xx'") and for a phoneme whose IPA
+// has an unknown symbol (naming phoneme and language), std::runtime_error if espeak-ng fails
+// (e.g. its data is missing).
 Speech speak(std::string_view text, const SpeakOptions& options = {});
+
+// The same text as speak() gives, chunk by chunk (kChunkBytes), for callers that keep only one
+// chunk at a time: `sink` gets each chunk's speech in order, its samples and phones counted from
+// the chunk's own start, its words' byte offsets into the whole text. A text of at most
+// kChunkBytes (or SSML) is one chunk. Throws as speak() does (input errors before any chunk).
+void speak_chunks(std::string_view text, const SpeakOptions& options, const std::function<void(Speech&&)>& sink);
 
 // Checks the input rules; throws InputError "text: byte N: <rule>: <detail>" on the first
 // violation. Returns the byte offset of every code point (for espeak's character positions).
@@ -90,7 +133,7 @@ struct Closure {
 // windows every 2.5 ms) that starts at most 10 ms before and at most 40 ms after the event.
 // With no quiet stretch the closure is the event itself. After silence (nothing to drop from)
 // the onset is 50 ms before the event, bounded by region_begin.
-Closure find_closure(std::span<const std::int16_t> samples, int sample_rate_hz,
+Closure find_closure(std::span<const std::int16_t> samples, SampleRate sample_rate,
                      std::int64_t region_begin, std::int64_t event_sample, std::int64_t region_end);
 
 }  // namespace fapcast

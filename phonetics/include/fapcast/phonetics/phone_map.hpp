@@ -14,7 +14,7 @@
 namespace fapcast {
 
 // espeak-ng en-us mnemonic -> phone. Every symbol seen in the phoneme events for the 74,000
-// SUBTLEX-US words plus numbers and interjections (tests/synth/phone_map_test.cpp re-checks).
+// SUBTLEX-US words plus numbers and interjections (tests/phonetics/phone_test.cpp re-checks).
 inline constexpr auto kEspeakMap = std::to_array<std::pair<std::string_view, Phone>>({
     {"a", Phone::AE},     // trap
     {"aa", Phone::AE},    // bath (en-us: same as trap)
@@ -121,11 +121,21 @@ inline constexpr auto kIpaMap = std::to_array<std::pair<std::string_view, Phone>
     {"s", Phone::S}, {"ʃ", Phone::SH}, {"t", Phone::T}, {"ɾ", Phone::T}, {"ʔ", Phone::T},
     {"θ", Phone::TH}, {"v", Phone::V}, {"w", Phone::W}, {"j", Phone::Y}, {"z", Phone::Z},
     {"ʒ", Phone::ZH},
+    // Montreal Forced Aligner's IPA phone sets (english_mfa, english_us_mfa): diphthongs with a
+    // glide, dark l, palatal stops before front vowels, and the rarer consonants.
+    {"aj", Phone::AY}, {"aw", Phone::AW}, {"ej", Phone::EY}, {"ow", Phone::OW}, {"ɔj", Phone::OY},
+    {"əw", Phone::OW}, {"ɫ", Phone::L}, {"ʎ", Phone::L}, {"c", Phone::K}, {"ɟ", Phone::G},
+    {"ʈ", Phone::T}, {"ɖ", Phone::D}, {"ɱ", Phone::M}, {"ɲ", Phone::N}, {"ʋ", Phone::V},
+    {"ʉ", Phone::UW}, {"ɛː", Phone::EH}, {"eː", Phone::EY}, {"ɒː", Phone::AA},
+    // Praat's IPA chart symbols in hand-labelled grids (front rounded vowels have no English
+    // phone: œ, ø, y go to the rounded central/back vowel a listener hears).
+    {"œ", Phone::ER}, {"ø", Phone::ER}, {"y", Phone::UW},
 });
 // IPA marks that carry no phone: stress, syllable break, ties, secondary articulations,
 // the syllabic diacritic (n̩ = n), word separators.
-inline constexpr std::array<std::string_view, 11> kIpaIgnored{
-    "ˈ", "ˌ", ".", " ", "_", "\u0361", "\u035C", "\u203F", "ʲ", "\u0329", "ː"};
+inline constexpr std::array<std::string_view, 16> kIpaIgnored{
+    "ˈ", "ˌ", ".", " ", "_", "\u0361", "\u035C", "\u203F", "ʲ", "\u0329", "ː",
+    "ʰ", "ʷ", "\u032A", "ˑ", "\u0303"};  // aspiration, labialisation, dental, half-long, nasal (MFA)
 
 // A TIMIT/MOCHA label mapped to a phone. `closure` marks the closure half of a stop
 // (bcl dcl gcl pcl tcl kcl): an importer merges it with the release that follows.

@@ -10,12 +10,15 @@
 
 namespace fapcast {
 
+// The default values are what fapcast ships: `say`, `animate` and `eval synth` search with them
+// unless told otherwise (spec/search.md: beta 0.1 and a cap of 64, chosen by spec/evaluation.md
+// and the cap's cost in spec/search.md).
 struct SearchOptions {
   // Weight of the smoothness term: a join costs 1 + beta * C. beta = 0 minimises the number
   // of units alone.
-  double beta = 0.0;
+  double beta = 0.1;
   // Keep at most this many active states per target phone (the cheapest); nullopt = all.
-  std::optional<std::size_t> max_active;
+  std::optional<std::size_t> max_active = 64;
   // Skip the joins that provably cannot win or survive the cap (spec/search.md, "Pruning the
   // joins"). The result is identical either way, to the bit; false evaluates every pair of
   // active state and entry state, the reference the tests and the benchmark compare against.

@@ -31,28 +31,30 @@ std::span<const VisemeFallback, kVisemeClassCount> viseme_fallbacks();
 // "viseme-not-covered") naming the class and its substitutes when none is covered.
 VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v);
 
+// Everything that shapes a synthesised track; the default value is what fapcast ships (the CLI's
+// defaults are these members' defaults, so `eval synth` scores what `say` and `animate` make).
 struct SynthesisOptions {
-  SearchOptions search;  // beta, max_active
-  ConcatenationOptions concatenation;  // cross-fade, smoothing, hold weight
+  SearchOptions search;  // beta, max_active, duration term
+  ConcatenationOptions concatenation;  // where units hand over, cross-fade, smoothing, hold weight
 };
 
 struct SynthesizedTrack {
   TargetTimeline timeline;     // the target phones on the 60 fps grid (before substitution)
   // k columns, one row per voice frame 0..timeline.frame_count()-1; row n is shown from sample
-  // frame_to_sample(n, kVoiceFrameRate, timeline.sample_rate_hz): the first frame is at sample 0.
+  // frame_to_sample(n, kVoiceFrameRate, timeline.sample_rate): the first frame is at sample 0.
   Eigen::MatrixXf pca_frames;
   Eigen::MatrixXf tongue;      // frames x 5: FAP 43..47 values (tongue.hpp)
   SearchResult search;         // states, units, cost, active states per phone
   std::size_t substituted = 0; // target phones whose class the voice lacked (covered_viseme)
 };
 
-// Synthesises the animation of `phones` (sample positions at `sample_rate_hz`, see
+// Synthesises the animation of `phones` (sample positions at `sample_rate`, see
 // place_on_voice_grid for the rules and `end_sample`) on a voice: `graph` indexes the rows of
 // `frame_coefficients` (corpus frames x k PCA coefficients, 60 fps). Throws InputError for
 // phones breaking the rules or classes the voice cannot cover; an empty phone list gives an
 // empty track.
 SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
-                            std::span<const TimedPhone> phones, std::int64_t sample_rate_hz,
+                            std::span<const TimedPhone> phones, SampleRate sample_rate,
                             std::int64_t end_sample = 0, const SynthesisOptions& options = {},
                             const std::string& source = "phones");
 

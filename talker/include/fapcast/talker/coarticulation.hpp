@@ -7,13 +7,14 @@
 #include <string>
 #include <vector>
 
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
 #include "fapcast/talker/articulation.hpp"
 
 namespace fapcast {
 
 struct PhoneTimeline {
-  std::int32_t sample_rate_hz = 0;  // > 0
+  SampleRate sample_rate;  // valid
   std::vector<TimedPhone> phones;  // in time order, non-overlapping, each non-empty
 };
 

@@ -1,6 +1,7 @@
 #pragma once
 // L16 audio payload (RFC 3551 section 4.5.11): 16-bit signed samples, network byte order,
 // channels interleaved per sampling instant.
+#include "fapcast/core/sample_rate.hpp"
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -9,8 +10,8 @@ namespace fapcast {
 
 // Sampling instants per L16 packet: 10 ms of audio, fewer when 10 ms of all channels would not
 // fit in one datagram with `overhead` more bytes (SRTP's tag) (always >= 1). `channels` 1..255,
-// `sample_rate` >= 1.
-std::size_t l16_frames_per_packet(std::int64_t sample_rate, int channels, std::size_t overhead = 0);
+// `sample_rate` valid.
+std::size_t l16_frames_per_packet(SampleRate sample_rate, int channels, std::size_t overhead = 0);
 
 // Appends interleaved host-order samples in network byte order.
 void pack_l16(std::span<const std::int16_t> interleaved, std::vector<std::uint8_t>& out);

@@ -9,6 +9,7 @@ struct MediaUnit {
   std::int64_t sample = 0;          // position on the timeline, in samples of the RTP clock (>= 0)
   std::vector<std::uint8_t> bytes;  // one FBA access unit (or opaque bytes in tests)
   bool intra = false;               // decodable without any earlier unit
+  bool fapcast = false;             // an FBA unit of the fapcast profile (spec/fba.md §9)
   bool operator==(const MediaUnit&) const = default;
 };
 

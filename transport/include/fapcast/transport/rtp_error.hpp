@@ -19,6 +19,8 @@ enum class RtpErrc {
   kPayloadTooLarge,         // does not fit in one UDP datagram
   kBadRtcp,                 // an RTCP packet that is not a well-formed sender report
   kBadEndpoint,             // not udp://HOST:PORT
+  kUndecodable,             // a source on probation sent a unit that does not decode
+  kOutOfRun,                // a source on probation sent a packet outside its in-sequence run
 };
 
 const std::error_category& rtp_category() noexcept;

@@ -4,6 +4,7 @@
 // numbering and counts of both streams, the sender reports that tie them to one wallclock, and
 // SRTP when a key is given. It sends what it is handed, when it is handed it: pacing is the
 // caller's (RtpStreamer's blocking loop; `fapcast serve`'s timers).
+#include "fapcast/core/sample_rate.hpp"
 #include "fapcast/transport/asio.hpp"
 #include "fapcast/transport/media_unit.hpp"
 #include "fapcast/transport/rtcp_sender_report.hpp"
@@ -55,6 +56,10 @@ std::error_code pack_animation_packet(const MediaUnit& unit, std::size_t index,
                                       const RtpStreamIds& ids, std::uint8_t payload_type,
                                       std::vector<std::uint8_t>& out);
 
+// `destination` when its port P leaves room for P+3 (1..65532); else throws std::system_error
+// (RtpErrc::kBadEndpoint).
+udp::endpoint checked_rtp_destination(udp::endpoint destination);
+
 class RtpSender {
  public:
   // Opens the animation sockets towards `destination` (its port is P, 1..65532) and, when
@@ -68,11 +73,12 @@ class RtpSender {
   // `first_packet` sets M (RFC 3551 4.1: the start of a talkspurt).
   void send_audio(std::span<const std::int16_t> interleaved, int channels, std::int64_t first_instant,
                   bool first_packet, std::error_code& ec);
-  // Sender reports of both streams for media instant `sample`, shown at wallclock `ntp`.
-  void send_reports(std::int64_t sample, NtpTimestamp ntp, std::error_code& ec);
+  // Sender reports of both streams for media instant `sample`, shown at wallclock `ntp`; with
+  // `bye`, each compound also carries a BYE for its source (RFC 3550 6.6: the stream ended).
+  void send_reports(std::int64_t sample, NtpTimestamp ntp, bool bye, std::error_code& ec);
 
   // Instants per audio packet: 10 ms, fewer when they would not fit a datagram (with SRTP's tag).
-  std::size_t audio_instants_per_packet(std::int64_t sample_rate, int channels) const;
+  std::size_t audio_instants_per_packet(SampleRate sample_rate, int channels) const;
 
   const StreamCounts& animation_counts() const { return animation_; }
   const StreamCounts& audio_counts() const { return audio_; }

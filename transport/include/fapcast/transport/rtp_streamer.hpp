@@ -14,7 +14,7 @@ namespace fapcast {
 
 struct StreamOptions : RtpSenderOptions {
   bool pace = true;                          // real time; false: as fast as the socket takes it
-  std::int64_t clock_rate = 48'000;          // RTP clock of both streams (the audio rate)
+  SampleRate clock_rate{48'000};             // RTP clock of both streams (the audio rate)
   std::chrono::milliseconds rtcp_interval{1000};  // between sender reports (0: none)
 };
 

@@ -24,7 +24,7 @@ ExpressionField expression_field(const ExpressionBlend& blend);
 
 // The frames at `rate` shown while audio of `end_sample` samples plays: every j with
 // frame_to_sample(j, rate, sample_rate) < end_sample.
-std::int64_t frames_shown(std::int64_t end_sample, FrameRate rate, std::int64_t sample_rate);
+std::int64_t frames_shown(std::int64_t end_sample, FrameRate rate, SampleRate sample_rate);
 
 // FAP frames of `track` at options.rate: frame j shows the 60 fps frames interpolated at
 // j / rate seconds (resample_track, linear), i.e. sample

@@ -7,6 +7,7 @@
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/codec/feature_point_basis.hpp"
 #include "fapcast/core/audio.hpp"
+#include "fapcast/frontend/text_frontend.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
 #include "fapcast/synthesis/speech_expression.hpp"
 #include "fapcast/synthesis/synthesis.hpp"
@@ -23,6 +24,7 @@
 namespace fapcast {
 
 struct SpeakerSettings {
+  SpeakOptions speech;                        // espeak-ng: language, variant, SSML, rate
   SynthesisOptions synthesis;                 // the library's defaults: what `say` ships
   FrameRate rate{25, 1};                      // output frames per second
   std::optional<ExpressionBlend> expression;  // FAP 2, and the face's expression direction
@@ -46,8 +48,9 @@ class Speaker {
   // voice's face. `voice` must outlive the speaker.
   Speaker(const Voice& voice, SpeakerSettings settings, const std::string& source);
 
-  // Speaks one sentence (UTF-8). Throws InputError for text breaking the front-end's rules;
-  // white-space-only text gives an empty sentence (no audio, no frames).
+  // Speaks one sentence (UTF-8, or SSML when settings().speech says so) in the settings'
+  // language. Throws as fapcast::speak does (InputError for text breaking the front-end's
+  // rules); white-space-only text gives an empty sentence (no audio, no frames).
   SpokenSentence speak(std::string_view text) const;
 
   const SpeakerSettings& settings() const { return settings_; }

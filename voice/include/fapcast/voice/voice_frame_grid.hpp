@@ -38,7 +38,7 @@ inline constexpr FrameRate kVoiceFrameRate{static_cast<std::uint32_t>(kVoiceFram
 //    target; counted in `gaps_filled`), so the track starts at frame 0 = sample 0;
 //  - /p b m/ and /f v/ are held (TargetPhone::hold): the smoother must not round their shape.
 struct TargetTimeline {
-  std::int64_t sample_rate_hz = 0;
+  SampleRate sample_rate;
   std::vector<TargetPhone> phones;     // contiguous from frame 0
   std::vector<Phone> phone_of;         // the phone of each target (SIL for filled gaps)
   std::size_t dropped = 0;
@@ -49,8 +49,8 @@ struct TargetTimeline {
 // `end_sample` (e.g. the audio's length) extends the timeline with silence when it lies past
 // the last phone; phones running past it are the caller's concern (see tools' animate).
 // Throws InputError (source `source`, rule as above, detail naming the phone index) or
-// std::invalid_argument for sample_rate_hz < 1.
-TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, std::int64_t sample_rate_hz,
+// std::invalid_argument for an invalid sample rate.
+TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, SampleRate sample_rate,
                                    std::int64_t end_sample = 0, const std::string& source = "phones");
 
 // Whether a phone's visible shape must be met exactly (lip closure, lip to teeth).

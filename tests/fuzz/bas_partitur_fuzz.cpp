@@ -1,0 +1,14 @@
+// Fuzzes read_partitur (BAS Partitur): any input either reads or throws InputError.
+#include "fapcast/corpus/bas_partitur.hpp"
+#include "fapcast/core/input_error.hpp"
+
+#include <cstdint>
+#include <string_view>
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  try {
+    (void)fapcast::read_partitur(std::string_view(reinterpret_cast<const char*>(data), size), "fuzz");
+  } catch (const fapcast::InputError&) {
+  }
+  return 0;
+}

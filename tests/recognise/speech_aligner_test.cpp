@@ -1,0 +1,57 @@
+#include "fapcast/recognise/speech_aligner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fapcast/core/file_io.hpp"
+#include "fapcast/core/wav_file.hpp"
+
+namespace fapcast {
+namespace {
+
+const std::string kEmu = std::string(FAPCAST_TEST_DATA) + "/speech/emu-ae/";
+
+// A word the dictionary lacks ("beautifull" is no CMUdict entry) is aligned with espeak-ng's
+// pronunciation of it, and keeps its spelling in the output.
+TEST(SpeechAligner, AWordOutsideTheDictionaryGetsEspeakNgsPronunciation) {
+  SpeechAligner aligner;
+  const Audio audio = read_wav(kEmu + "msajc003.wav");
+  const SpeechAlignment a =
+      aligner.align(audio, parse_transcript("amongst her friends she was considered beautifull", "t.txt"), "msajc003.wav");
+  ASSERT_EQ(a.words.size(), 7u);
+  EXPECT_EQ(a.words[6].text, "beautifull");
+  EXPECT_EQ(a.words[6].byte_offset, 39u);
+  EXPECT_FALSE(a.words[6].low_confidence) << a.words[6].score_per_frame;
+  // its phones are B Y UW T ... as for "beautiful": the first is B, the word ends with the speech
+  std::size_t phones = 0;
+  Phone first = Phone::SIL;
+  for (const SpeechSegment& s : a.segments)
+    if (s.word == 6 && s.kind == SpeechSegmentKind::phone) {
+      if (phones++ == 0) first = s.phone;
+    }
+  EXPECT_EQ(first, Phone::B);
+  EXPECT_GE(phones, 6u);
+  EXPECT_GT(a.words[6].end_sample, a.samples * 8 / 10);
+}
+
+TEST(SpeechAligner, SegmentsCoverTheRecordingOnItsOwnTimeline) {
+  SpeechAligner aligner;
+  const Audio audio = read_wav(kEmu + "msajc010.wav");
+  const SpeechAlignment a =
+      aligner.align(audio, parse_transcript(read_file(kEmu + "msajc010.txt"), "msajc010.txt"), "msajc010.wav");
+  EXPECT_EQ(a.sample_rate, audio.sample_rate);  // 20 kHz, not the decoder's 16
+  EXPECT_EQ(a.samples, audio.instants());
+  ASSERT_FALSE(a.segments.empty());
+  EXPECT_EQ(a.segments.front().start_sample, 0);
+  EXPECT_EQ(a.segments.back().end_sample, a.samples);
+  for (std::size_t i = 1; i < a.segments.size(); ++i) EXPECT_EQ(a.segments[i].start_sample, a.segments[i - 1].end_sample);
+  EXPECT_EQ(a.segments.front().kind, SpeechSegmentKind::silence);
+}
+
+TEST(SpeechAligner, AFrameRateOtherThan100Or200IsABug) {
+  EXPECT_THROW(SpeechAligner({.frames_per_second = 150}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace fapcast

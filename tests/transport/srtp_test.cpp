@@ -2,14 +2,20 @@
 // RTCP, and on loopback sockets: an SRTP stream arrives whole; packets under another key, plain
 // RTP, tampered and replayed packets are refused and counted and never reach the stream.
 #include "fapcast/core/input_error.hpp"
+#include "fapcast/transport/rtcp_compound.hpp"
 #include "fapcast/transport/rtcp_sender_report.hpp"
 #include "fapcast/transport/rtp_streamer.hpp"
 #include "fapcast/transport/srtp_error.hpp"
 #include "fapcast/transport/srtp_session.hpp"
 #include "fapcast/transport/udp_receiver.hpp"
+#include "support/bad_inputs.hpp"
+#include "support/run_command.hpp"
 #include "transport/loopback_support.hpp"
 
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <thread>
 
 namespace fapcast {
 namespace {
@@ -56,6 +62,38 @@ TEST(SrtpKey, NamedBadKeysAndTheirMessages) {
   EXPECT_EQ(key_error("AA==AwQFBgcICQoLDA0ODxAREhMUFRYXGBkaGxwd"),
             "key: byte 4: srtp-key-base64: data after '=' padding");
   EXPECT_EQ(key_error(""), "key: byte 0: srtp-key-length: 0 bytes; AES_CM_128_HMAC_SHA1_80 takes 30 (16 of key, 14 of salt: 40 base64 characters)");
+}
+
+// The named bad key files (tests/data/srtp/bad/bad.NNN.<rule>.key) against their golden messages.
+const std::filesystem::path kBadKeys = std::filesystem::path(FAPCAST_TEST_DATA) / "srtp" / "bad";
+
+TEST(SrtpKey, NamedBadKeyFilesGiveTheirGoldenMessages) {
+  const auto golden = test::golden_errors(kBadKeys);
+  const auto names = test::bad_input_names(kBadKeys, ".key");
+  EXPECT_EQ(names.size(), 8u);
+  for (const std::string& name : names) {
+    std::string message = "accepted";
+    try {
+      (void)read_srtp_key_file(kBadKeys / name);
+    } catch (const InputError& e) {
+      message = e.what();
+      EXPECT_EQ(e.rule(), test::rule_of(name)) << name;
+    }
+    const std::string prefix = (kBadKeys / "").string();
+    if (message.starts_with(prefix)) message.erase(0, prefix.size());
+    ASSERT_TRUE(golden.count(name)) << name << " has no line in expected-errors.txt; it says: " << message;
+    EXPECT_EQ(message, golden.at(name));
+  }
+  EXPECT_EQ(golden.size(), names.size()) << "a line of expected-errors.txt names no file";
+}
+
+TEST(SrtpKey, AKeyFileReadsWithOrWithoutItsNewline) {
+  const std::string dir = test::make_temp_dir("srtp-key");
+  std::ofstream(dir + "/crlf.key") << "inline:" << srtp_key_text(counting_key()) << "\r\n";
+  std::ofstream(dir + "/bare.key") << srtp_key_text(counting_key(5));
+  EXPECT_EQ(read_srtp_key_file(dir + "/crlf.key"), counting_key());
+  EXPECT_EQ(read_srtp_key_file(dir + "/bare.key"), counting_key(5));
+  EXPECT_THROW((void)read_srtp_key_file(dir + "/missing.key"), std::runtime_error);
 }
 
 std::vector<std::uint8_t> rtp_packet(std::uint16_t seq, std::uint32_t ssrc = 0x1234) {
@@ -202,6 +240,62 @@ TEST(SrtpLoopback, ReplayedDatagramsAreRefusedAndCounted) {
   EXPECT_EQ(rx.units.size(), units.size());
   EXPECT_EQ(rx.receiver.srtp_stats()->replayed, shim.duplicates_sent);
   EXPECT_EQ(rx.stream.stats().duplicates, 0u) << "SRTP refused the copies before the RTP layer saw them";
+}
+
+// SRTCP goes through the same session before the RTCP parser: the sender's closing reports
+// authenticate, their BYE ends the session at once (not at the idle timeout), and the sender
+// reports are counted as #17's receiver counts them.
+TEST(SrtpLoopback, SrtcpReportsAndByeAuthenticateAndEndTheSession) {
+  const auto units = test::synthetic_units(60, 25);
+  ReceiverSocketOptions sock;
+  sock.srtp = counting_key();
+  ReceiverThread rx(loopback(), {}, sock);
+  rx.start(3000ms);
+  asio::io_context io;
+  StreamOptions o = srtp_stream(counting_key());
+  o.rtcp_interval = 1000ms;
+  const auto sent = std::chrono::steady_clock::now();
+  RtpStreamer(io, rx.receiver.local_endpoint(), o).run(units);
+  rx.join();
+  EXPECT_EQ(rx.units.size(), units.size());
+  EXPECT_EQ(rx.report.end, ReceiveEnd::kBye);
+  EXPECT_LT(rx.ended - sent, 2000ms) << "the BYE, not the idle timer, ended it";
+  EXPECT_GE(rx.stream.stats().byes, 1u);
+  EXPECT_GE(rx.stream.stats().sender_reports, 1u);
+  EXPECT_EQ(rx.stream.stats().rtcp_refused, 0u);
+  EXPECT_EQ(rx.receiver.srtp_stats()->auth_failed + rx.receiver.srtp_stats()->malformed, 0u);
+}
+
+// A spoofed BYE (plain RTCP from the source's own address, naming its SSRC) cannot end an SRTP
+// session: it is refused before the RTCP parser and counted, and the session runs to its idle
+// timeout.
+TEST(SrtpLoopback, ASpoofedPlainByeIsRefusedAndCounted) {
+  const auto units = test::synthetic_units(40, 25);
+  ReceiverSocketOptions sock;
+  sock.srtp = counting_key();
+  ReceiverThread rx(loopback(), {}, sock);
+  rx.start(300ms);
+  asio::io_context io;
+  StreamOptions o = srtp_stream(counting_key());  // no RTCP of its own
+  o.animation_ids.ssrc = 0xfeed0001;
+  RtpStreamer(io, rx.receiver.local_endpoint(), o).run(units);
+  std::vector<std::uint8_t> bye;
+  pack_sender_report({o.animation_ids.ssrc, {3976214400u, 0}, 0, 40, 40}, bye);
+  pack_bye(o.animation_ids.ssrc, bye);
+  udp::socket spoofer(io, udp::endpoint(asio::ip::make_address("127.0.0.1"), 0));
+  const udp::endpoint rtcp_port(rx.receiver.local_endpoint().address(),
+                                static_cast<std::uint16_t>(rx.receiver.local_endpoint().port() + 1));
+  std::this_thread::sleep_for(50ms);  // the receiver validates the source first (else RTCP is filtered)
+  for (int i = 0; i < 3; ++i) spoofer.send_to(asio::buffer(bye), rtcp_port);
+  rx.join();
+  EXPECT_EQ(rx.units.size(), units.size());
+  EXPECT_EQ(rx.report.end, ReceiveEnd::kIdle);
+  EXPECT_EQ(rx.stream.stats().byes, 0u);
+  EXPECT_EQ(rx.report.rtcp_datagrams, 3u);
+  const SrtpStats& s = *rx.receiver.srtp_stats();
+  EXPECT_EQ(s.auth_failed + s.malformed + rx.report.rtcp_filtered, 3u);  // plain RTCP is malformed SRTCP
+  EXPECT_GE(s.auth_failed + s.malformed, 1u);
+  EXPECT_EQ(s.replayed, 0u);
 }
 
 }  // namespace

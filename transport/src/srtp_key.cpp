@@ -24,6 +24,10 @@ SrtpMasterKey parse_srtp_key(std::string_view text, const std::string& source) {
   std::size_t begin = 0, end = text.size();
   while (begin < end && (text[begin] == ' ' || text[begin] == '\t')) ++begin;
   while (end > begin && (text[end - 1] == ' ' || text[end - 1] == '\t')) --end;
+  if (const auto at = text.find(kInline, begin); at != std::string_view::npos && at != begin)
+    throw fail(begin, "srtp-key-base64",
+               std::to_string(at - begin) +
+                   " bytes before 'inline:' (an SDP a=crypto line?): the file holds the key alone, optionally after inline:");
   if (text.substr(begin, kInline.size()) == kInline) begin += kInline.size();
   std::vector<std::uint8_t> bytes;
   std::uint32_t bits = 0;

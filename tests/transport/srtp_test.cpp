@@ -183,6 +183,12 @@ TEST(SrtpSession, RefusesAPacketThatWouldNotFitOneDatagram) {
   EXPECT_EQ(tx.protect_rtp(big), SrtpErrc::kTooLarge);
 }
 
+ReceiverSocketOptions srtp_sockets(const SrtpMasterKey& key) {
+  ReceiverSocketOptions o;
+  o.srtp = key;
+  return o;
+}
+
 StreamOptions srtp_stream(const SrtpMasterKey& key) {
   StreamOptions o;
   o.pace = false;
@@ -193,9 +199,7 @@ StreamOptions srtp_stream(const SrtpMasterKey& key) {
 
 TEST(SrtpLoopback, AnSrtpStreamArrivesWholeUnderItsKey) {
   const auto units = test::synthetic_units(200, 25);
-  ReceiverSocketOptions sock;
-  sock.srtp = counting_key();
-  ReceiverThread rx(loopback(), {}, sock);
+  ReceiverThread rx(loopback(), {}, srtp_sockets(counting_key()));
   rx.start(300ms);
   asio::io_context io;
   RtpStreamer(io, rx.receiver.local_endpoint(), srtp_stream(counting_key())).run(units);
@@ -209,9 +213,7 @@ TEST(SrtpLoopback, AnSrtpStreamArrivesWholeUnderItsKey) {
 
 TEST(SrtpLoopback, AnotherKeyAndPlainRtpDeliverNothingAndAreCounted) {
   const auto units = test::synthetic_units(50, 25);
-  ReceiverSocketOptions sock;
-  sock.srtp = counting_key();
-  ReceiverThread rx(loopback(), {}, sock);
+  ReceiverThread rx(loopback(), {}, srtp_sockets(counting_key()));
   rx.start(300ms);
   asio::io_context io;
   RtpStreamer(io, rx.receiver.local_endpoint(), srtp_stream(counting_key(9))).run(units);
@@ -227,9 +229,7 @@ TEST(SrtpLoopback, AnotherKeyAndPlainRtpDeliverNothingAndAreCounted) {
 
 TEST(SrtpLoopback, ReplayedDatagramsAreRefusedAndCounted) {
   const auto units = test::synthetic_units(120, 25);
-  ReceiverSocketOptions sock;
-  sock.srtp = counting_key();
-  ReceiverThread rx(loopback(), {}, sock);
+  ReceiverThread rx(loopback(), {}, srtp_sockets(counting_key()));
   rx.start(400ms);
   test::LossyShim shim(rx.receiver.local_endpoint(), 0.0, 1.0, 0.0, 1);  // every datagram twice
   shim.start(300ms);
@@ -247,9 +247,7 @@ TEST(SrtpLoopback, ReplayedDatagramsAreRefusedAndCounted) {
 // reports are counted as #17's receiver counts them.
 TEST(SrtpLoopback, SrtcpReportsAndByeAuthenticateAndEndTheSession) {
   const auto units = test::synthetic_units(60, 25);
-  ReceiverSocketOptions sock;
-  sock.srtp = counting_key();
-  ReceiverThread rx(loopback(), {}, sock);
+  ReceiverThread rx(loopback(), {}, srtp_sockets(counting_key()));
   rx.start(3000ms);
   asio::io_context io;
   StreamOptions o = srtp_stream(counting_key());
@@ -271,9 +269,7 @@ TEST(SrtpLoopback, SrtcpReportsAndByeAuthenticateAndEndTheSession) {
 // timeout.
 TEST(SrtpLoopback, ASpoofedPlainByeIsRefusedAndCounted) {
   const auto units = test::synthetic_units(40, 25);
-  ReceiverSocketOptions sock;
-  sock.srtp = counting_key();
-  ReceiverThread rx(loopback(), {}, sock);
+  ReceiverThread rx(loopback(), {}, srtp_sockets(counting_key()));
   rx.start(300ms);
   asio::io_context io;
   StreamOptions o = srtp_stream(counting_key());  // no RTCP of its own

@@ -2,6 +2,7 @@
 // RTCP, and on loopback sockets: an SRTP stream arrives whole; packets under another key, plain
 // RTP, tampered and replayed packets are refused and counted and never reach the stream.
 #include "fapcast/core/input_error.hpp"
+#include "fapcast/transport/l16.hpp"
 #include "fapcast/transport/rtcp_compound.hpp"
 #include "fapcast/transport/rtcp_sender_report.hpp"
 #include "fapcast/transport/rtp_streamer.hpp"
@@ -181,6 +182,25 @@ TEST(SrtpSession, RefusesAPacketThatWouldNotFitOneDatagram) {
   std::vector<std::uint8_t> big;
   ASSERT_FALSE(pack_rtp(h, std::vector<std::uint8_t>(kMaxDatagramBytes - 12 - 5, 1), big));
   EXPECT_EQ(tx.protect_rtp(big), SrtpErrc::kTooLarge);
+}
+
+// L16 packets leave room for the tag: 48 kHz stereo fits 360 instants in the clear, 357 with
+// SRTP's 10 bytes, and the protected packet still fits one datagram.
+TEST(SrtpSession, L16PacketsWithTheTagStillFitOneDatagram) {
+  EXPECT_EQ(l16_frames_per_packet(SampleRate{48000}, 2), 360u);
+  EXPECT_EQ(l16_frames_per_packet(SampleRate{48000}, 2, kSrtpRtpOverheadBytes), 357u);
+  SrtpSession tx(counting_key(), SrtpDirection::kSend);
+  for (const int channels : {1, 2, 6}) {
+    const std::size_t n = l16_frames_per_packet(SampleRate{96000}, channels, kSrtpRtpOverheadBytes);
+    std::vector<std::uint8_t> payload;
+    pack_l16(std::vector<std::int16_t>(n * static_cast<std::size_t>(channels), 7), payload);
+    RtpHeader h;
+    h.sequence = static_cast<std::uint16_t>(channels);  // one session never protects an index twice
+    std::vector<std::uint8_t> packet;
+    ASSERT_FALSE(pack_rtp(h, payload, packet));
+    ASSERT_FALSE(tx.protect_rtp(packet)) << channels;
+    EXPECT_LE(packet.size(), kMaxDatagramBytes) << channels;
+  }
 }
 
 ReceiverSocketOptions srtp_sockets(const SrtpMasterKey& key) {

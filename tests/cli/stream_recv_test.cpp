@@ -114,13 +114,17 @@ TEST(StreamRecvCli, BadUsageAndBadInput) {
   EXPECT_NE(silent.err.find("no decodable frames"), std::string::npos) << silent.err;
 }
 
-// SRTP end to end: under one key the track arrives whole and every packet authenticates; a
-// sender without the key (plain RTP) or under another key delivers nothing, each packet refused
-// before the RTP parser and counted on the srtp line.
-TEST(StreamRecvCli, SrtpUnderTheKeyAndRefusedWithoutIt) {
+// SRTP end to end (spec/rtp.md section 7): key files a (the receiver's) and b (another).
+std::string srtp_keys() {
   const std::string dir = make_temp_dir("srtp-cli");
   std::ofstream(dir + "/a.key") << "inline:AAECAwQFBgcICQoLDA0ODxAREhMUFRYXGBkaGxwd\n";
   std::ofstream(dir + "/b.key") << "AQIDBAUGBwgJCgsMDQ4PEBESExQVFhcYGRobHB0e\n";
+  return dir;
+}
+
+// Under the receiver's key the track arrives whole and every packet authenticates.
+TEST(StreamRecvCli, SrtpUnderTheKeyArrivesWhole) {
+  const std::string dir = srtp_keys();
   const std::string key_a = " --srtp-key-file " + dir + "/a.key";
   const Loopback good = stream_into_recv(kJoy, "--iperiod 10" + key_a, dir + "/good.fap", key_a);
   ASSERT_EQ(good.send.exit_code, 0) << good.send.err;
@@ -128,21 +132,33 @@ TEST(StreamRecvCli, SrtpUnderTheKeyAndRefusedWithoutIt) {
   EXPECT_NE(good.recv.out.find("108 accepted, 0 lost"), std::string::npos) << good.recv.out;
   EXPECT_NE(good.recv.out.find(" 0 failed authentication, 0 replayed, 0 malformed"), std::string::npos) << good.recv.out;
   EXPECT_EQ(read_track_file(dir + "/good.fap").frames, read_track_file(kJoy).frames);
+}
 
-  const Loopback other = stream_into_recv(kJoy, "--iperiod 10 --srtp-key-file " + dir + "/b.key", dir + "/other.fap", key_a);
+// A sender under another key delivers nothing: each packet refused before the RTP parser and
+// counted on the srtp line; no output is written.
+TEST(StreamRecvCli, SrtpUnderAnotherKeyIsRefusedAndCounted) {
+  const std::string dir = srtp_keys();
+  const Loopback other = stream_into_recv(kJoy, "--iperiod 10 --srtp-key-file " + dir + "/b.key", dir + "/other.fap",
+                                          "--srtp-key-file " + dir + "/a.key");
   ASSERT_EQ(other.send.exit_code, 0) << other.send.err;
   EXPECT_EQ(other.recv.exit_code, 1) << other.recv.out;
   EXPECT_NE(other.recv_err.find("recv-no-frames"), std::string::npos) << other.recv_err;
   EXPECT_NE(other.recv.out.find("packets:   0 accepted"), std::string::npos) << other.recv.out;
-  // 108 RTP packets and at least one SRTCP report, every one under the wrong key.
-  EXPECT_NE(other.recv.out.find("srtp:      0 authenticated, 1"), std::string::npos) << other.recv.out;
+  // 108 RTP packets under the wrong key (RTCP is refused earlier: no source was validated).
+  EXPECT_NE(other.recv.out.find("srtp:      0 authenticated, 108 failed authentication"), std::string::npos)
+      << other.recv.out;
   EXPECT_FALSE(std::filesystem::exists(dir + "/other.fap"));
+}
 
-  const Loopback plain = stream_into_recv(kJoy, "--iperiod 10", dir + "/plain.fap", key_a);
+// A sender without a key (plain RTP, as a spoofer would send) delivers nothing either.
+TEST(StreamRecvCli, PlainRtpIntoAnSrtpReceiverIsRefused) {
+  const std::string dir = srtp_keys();
+  const Loopback plain = stream_into_recv(kJoy, "--iperiod 10", dir + "/plain.fap", "--srtp-key-file " + dir + "/a.key");
   ASSERT_EQ(plain.send.exit_code, 0) << plain.send.err;
   EXPECT_EQ(plain.recv.exit_code, 1) << plain.recv.out;
   EXPECT_NE(plain.recv.out.find("packets:   0 accepted"), std::string::npos) << plain.recv.out;
   EXPECT_NE(plain.recv.out.find("srtp:      0 authenticated, "), std::string::npos) << plain.recv.out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/plain.fap"));
 }
 
 // A bad key file stops both commands before any socket work, with the key reader's message.

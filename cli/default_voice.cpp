@@ -110,4 +110,8 @@ fs::path ensure_default_voice(bool quiet) {
   return path;
 }
 
+Voice open_voice_or_default(const std::filesystem::path& path, bool quiet) {
+  return Voice::open(path.empty() ? ensure_default_voice(quiet) : path);
+}
+
 }  // namespace fapcast::cli

@@ -1,6 +1,8 @@
 #pragma once
 // The default voice (spec/architecture.md, "The default world"): built from the SYNTHETIC
 // reference corpus (seed 1) on first use and cached, so `say` and `animate` work without --voice.
+#include "fapcast/voice/voice.hpp"
+
 #include <filesystem>
 #include <string>
 
@@ -21,5 +23,8 @@ std::filesystem::path ensure_default_voice(bool quiet);
 // UTC ("2026-11-22T04:00:00Z"). Throws std::runtime_error (bad input) when SOURCE_DATE_EPOCH is not a
 // non-negative integer.
 std::string voice_build_time_utc();
+
+// Opens `path`, or the default voice (built on first use) when it is empty.
+Voice open_voice_or_default(const std::filesystem::path& path, bool quiet);
 
 }  // namespace fapcast::cli

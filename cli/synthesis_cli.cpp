@@ -3,9 +3,10 @@
 #include "command.hpp"
 #include "output_check.hpp"
 #include "fapcast/render/mesh_export.hpp"
+#include "default_voice.hpp"
 #include "fap_output.hpp"
 #include "file_extension.hpp"
-#include "voice_face.hpp"
+#include "fapcast/utterance/voice_face.hpp"
 
 #include "fapcast/codec/gltf_export.hpp"
 #include "fapcast/face/face_model.hpp"

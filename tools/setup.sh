@@ -19,7 +19,7 @@ run_packages=(
   build-essential       # g++ 12, make, libc headers
   cmake                 # the build (CMakeLists.txt)
   ninja-build           # the generator tools/build.sh uses
-  pkg-config            # finds sndfile and espeak-ng
+  pkg-config            # finds sndfile, espeak-ng, libsrtp2
   libeigen3-dev         # matrices: PCA, RBF, the unit search's features
   libboost-dev          # Boost.Asio: UDP sockets of the RTP transport
   libopenmesh-dev       # model adaptation (deformation transfer over the mesh)
@@ -34,6 +34,7 @@ run_packages=(
   libsphinxbase-dev     # its feature, grammar and log-math library
   pocketsphinx-en-us    # its US English acoustic model and pronouncing dictionary
   libsamplerate0-dev    # recorded speech resampled to the model's 16 kHz
+  libsrtp2-dev          # SRTP/SRTCP of the RTP transport (stream/recv --srtp-key-file)
 )
 
 # tests/viewer's npm packages (three.js, @pixiv/three-vrm, three-vrm-animation, node-osc), exactly as

@@ -11,6 +11,7 @@
 #include "fapcast/transport/fba_track.hpp"
 #include "fapcast/transport/timeline.hpp"
 #include "fapcast/transport/track_file.hpp"
+#include "fapcast/transport/srtp_key.hpp"
 #include "fapcast/transport/udp_receiver.hpp"
 #include "fapcast/transport/udp_url.hpp"
 
@@ -35,6 +36,7 @@ struct RecvArgs {
   std::int64_t clock_rate = kDefaultSampleRate.hz;
   int reorder_ms = 40;
   double max_seconds = 3600;
+  std::string srtp_key_file;
 };
 
 asio::ip::address address_option(const std::string& name, const std::string& text) {
@@ -52,6 +54,7 @@ void run_recv(const RecvArgs& a) {
   ReceiverSocketOptions socket;
   if (!a.source.empty()) socket.source = address_option("--source", a.source);
   if (!a.interface.empty()) socket.interface = address_option("--interface", a.interface);
+  if (!a.srtp_key_file.empty()) socket.srtp = read_srtp_key_file(a.srtp_key_file);
   AtomicFile output(a.output);  // fails now, before listening, when the output cannot be written
 
   asio::io_context io;
@@ -107,8 +110,12 @@ void run_recv(const RecvArgs& a) {
             << " sequence jumps, " << r.filtered << " from other addresses\n"
             << "rtcp:      " << r.rtcp_datagrams << " datagrams, " << s.sender_reports
             << " sender reports, " << s.byes << " bye, " << s.rtcp_refused + r.rtcp_filtered
-            << " refused\n"
-            << "jitter:    " << stream.jitter_seconds() * 1000 << " ms (RFC 3550 A.8)\n"
+            << " refused\n";
+  if (const SrtpStats* srtp = receiver.srtp_stats())
+    std::cout << "srtp:      " << srtp->unprotected_packets << " authenticated, " << srtp->auth_failed
+              << " failed authentication, " << srtp->replayed << " replayed, " << srtp->malformed
+              << " malformed (RTP and RTCP, refused before the parsers)\n";
+  std::cout << "jitter:    " << stream.jitter_seconds() * 1000 << " ms (RFC 3550 A.8)\n"
             << "frames:    " << track.sequence().frames.size() << " from sender frame "
             << t.first_sender_frame << " (" << t.decoded << " decoded, " << t.leading_frames
             << " held before the first, " << t.held_frames << " held over gaps, "
@@ -157,6 +164,8 @@ const cli::Registration reg{"recv", [](CLI::App& app) {
   cmd->add_option("--max-seconds", args->max_seconds,
                   "Longest track kept, in seconds at the stream's frame rate (the session ends there)")
       ->check(CLI::Range(0.1, 86400.0));
+  cmd->add_option("--srtp-key-file", args->srtp_key_file,
+                  "Receive SRTP under the base64 master key in this file: spoofed, tampered and replayed packets are refused and counted");
   cmd->callback([args] { run_recv(*args); });
 }};
 

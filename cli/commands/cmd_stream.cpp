@@ -5,6 +5,7 @@
 
 #include "fapcast/transport/fba_track.hpp"
 #include "fapcast/transport/rtp_streamer.hpp"
+#include "fapcast/transport/srtp_key.hpp"
 #include "fapcast/transport/timeline.hpp"
 #include "fapcast/transport/track_file.hpp"
 #include "fapcast/transport/udp_url.hpp"
@@ -33,6 +34,7 @@ struct StreamArgs {
   int payload_type = kDefaultFbaPayloadType;
   int audio_payload_type = kDefaultL16PayloadType;
   int rtcp_ms = 1000;
+  std::string srtp_key_file;
 };
 
 // What the stream carries (spec/rtp.md §2): by default the values sent, losslessly: the standard
@@ -84,6 +86,7 @@ void run_stream(const StreamArgs& a) {
   if (a.ttl >= 0) options.socket.ttl = a.ttl;
   if (!a.interface.empty()) options.socket.interface = asio::ip::make_address(a.interface);
   options.socket.multicast_loopback = !a.no_loopback;
+  if (!a.srtp_key_file.empty()) options.srtp = read_srtp_key_file(a.srtp_key_file);
 
   FbaEncoderOptions fba = fba_choice(seq, a);
   fba.intra_period = a.iperiod;
@@ -138,6 +141,8 @@ const cli::Registration reg{"stream", [](CLI::App& app) {
       ->check(CLI::Range(96, 127));
   cmd->add_option("--rtcp-interval-ms", args->rtcp_ms, "Milliseconds between sender reports (0: none)")
       ->check(CLI::Range(0, 60000));
+  cmd->add_option("--srtp-key-file", args->srtp_key_file,
+                  "Send SRTP/SRTCP (AES_CM_128_HMAC_SHA1_80) under the base64 master key in this file");
   cmd->callback([args] { run_stream(*args); });
 }};
 

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -36,12 +37,13 @@ struct Loopback {
   CommandResult send, recv;
   std::string recv_err;
 };
-Loopback stream_into_recv(const std::string& input, const std::string& args, const std::string& out) {
+Loopback stream_into_recv(const std::string& input, const std::string& args, const std::string& out,
+                          const std::string& recv_args = "") {
   const std::string dir = make_temp_dir("stream");
   const std::string url = "udp://127.0.0.1:" + std::to_string(free_port());
   Loopback r;
   std::thread receiver([&] {
-    r.recv = run_command("(" + fapcast("recv " + url + " -o " + out + " --timeout 1") + " 2>" + dir + "/recv.err)");
+    r.recv = run_command("(" + fapcast("recv " + url + " -o " + out + " --timeout 1 " + recv_args) + " 2>" + dir + "/recv.err)");
   });
   for (int i = 0; i < 100 && slurp(dir + "/recv.err").find("listening") == std::string::npos; ++i)
     std::this_thread::sleep_for(50ms);
@@ -110,6 +112,74 @@ TEST(StreamRecvCli, BadUsageAndBadInput) {
   const auto silent = run_command(fapcast("recv udp://127.0.0.1:0 -o /tmp/never.fap --timeout 0.2"));
   EXPECT_EQ(silent.exit_code, 1);
   EXPECT_NE(silent.err.find("no decodable frames"), std::string::npos) << silent.err;
+}
+
+// SRTP end to end (spec/rtp.md section 7): key files a (the receiver's) and b (another).
+std::string srtp_keys() {
+  const std::string dir = make_temp_dir("srtp-cli");
+  std::ofstream(dir + "/a.key") << "inline:AAECAwQFBgcICQoLDA0ODxAREhMUFRYXGBkaGxwd\n";
+  std::ofstream(dir + "/b.key") << "AQIDBAUGBwgJCgsMDQ4PEBESExQVFhcYGRobHB0e\n";
+  return dir;
+}
+
+// Under the receiver's key the track arrives whole and every packet authenticates.
+TEST(StreamRecvCli, SrtpUnderTheKeyArrivesWhole) {
+  const std::string dir = srtp_keys();
+  const std::string key_a = " --srtp-key-file " + dir + "/a.key";
+  const Loopback good = stream_into_recv(kJoy, "--iperiod 10" + key_a, dir + "/good.fap", key_a);
+  ASSERT_EQ(good.send.exit_code, 0) << good.send.err;
+  ASSERT_EQ(good.recv.exit_code, 0) << good.recv_err;
+  EXPECT_NE(good.recv.out.find("108 accepted, 0 lost"), std::string::npos) << good.recv.out;
+  EXPECT_NE(good.recv.out.find(" 0 failed authentication, 0 replayed, 0 malformed"), std::string::npos) << good.recv.out;
+  EXPECT_EQ(read_track_file(dir + "/good.fap").frames, read_track_file(kJoy).frames);
+}
+
+// A sender under another key delivers nothing: each packet refused before the RTP parser and
+// counted on the srtp line; no output is written.
+TEST(StreamRecvCli, SrtpUnderAnotherKeyIsRefusedAndCounted) {
+  const std::string dir = srtp_keys();
+  const Loopback other = stream_into_recv(kJoy, "--iperiod 10 --srtp-key-file " + dir + "/b.key", dir + "/other.fap",
+                                          "--srtp-key-file " + dir + "/a.key");
+  ASSERT_EQ(other.send.exit_code, 0) << other.send.err;
+  EXPECT_EQ(other.recv.exit_code, 1) << other.recv.out;
+  EXPECT_NE(other.recv_err.find("recv-no-frames"), std::string::npos) << other.recv_err;
+  EXPECT_NE(other.recv.out.find("packets:   0 accepted"), std::string::npos) << other.recv.out;
+  // 108 RTP packets under the wrong key (RTCP is refused earlier: no source was validated).
+  EXPECT_NE(other.recv.out.find("srtp:      0 authenticated, 108 failed authentication"), std::string::npos)
+      << other.recv.out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/other.fap"));
+}
+
+// A sender without a key (plain RTP, as a spoofer would send) delivers nothing either.
+TEST(StreamRecvCli, PlainRtpIntoAnSrtpReceiverIsRefused) {
+  const std::string dir = srtp_keys();
+  const Loopback plain = stream_into_recv(kJoy, "--iperiod 10", dir + "/plain.fap", "--srtp-key-file " + dir + "/a.key");
+  ASSERT_EQ(plain.send.exit_code, 0) << plain.send.err;
+  EXPECT_EQ(plain.recv.exit_code, 1) << plain.recv.out;
+  EXPECT_NE(plain.recv.out.find("packets:   0 accepted"), std::string::npos) << plain.recv.out;
+  EXPECT_NE(plain.recv.out.find("srtp:      0 authenticated, "), std::string::npos) << plain.recv.out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/plain.fap"));
+}
+
+// A bad key file stops both commands before any socket work, with the key reader's message.
+TEST(StreamRecvCli, BadSrtpKeyFilesNameTheFileAndTheRule) {
+  const std::string bad = std::string(FAPCAST_TEST_DATA) + "/srtp/bad/";
+  const auto recv = run_command(fapcast("recv udp://127.0.0.1:0 -o " + make_temp_dir("srtp-bad") +
+                                        "/o.fap --srtp-key-file " + bad + "bad.001.srtp-key-base64.key"));
+  EXPECT_EQ(recv.exit_code, 1);
+  EXPECT_NE(recv.err.find(bad + "bad.001.srtp-key-base64.key: byte 38: srtp-key-base64: character 33 is not base64"),
+            std::string::npos)
+      << recv.err;
+  EXPECT_EQ(recv.err.find("listening"), std::string::npos) << recv.err;
+  const auto stream = run_command(fapcast("stream " + kJoy + " -o udp://127.0.0.1:9 --srtp-key-file " + bad +
+                                          "bad.004.srtp-key-weak.key"));
+  EXPECT_EQ(stream.exit_code, 1);
+  EXPECT_NE(stream.err.find(bad + "bad.004.srtp-key-weak.key: byte 0: srtp-key-weak: every byte is the same"),
+            std::string::npos)
+      << stream.err;
+  const auto missing = run_command(fapcast("stream " + kJoy + " -o udp://127.0.0.1:9 --srtp-key-file /nonexistent/k.key"));
+  EXPECT_EQ(missing.exit_code, 1);
+  EXPECT_NE(missing.err.find("/nonexistent/k.key"), std::string::npos) << missing.err;
 }
 
 }  // namespace

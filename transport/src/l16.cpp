@@ -6,9 +6,9 @@
 
 namespace fapcast {
 
-std::size_t l16_frames_per_packet(SampleRate sample_rate, int channels) {
+std::size_t l16_frames_per_packet(SampleRate sample_rate, int channels, std::size_t overhead) {
   const std::size_t ten_ms = static_cast<std::size_t>(std::max<std::int64_t>(1, sample_rate.hz / 100));
-  const std::size_t room = (kMaxDatagramBytes - kRtpFixedHeaderBytes) /
+  const std::size_t room = (kMaxDatagramBytes - kRtpFixedHeaderBytes - std::min<std::size_t>(overhead, 64)) /
                            (2 * static_cast<std::size_t>(std::max(1, channels)));
   return std::max<std::size_t>(1, std::min(ten_ms, room));
 }

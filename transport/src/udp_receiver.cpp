@@ -55,6 +55,7 @@ void UdpReceiver::open_socket(udp::socket& socket, udp::endpoint at, boost::syst
 }
 
 void UdpReceiver::open(udp::endpoint listen, std::error_code& ec) {
+  if (options_.srtp) srtp_.emplace(*options_.srtp, SrtpDirection::kReceive);
   boost::system::error_code bec;
   if (!options_.rtcp) {
     open_socket(socket_, listen, bec);
@@ -139,10 +140,14 @@ ReceiveReport UdpReceiver::run(RtpStreamReceiver& stream, const ReceiveLimits& l
               ++report.filtered;
               return;
             }
+            // SRTP first: a packet without the key's tag, or one already received, is refused
+            // (counted in srtp_stats()) before the RTP parser and the source validation see it.
+            std::size_t length = n;
+            if (srtp_ && srtp_->unprotect_rtp({buffer.data(), n}, length)) return;
             // Only packets of the validated source feed the idle timer: a decodable packet held
             // on probation is not yet accepted (a stream of one-packet sources would keep it alive).
             const std::uint64_t accepted_before = stream.stats().accepted;
-            if (!stream.on_datagram({buffer.data(), n}, now, units) && stream.stats().accepted > accepted_before) {
+            if (!stream.on_datagram({buffer.data(), length}, now, units) && stream.stats().accepted > accepted_before) {
               last_accepted = now;
               if (stream.locked_ssrc()) source_address = from.address();
             }
@@ -161,7 +166,9 @@ ReceiveReport UdpReceiver::run(RtpStreamReceiver& stream, const ReceiveLimits& l
               ++report.rtcp_filtered;
               return;
             }
-            (void)stream.on_rtcp({rtcp_buffer.data(), n}, Clock::now());
+            std::size_t length = n;
+            if (srtp_ && srtp_->unprotect_rtcp({rtcp_buffer.data(), n}, length)) return;  // counted
+            (void)stream.on_rtcp({rtcp_buffer.data(), length}, Clock::now());
           });
     }
     // One handler at most, then re-arm: with both sockets waiting, run_for would sit out the

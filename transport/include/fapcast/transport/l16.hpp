@@ -9,8 +9,9 @@
 namespace fapcast {
 
 // Sampling instants per L16 packet: 10 ms of audio, fewer when 10 ms of all channels would not
-// fit in one datagram (always >= 1). `channels` 1..255, `sample_rate` valid.
-std::size_t l16_frames_per_packet(SampleRate sample_rate, int channels);
+// fit in one datagram with `overhead` more bytes (SRTP's tag) (always >= 1). `channels` 1..255,
+// `sample_rate` valid.
+std::size_t l16_frames_per_packet(SampleRate sample_rate, int channels, std::size_t overhead = 0);
 
 // Appends interleaved host-order samples in network byte order.
 void pack_l16(std::span<const std::int16_t> interleaved, std::vector<std::uint8_t>& out);

@@ -4,6 +4,8 @@
 // polling the reorder buffer, stopping when the stream is over. Every wait is bounded.
 #include "fapcast/transport/asio.hpp"
 #include "fapcast/transport/rtp_stream_receiver.hpp"
+#include "fapcast/transport/srtp_key.hpp"
+#include "fapcast/transport/srtp_session.hpp"
 
 #include <atomic>
 #include <chrono>
@@ -17,6 +19,9 @@ struct ReceiverSocketOptions {
   std::optional<asio::ip::address> source;     // accept datagrams from this address only
   std::optional<asio::ip::address> interface;  // interface to join a multicast group on (IPv4)
   bool rtcp = true;  // also listen for the stream's RTCP on P+1 (sender reports, BYE)
+  // Set: datagrams are SRTP and SRTCP; each is authenticated and decrypted before the RTP (RTCP)
+  // parser sees it, and refused (counted in srtp_stats()) when spoofed, tampered with or replayed.
+  std::optional<SrtpMasterKey> srtp = std::nullopt;
 };
 
 // Why run() returned.
@@ -58,6 +63,8 @@ class UdpReceiver {
               std::error_code& ec);
 
   udp::endpoint local_endpoint() const;  // the RTP port P (RTCP, if any, is P+1)
+  // SRTP's counts when the options carry a key, else null.
+  const SrtpStats* srtp_stats() const { return srtp_ ? &srtp_->stats() : nullptr; }
 
   // Receives into `stream` until a limit is reached, calling `sink` for each unit in order, then
   // flushes the stream. Runs the io_context given at construction. Throws std::system_error on a
@@ -77,6 +84,7 @@ class UdpReceiver {
   udp::socket socket_;
   udp::socket rtcp_socket_;
   ReceiverSocketOptions options_;
+  std::optional<SrtpSession> srtp_;
   std::atomic<bool> stop_{false};
 };
 

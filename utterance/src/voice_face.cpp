@@ -1,12 +1,12 @@
-#include "voice_face.hpp"
+#include "fapcast/utterance/voice_face.hpp"
 
-#include "default_voice.hpp"
+#include "fapcast/phonetics/viseme.hpp"
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-namespace fapcast::cli {
+namespace fapcast {
 
 FeaturePointBasis face_basis(const SpeechBasis& basis, const Voice& voice,
                                     const std::string& source) {
@@ -37,9 +37,4 @@ void check_voice_phone_set(const Voice& voice, const std::string& source) {
                                " here: the voice was built with another phone set or viseme table");
   }
 }
-
-Voice open_voice_or_default(const std::filesystem::path& path, bool quiet) {
-  return Voice::open(path.empty() ? ensure_default_voice(quiet) : path);
-}
-
-}  // namespace fapcast::cli
+}  // namespace fapcast

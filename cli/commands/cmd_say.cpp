@@ -69,19 +69,32 @@ const cli::Registration reg{"say", [](CLI::App& app) {
           options.source = "<stdin>";
           text = decode_text(read_stdin(), options.source, "text");
         }
-        const Speech speech = speak(text, options);
-        if (speech.phones.empty()) throw std::runtime_error("say: " + options.source + ": empty-text: nothing to say");
-        // The track and its WAV appear together or not at all: the WAV is written first but
-        // committed only after the track was, and the track is removed again if that fails.
+        // The speech is made chunk by chunk (at sentence ends, kChunkBytes): each chunk's audio
+        // goes straight into the WAV's temporary file and only the timing is kept, so memory
+        // does not grow with the sound (spec/phones.md, "Memory"). The track and its WAV appear
+        // together or not at all: the WAV is written first but committed only after the track
+        // was, and the track is removed again if that fails.
         std::optional<AtomicFile> wav_file;
-        if (!wav.empty()) {
-          wav_file.emplace(wav);
-          wav_file->write(wav_bytes(speech.audio));
-        }
+        std::optional<WavWriter> wav_writer;
+        if (!wav.empty()) wav_file.emplace(wav);
+        Speech speech;
+        std::int64_t samples = 0;
+        speak_chunks(text, options, [&](Speech&& part) {
+          const std::vector<std::int16_t> audio = std::move(part.audio.samples);
+          const SampleRate rate = part.audio.sample_rate;
+          if (!append_timing(speech, std::move(part), samples)) return;
+          if (wav_file) {
+            if (!wav_writer) wav_writer.emplace(*wav_file, rate);
+            wav_writer->append(audio);
+          }
+          samples += static_cast<std::int64_t>(audio.size());
+        });
+        if (speech.phones.empty()) throw std::runtime_error("say: " + options.source + ": empty-text: nothing to say");
+        if (wav_writer) wav_writer->finish();
         args->synthesis.cues.sound_file = wav;
         args->synthesis.words = speech.words;
-        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate,
-                                  static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");
+        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate, samples, "say: text",
+                                "fapcast say");
         if (wav_file) {
           try {
             wav_file->commit();

@@ -2,6 +2,8 @@
 #include "command.hpp"
 #include "exit_status.hpp"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -80,6 +82,11 @@ std::vector<AddCommand> registered_commands() {
 }  // namespace fapcast::cli
 
 int main(int argc, char** argv) {
+  // Buffers of 1 MiB and more (a chunk's speech, a track's frames) straight from the kernel and
+  // back: glibc's threshold otherwise rises to the largest buffer freed, and a long text's
+  // chunk-by-chunk buffers then stay on the heap, so memory grows with the text
+  // (spec/phones.md, "Memory"). No cost measured on a page (say_command_bench).
+  mallopt(M_MMAP_THRESHOLD, 1 << 20);
   using namespace fapcast::cli;
   try {
     CLI::App app{"fapcast: speech to MPEG-4 facial animation (synthesis, .fap/FBA codec, RTP)"};

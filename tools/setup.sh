@@ -26,6 +26,7 @@ run_packages=(
   nlohmann-json3-dev    # manifests, JSON export, glTF extras
   libcli11-dev          # the command line
   libsndfile1-dev       # WAV read/write
+  zlib1g-dev            # CRC-32 (the voice file's section checksums)
   libtinygltf-dev       # glTF binary export/import
   libespeak-ng-dev      # the text front-end (speech and phone timing of `say`)
   espeak-ng             # its voices and phoneme data (espeak-ng-data) and the espeak-ng command

@@ -44,10 +44,13 @@ const cli::Registration reg{"say", [](CLI::App& app) {
       args->synthesis, [args] {
         if (args->text.empty() == args->text_file.empty())
           throw cli::UsageError("say: give the text as TEXT, as - (standard input) or with --text-file FILE (one of them)");
-        const auto languages = espeak_languages();
-        if (std::none_of(languages.begin(), languages.end(), [&](const EspeakLanguage& l) { return l.code == args->language; }))
+        // Listing espeak-ng's voices reads every voice file (5 ms): only for a language or
+        // variant the user named (the default, en-us, is the front-end's own).
+        const auto languages = args->language == kDefaultLanguage ? std::vector<EspeakLanguage>{} : espeak_languages();
+        if (args->language != kDefaultLanguage &&
+            std::none_of(languages.begin(), languages.end(), [&](const EspeakLanguage& l) { return l.code == args->language; }))
           throw cli::UsageError("say: --lang '" + args->language + "': not an installed espeak-ng language (espeak-ng --voices lists them)");
-        const auto variants = espeak_variants();
+        const auto variants = args->variant.empty() ? std::vector<std::string>{} : espeak_variants();
         if (!args->variant.empty() && std::find(variants.begin(), variants.end(), args->variant) == variants.end())
           throw cli::UsageError("say: --espeak-variant '" + args->variant +
                                 "': not an installed espeak-ng variant (espeak-ng --voices=variant lists them)");
@@ -66,19 +69,32 @@ const cli::Registration reg{"say", [](CLI::App& app) {
           options.source = "<stdin>";
           text = decode_text(read_stdin(), options.source, "text");
         }
-        const Speech speech = speak(text, options);
-        if (speech.phones.empty()) throw std::runtime_error("say: " + options.source + ": empty-text: nothing to say");
-        // The track and its WAV appear together or not at all: the WAV is written first but
-        // committed only after the track was, and the track is removed again if that fails.
+        // The speech is made chunk by chunk (at sentence ends, kChunkBytes): each chunk's audio
+        // goes straight into the WAV's temporary file and only the timing is kept, so memory
+        // does not grow with the sound (spec/phones.md, "Memory"). The track and its WAV appear
+        // together or not at all: the WAV is written first but committed only after the track
+        // was, and the track is removed again if that fails.
         std::optional<AtomicFile> wav_file;
-        if (!wav.empty()) {
-          wav_file.emplace(wav);
-          wav_file->write(wav_bytes(speech.audio));
-        }
+        std::optional<WavWriter> wav_writer;
+        if (!wav.empty()) wav_file.emplace(wav);
+        Speech speech;
+        std::int64_t samples = 0;
+        speak_chunks(text, options, [&](Speech&& part) {
+          const std::vector<std::int16_t> audio = std::move(part.audio.samples);
+          const SampleRate rate = part.audio.sample_rate;
+          if (!append_timing(speech, std::move(part), samples)) return;
+          if (wav_file) {
+            if (!wav_writer) wav_writer.emplace(*wav_file, rate);
+            wav_writer->append(audio);
+          }
+          samples += static_cast<std::int64_t>(audio.size());
+        });
+        if (speech.phones.empty()) throw std::runtime_error("say: " + options.source + ": empty-text: nothing to say");
+        if (wav_writer) wav_writer->finish();
         args->synthesis.cues.sound_file = wav;
         args->synthesis.words = speech.words;
-        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate,
-                                  static_cast<std::int64_t>(speech.audio.samples.size()), "say: text", "fapcast say");
+        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate, samples, "say: text",
+                                "fapcast say");
         if (wav_file) {
           try {
             wav_file->commit();

@@ -1,5 +1,7 @@
 #include "fapcast/codec/pca_faps.hpp"
 
+#include <algorithm>
+
 #include "fapcast/codec/fap_axis.hpp"
 
 #if defined(__SSE2__)
@@ -138,8 +140,10 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
     constant(m) = still.dot(drive.axis);
     unit(m) = fapu.of(fap_info(drive.fap).unit);
   }
-  // FAPs x frames: a frame's amounts are one column, written to its FapFrame in one go.
-  const Eigen::MatrixXd product = weight.transpose() * coefficients.cast<double>().transpose();
+  // FAPs x frames, a block of frames at a time (the scratch stays the same for any length): a
+  // frame's amounts are one column, written to its FapFrame in one go.
+  constexpr Eigen::Index kBlockFrames = 4096;
+  Eigen::MatrixXd product;
 
   std::vector<std::size_t> slot(drives.size());  // where FAP m's value goes in FapFrame::values
   for (std::size_t m = 0; m < drives.size(); ++m) {
@@ -148,11 +152,15 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
   std::vector<FapFrame> frames;  // built a frame at a time, so each is written while in cache
   frames.reserve(static_cast<std::size_t>(coefficients.rows()));
   std::vector<std::int32_t> values(drives.size());
-  for (Eigen::Index n = 0; n < coefficients.rows(); ++n) {
-    frame_fap_values(product.col(n).data(), constant.data(), unit.data(), values);
-    FapFrame& f = frames.emplace_back();
-    f.mask = mask;
-    for (std::size_t m = 0; m < slot.size(); ++m) f.values[slot[m]] = values[m];
+  for (Eigen::Index start = 0; start < coefficients.rows(); start += kBlockFrames) {
+    const Eigen::Index block = std::min(kBlockFrames, coefficients.rows() - start);
+    product.noalias() = weight.transpose() * coefficients.middleRows(start, block).cast<double>().transpose();
+    for (Eigen::Index n = 0; n < block; ++n) {
+      frame_fap_values(product.col(n).data(), constant.data(), unit.data(), values);
+      FapFrame& f = frames.emplace_back();
+      f.mask = mask;
+      for (std::size_t m = 0; m < slot.size(); ++m) f.values[slot[m]] = values[m];
+    }
   }
   return frames;
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
@@ -135,6 +136,83 @@ std::string wav_bytes(const Audio& audio) {
       throw std::runtime_error(std::string("WAV: write failed: ") + sf_strerror(file.get()));
   }
   return std::move(memory.bytes);
+}
+
+namespace {
+
+// libsndfile's virtual file over an AtomicFile: appends at the end, writes back (the header)
+// anywhere before it. Nothing is read back.
+struct AtomicSink {
+  AtomicFile* file;
+  sf_count_t position = 0;
+  sf_count_t length = 0;
+  std::exception_ptr error;  // what the AtomicFile threw (not through libsndfile's C frames)
+};
+sf_count_t sink_length(void* user) { return static_cast<AtomicSink*>(user)->length; }
+sf_count_t sink_seek(sf_count_t offset, int whence, void* user) {
+  auto& f = *static_cast<AtomicSink*>(user);
+  const sf_count_t base = whence == SEEK_SET ? 0 : whence == SEEK_CUR ? f.position : f.length;
+  f.position = std::max<sf_count_t>(0, base + offset);
+  return f.position;
+}
+sf_count_t sink_read(void*, sf_count_t, void*) { return 0; }
+sf_count_t sink_write(const void* in, sf_count_t count, void* user) {
+  auto& f = *static_cast<AtomicSink*>(user);
+  const std::string_view bytes(static_cast<const char*>(in), static_cast<std::size_t>(count));
+  try {
+    if (f.position == f.length) {
+      f.file->write(bytes);
+    } else {
+      f.file->write_at(static_cast<std::uint64_t>(f.position), bytes);
+    }
+  } catch (...) {
+    f.error = std::current_exception();
+    return 0;
+  }
+  f.position += count;
+  f.length = std::max(f.length, f.position);
+  return count;
+}
+sf_count_t sink_tell(void* user) { return static_cast<AtomicSink*>(user)->position; }
+
+}  // namespace
+
+struct WavWriter::State {
+  AtomicSink sink;
+  SF_VIRTUAL_IO io{sink_length, sink_seek, sink_read, sink_write, sink_tell};
+  SndfilePtr file;
+};
+
+WavWriter::WavWriter(AtomicFile& file, SampleRate rate) : state_(std::make_unique<State>()) {
+  if (rate.hz < 1 || rate.hz > 0x7fffffff)
+    throw std::invalid_argument("WAV: sample rate " + std::to_string(rate.hz) + " Hz out of range");
+  state_->sink.file = &file;
+  SF_INFO info{};
+  info.samplerate = static_cast<int>(rate.hz);
+  info.channels = 1;
+  info.format = SF_FORMAT_WAV | SF_FORMAT_PCM_16;
+  state_->file.reset(sf_open_virtual(&state_->io, SFM_WRITE, &info, &state_->sink));
+  if (!state_->file) throw std::runtime_error(file.path().string() + ": WAV: cannot encode: " + sf_strerror(nullptr));
+}
+
+WavWriter::~WavWriter() = default;
+
+void WavWriter::append(std::span<const std::int16_t> samples) {
+  if (!state_->file) throw std::logic_error("WavWriter::append after finish");
+  const auto n = static_cast<sf_count_t>(samples.size());
+  if (sf_writef_short(state_->file.get(), samples.data(), n) != n) {
+    if (state_->sink.error) std::rethrow_exception(state_->sink.error);
+    throw std::runtime_error(state_->sink.file->path().string() + ": WAV: write failed: " + sf_strerror(state_->file.get()));
+  }
+  instants_ += n;
+}
+
+void WavWriter::finish() {
+  if (!state_->file) return;
+  const int closed = sf_close(state_->file.release());  // writes the header's lengths
+  if (state_->sink.error) std::rethrow_exception(state_->sink.error);
+  if (closed != 0)
+    throw std::runtime_error(state_->sink.file->path().string() + ": WAV: cannot finish: " + sf_error_number(closed));
 }
 
 void write_wav(const std::filesystem::path& path, const Audio& audio) {

@@ -392,16 +392,34 @@ Speech speak_chunk(std::string_view text, std::size_t base, const SpeakOptions& 
 
 // Appends `part` to `all`: samples, phones and words shifted; a silence across the join is one.
 void append(Speech& all, Speech&& part) {
-  if (part.phones.empty()) return;
-  if (all.phones.empty()) {
-    all = std::move(part);
-    return;
-  }
   const auto offset = static_cast<std::int64_t>(all.audio.samples.size());
+  std::vector<std::int16_t> samples = std::move(part.audio.samples);
+  if (!append_timing(all, std::move(part), offset)) return;
+  if (all.audio.samples.empty()) {
+    all.audio.samples = std::move(samples);
+  } else {
+    all.audio.samples.insert(all.audio.samples.end(), samples.begin(), samples.end());
+  }
+}
+
+// The installed languages and variants, listed once (espeak_ListVoices reads every voice file).
+const std::vector<EspeakLanguage>& cached_languages() {
+  static const std::vector<EspeakLanguage> languages = espeak_languages();
+  return languages;
+}
+const std::vector<std::string>& cached_variants() {
+  static const std::vector<std::string> variants = espeak_variants();
+  return variants;
+}
+
+}  // namespace
+
+bool append_timing(Speech& all, Speech&& part, std::int64_t offset) {
+  if (part.phones.empty()) return false;
+  if (all.audio.sample_rate.hz == 0) all.audio.sample_rate = part.audio.sample_rate;
   const auto word_base = static_cast<int>(all.words.size());
-  all.audio.samples.insert(all.audio.samples.end(), part.audio.samples.begin(), part.audio.samples.end());
   std::size_t first = 0;
-  if (all.phones.back().phone == Phone::SIL && part.phones.front().phone == Phone::SIL) {
+  if (!all.phones.empty() && all.phones.back().phone == Phone::SIL && part.phones.front().phone == Phone::SIL) {
     all.phones.back().end_sample = part.phones.front().end_sample + offset;
     first = 1;
   }
@@ -421,19 +439,8 @@ void append(Speech& all, Speech&& part) {
     w.end_sample += offset;
     all.words.push_back(std::move(w));
   }
+  return true;
 }
-
-// The installed languages and variants, listed once (espeak_ListVoices reads every voice file).
-const std::vector<EspeakLanguage>& cached_languages() {
-  static const std::vector<EspeakLanguage> languages = espeak_languages();
-  return languages;
-}
-const std::vector<std::string>& cached_variants() {
-  static const std::vector<std::string> variants = espeak_variants();
-  return variants;
-}
-
-}  // namespace
 
 void speak_chunks(std::string_view text, const SpeakOptions& options, const std::function<void(Speech&&)>& sink) {
   scan_text(text, options.source, 0, nullptr);  // the whole input first: a bad byte fails before any synthesis

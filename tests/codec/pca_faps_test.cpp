@@ -136,6 +136,27 @@ TEST(PcaFaps, RandomRoundTripThroughFapPatterns) {
       ASSERT_NEAR(frames[n].value(faps[i]), want[n][i], 1) << "frame " << n << " FAP " << faps[i];
 }
 
+// A long track is converted a block of frames at a time: every frame, on both sides of each
+// block's edge, is what it is converted alone.
+TEST(PcaFaps, LongTrackEqualsFrameByFrame) {
+  const auto [faps, basis] = fap_pattern_basis();
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<float> value(-4.0f, 4.0f);
+  const Eigen::Index rows = 2 * 4096 + 7;
+  Eigen::MatrixXf c(rows, static_cast<Eigen::Index>(faps.size()));
+  for (Eigen::Index n = 0; n < rows; ++n)
+    for (Eigen::Index i = 0; i < c.cols(); ++i) c(n, i) = value(rng);
+  const auto frames = pca_to_faps(c, basis);
+  ASSERT_EQ(frames.size(), static_cast<std::size_t>(rows));
+  for (const Eigen::Index n : {Eigen::Index{0}, Eigen::Index{4095}, Eigen::Index{4096}, Eigen::Index{8191},
+                               Eigen::Index{8192}, rows - 1}) {
+    const auto alone = pca_to_faps(Eigen::MatrixXf(c.row(n)), basis);
+    ASSERT_EQ(alone.size(), 1u);
+    EXPECT_EQ(frames[static_cast<std::size_t>(n)].values, alone[0].values) << "frame " << n;
+    EXPECT_EQ(frames[static_cast<std::size_t>(n)].mask, alone[0].mask) << "frame " << n;
+  }
+}
+
 // The values are rounded two at a time; a value outside int32 (or NaN) takes the slow path
 // without disturbing the FAP next to it.
 TEST(PcaFaps, SaturationStaysInItsOwnFap) {

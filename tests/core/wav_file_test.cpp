@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <span>
 #include <sstream>
 
 namespace fapcast {
@@ -37,6 +38,44 @@ TEST(WavFile, ReadsEveryInterleavedSampleExactly) {
   EXPECT_EQ(audio.channels, 3);
   EXPECT_EQ(audio.instants(), 3);
   EXPECT_EQ(audio.samples, samples);
+}
+
+// A WAV written piece by piece through an AtomicFile (the header's lengths patched at the end)
+// is byte for byte wav_bytes() of the whole, and nothing appears before commit.
+TEST(WavFile, WriterInPiecesEqualsTheWholeAndCommitsAtomically) {
+  const std::string dir = test::make_temp_dir("wav_writer");
+  Audio whole;
+  whole.sample_rate = SampleRate{22050};
+  for (int i = 0; i < 50'000; ++i) whole.samples.push_back(static_cast<std::int16_t>((i * 7919) % 65536 - 32768));
+  const fs::path path = dir + "/pieces.wav";
+  {
+    AtomicFile file(path);
+    WavWriter writer(file, whole.sample_rate);
+    const std::span<const std::int16_t> all(whole.samples);
+    writer.append(all.first(1));
+    writer.append(all.subspan(1, 20'000));
+    writer.append(all.subspan(20'001, 0));
+    writer.append(all.subspan(20'001));
+    EXPECT_EQ(writer.instants(), 50'000);
+    writer.finish();
+    EXPECT_THROW(writer.append(all.first(1)), std::logic_error);
+    EXPECT_FALSE(fs::exists(path));
+    file.commit();
+  }
+  EXPECT_EQ(read_file(path), wav_bytes(whole));
+  const Audio back = read_mono_wav(path);
+  EXPECT_EQ(back.samples, whole.samples);
+  {
+    AtomicFile file(dir + "/empty.wav");
+    WavWriter writer(file, whole.sample_rate);
+    writer.finish();
+    file.commit();
+  }
+  Audio silence;
+  silence.sample_rate = whole.sample_rate;
+  EXPECT_EQ(read_file(dir + "/empty.wav"), wav_bytes(silence));
+  AtomicFile bad(dir + "/bad.wav");
+  EXPECT_THROW(WavWriter(bad, SampleRate{0}), std::invalid_argument);
 }
 
 TEST(WavFile, ReadsTheSoxFixture) {

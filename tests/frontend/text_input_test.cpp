@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -259,6 +260,51 @@ TEST(Chunks, SpeakChunksStreamsTheSameWordsInBoundedPieces) {
   std::vector<std::string> whole;
   for (const TimedWord& w : speak(text, fast).words) whole.push_back(w.text);
   EXPECT_EQ(streamed, whole);
+}
+
+// What `say` keeps of a long text: the chunks' timing appended as they come (append_timing), each
+// chunk's audio counted and let go. Every chunk's phones land shifted by the speech before it
+// (a silence across the join made one), the whole is one timeline over all the samples, and no
+// chunk carries more than its own stretch of the speech.
+TEST(Chunks, TimingAppendedChunkByChunkIsOneTimeline) {
+  std::string text;
+  while (text.size() <= 9 * 1024) text += "Item " + std::to_string(text.size()) + ". Then a pause.\n";
+  SpeakOptions fast;
+  fast.rate_factor = 2.5;
+  Speech timing;
+  std::int64_t samples = 0;
+  std::size_t largest = 0, chunks = 0;
+  std::vector<std::string> streamed;
+  speak_chunks(text, fast, [&](Speech&& part) {
+    const Speech chunk = part;  // counted from its own start
+    const std::size_t before = timing.phones.size();
+    const std::size_t joined =
+        before > 0 && timing.phones.back().phone == Phone::SIL && chunk.phones.front().phone == Phone::SIL ? 1 : 0;
+    if (!append_timing(timing, std::move(part), samples)) return;
+    ++chunks;
+    ASSERT_EQ(timing.phones.size(), before + chunk.phones.size() - joined);
+    for (std::size_t k = joined; k < chunk.phones.size(); ++k) {
+      const TimedPhone& p = timing.phones[before + k - joined];
+      EXPECT_EQ(p.phone, chunk.phones[k].phone);
+      EXPECT_EQ(p.start_sample, chunk.phones[k].start_sample + samples);
+      EXPECT_EQ(p.end_sample, chunk.phones[k].end_sample + samples);
+    }
+    for (const TimedWord& w : chunk.words) streamed.push_back(w.text);
+    largest = std::max(largest, chunk.audio.samples.size());
+    samples += static_cast<std::int64_t>(chunk.audio.samples.size());
+  });
+  EXPECT_GE(chunks, 3u);
+  EXPECT_TRUE(timing.audio.samples.empty());
+  EXPECT_GT(timing.audio.sample_rate.hz, 0);
+  timing.audio.samples.resize(static_cast<std::size_t>(samples));
+  expect_timeline(timing, text);
+  std::vector<std::string> words;
+  for (const TimedWord& w : timing.words) words.push_back(w.text);
+  EXPECT_EQ(words, streamed);
+  EXPECT_LT(largest, static_cast<std::size_t>(samples) / 2);  // each chunk <= kChunkBytes of > 9 KiB
+  Speech none;
+  EXPECT_FALSE(append_timing(none, Speech{}, 0));
+  EXPECT_TRUE(none.phones.empty());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <mutex>
 #include <set>
 #include <sstream>
 
@@ -96,7 +97,7 @@ std::string voice_feature_points_json(std::span<const VoiceFeaturePoint> feature
 
 Voice::Voice(VoiceFileView view, VoiceProvenance provenance, std::vector<VoiceFeaturePoint> feature_points,
              std::vector<VoiceRigidMarker> rigid_markers, Eigen::MatrixXf frame_coefficients, PhoneGraph graph,
-             std::vector<Phone> phones, std::vector<FrameSpan> utterances, RbfMap map)
+             std::vector<Phone> phones, std::vector<FrameSpan> utterances, double rbf_r_squared, double rbf_lambda)
     : view_(std::move(view)),
       provenance_(std::move(provenance)),
       feature_points_(std::move(feature_points)),
@@ -105,9 +106,26 @@ Voice::Voice(VoiceFileView view, VoiceProvenance provenance, std::vector<VoiceFe
       graph_(std::move(graph)),
       phones_(std::move(phones)),
       utterances_(std::move(utterances)),
-      map_(std::move(map)) {
+      rbf_r_squared_(rbf_r_squared),
+      rbf_lambda_(rbf_lambda),
+      map_(std::make_unique<RetargetMapOnce>()) {
   components_rows_ = static_cast<Eigen::Index>(view_.require(vs::kPcaComponents).rows);
   dimension_ = static_cast<Eigen::Index>(view_.require(vs::kPcaMean).cols);
+}
+
+struct Voice::RetargetMapOnce {
+  std::once_flag once;
+  std::optional<RbfMap> map;
+};
+
+const RbfMap& Voice::retarget_map() const {
+  // The sections' shapes (m x D weights, 1 x D offset) were checked at open: this cannot throw.
+  std::call_once(map_->once, [this] {
+    map_->map.emplace(Eigen::MatrixXd(view_.matrix_f64(vs::kRbfCentres)), rbf_r_squared_,
+                      view_.matrix_f32(vs::kRbfWeights).cast<double>(),
+                      view_.matrix_f32(vs::kRbfOffset).row(0).transpose().cast<double>(), rbf_lambda_);
+  });
+  return *map_->map;
 }
 
 Voice::Voice(Voice&&) noexcept = default;
@@ -146,8 +164,6 @@ Voice Voice::from_view(VoiceFileView view) {
     detail << "r^2 = " << r_squared << " must be positive and lambda = " << lambda << " non-negative, both finite";
     refuse(view, vs::kRbfScalars, "rbf-scalars", detail.str());
   }
-  RbfMap map(Eigen::MatrixXd(centres), r_squared, view.matrix_f32(vs::kRbfWeights).cast<double>(),
-             view.matrix_f32(vs::kRbfOffset).row(0).transpose().cast<double>(), lambda);
   if (const SectionInfo* maps = view.find(vs::kFaceMaps)) {
     if (maps->type != ElementType::kFloat32 || maps->rows != static_cast<std::uint64_t>(d / 3) || maps->cols != 9)
       refuse(view, vs::kFaceMaps, "section-shape",
@@ -161,7 +177,7 @@ Voice Voice::from_view(VoiceFileView view) {
   JoinFeatures join = join_features(graph.states, frames);
   PhoneGraph phone_graph(std::move(graph.states), std::move(join));
   return Voice(std::move(view), std::move(provenance), std::move(points), std::move(rigid), std::move(frames),
-               std::move(phone_graph), std::move(graph.phones), std::move(graph.utterances), std::move(map));
+               std::move(phone_graph), std::move(graph.phones), std::move(graph.utterances), r_squared, lambda);
 }
 
 Eigen::Map<const RowMajorMatrixXf> Voice::pca_mean() const { return view_.matrix_f32(vs::kPcaMean); }

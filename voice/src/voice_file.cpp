@@ -364,7 +364,9 @@ VoiceFileView VoiceFileView::open(const std::filesystem::path& path) {
     ::close(fd);
     refuse(source, 0, "file-too-large", std::to_string(size) + " bytes, the limit is 4 GiB");
   }
-  void* mapped = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+  // MAP_POPULATE: every byte is read at once by the checksums below; reading the pages in
+  // together costs less than faulting them in one by one.
+  void* mapped = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
   const int map_errno = errno;
   ::close(fd);  // the mapping keeps the file alive
   if (mapped == MAP_FAILED) {

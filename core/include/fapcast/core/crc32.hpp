@@ -1,6 +1,7 @@
 #pragma once
 // CRC-32 (IEEE 802.3 / zlib / PNG: reflected polynomial 0xEDB88320, initial and final XOR
-// 0xFFFFFFFF), table-driven, one byte per step. Check value: crc32("123456789") = 0xCBF43926.
+// 0xFFFFFFFF), computed by zlib (several bytes per step: a 15 MB voice file in a few ms).
+// Check value: crc32("123456789") = 0xCBF43926.
 #include <cstddef>
 #include <cstdint>
 #include <span>

@@ -36,6 +36,9 @@ class AtomicFile {
 
   // Appends bytes to the temporary file. Throws std::runtime_error naming `path`.
   void write(std::string_view bytes);
+  // Writes bytes at `offset` of the temporary file (pwrite; a header patched after its data,
+  // as WavWriter does). Throws std::runtime_error naming `path`.
+  void write_at(std::uint64_t offset, std::string_view bytes);
   // fsync, close, rename over path(). Throws std::runtime_error naming `path` and the step.
   void commit();
   const std::filesystem::path& path() const { return path_; }

@@ -7,6 +7,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
+#include <span>
 #include <string>
 
 namespace fapcast {
@@ -27,6 +29,31 @@ Audio read_mono_wav(const std::filesystem::path& path, std::int64_t max_instants
 // The bytes of a 16-bit PCM WAV file of `audio` (any channel count). Throws std::invalid_argument
 // for a rate below 1 or a channel count below 1, std::runtime_error when libsndfile fails.
 std::string wav_bytes(const Audio& audio);
+
+class AtomicFile;
+
+// A 16-bit PCM mono WAV written piece by piece into an AtomicFile's temporary file: the samples
+// go out as they come (libsndfile writes the header first and patches its lengths in finish()),
+// so a long text's speech is never held whole. The bytes equal wav_bytes() of all the pieces
+// together. The caller commits the file after finish().
+class WavWriter {
+ public:
+  // Throws std::invalid_argument for a rate out of 1..2^31-1, std::runtime_error when
+  // libsndfile fails.
+  WavWriter(AtomicFile& file, SampleRate rate);
+  ~WavWriter();
+  WavWriter(const WavWriter&) = delete;
+  WavWriter& operator=(const WavWriter&) = delete;
+  void append(std::span<const std::int16_t> samples);
+  // Closes the WAV: its header's lengths written. Appending after it throws std::logic_error.
+  void finish();
+  std::int64_t instants() const { return instants_; }
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+  std::int64_t instants_ = 0;
+};
 
 // Writes wav_bytes(audio) to `path` atomically (write_file_atomically). Throws as they do.
 void write_wav(const std::filesystem::path& path, const Audio& audio);

@@ -116,6 +116,13 @@ Speech speak(std::string_view text, const SpeakOptions& options = {});
 // kChunkBytes (or SSML) is one chunk. Throws as speak() does (input errors before any chunk).
 void speak_chunks(std::string_view text, const SpeakOptions& options, const std::function<void(Speech&&)>& sink);
 
+// Appends a chunk of speak_chunks to `all` as speak() does, but its timing only: phones, events
+// and words shifted by `offset` (the samples of speech before the chunk), a silence that ends
+// `all` and starts the chunk made one; the chunk's audio is left to the caller (`say` writes it
+// to the WAV as it comes, so a long text's speech is never held whole). Returns false, and
+// appends nothing, for a chunk without phones (speak() drops its audio too).
+bool append_timing(Speech& all, Speech&& part, std::int64_t offset);
+
 // Checks the input rules; throws InputError "text: byte N: <rule>: <detail>" on the first
 // violation. Returns the byte offset of every code point (for espeak's character positions).
 std::vector<std::size_t> validate_text(std::string_view text);

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -67,8 +68,9 @@ class Voice {  // move-only
   std::span<const VoiceRigidMarker> rigid_markers() const { return rigid_markers_; }
   // Source markers -> target mesh through the voice's RBF map (for evaluation). The source
   // vector is the feature points' markers in feature_points() order, metres, in the head frame
-  // the rigid markers' source_reference_m define.
-  const RbfMap& retarget_map() const { return map_; }
+  // the rigid markers' source_reference_m define. Its double-precision matrices are made from
+  // the file's sections on the first call (thread-safe): `say` never needs them.
+  const RbfMap& retarget_map() const;
   // The per-vertex maps from the generic ICT face to this voice's face (N x 9, vertex i's 3 x 3
   // map row-major: displacement on this face = map * displacement on ICT) when the voice was
   // re-targeted (`fapcast voice retarget`, section FMAP); nullopt for a voice on ICT itself.
@@ -81,7 +83,7 @@ class Voice {  // move-only
   static Voice from_view(VoiceFileView view);
   Voice(VoiceFileView view, VoiceProvenance provenance, std::vector<VoiceFeaturePoint> feature_points,
         std::vector<VoiceRigidMarker> rigid_markers, Eigen::MatrixXf frame_coefficients, PhoneGraph graph,
-        std::vector<Phone> phones, std::vector<FrameSpan> utterances, RbfMap map);
+        std::vector<Phone> phones, std::vector<FrameSpan> utterances, double rbf_r_squared, double rbf_lambda);
 
   VoiceFileView view_;
   VoiceProvenance provenance_;
@@ -93,7 +95,10 @@ class Voice {  // move-only
   PhoneGraph graph_;
   std::vector<Phone> phones_;
   std::vector<FrameSpan> utterances_;
-  RbfMap map_;
+  double rbf_r_squared_ = 0.0;  // RPAR, checked at open
+  double rbf_lambda_ = 0.0;
+  struct RetargetMapOnce;  // the map, made once on demand
+  std::unique_ptr<RetargetMapOnce> map_;
 };
 
 // The FPNT section's JSON for these points (spec/voice.md, "Feature points").

@@ -1,0 +1,122 @@
+// `fapcast eval articulography EMA SPEECH.wav [ALIGNMENT] [--transcript FILE | --text TEXT] [--voice V]
+// [--json-out FILE] [--svg-out FILE]`: animates a recording as `animate` does (from its phone
+// alignment, or from the phones fapcast finds in it) and compares the face with the talker's real
+// articulography (spec/articulography.md, "Evaluation against articulography"). With both an
+// ALIGNMENT and a transcript it animates both ways and says how much fapcast's own alignment
+// changes the scores. Argument parsing only.
+#include "command.hpp"
+#include "default_voice.hpp"
+#include "output_check.hpp"
+#include "recorded_speech.hpp"
+#include "speech_transcript.hpp"
+#include "synthesis_cli.hpp"
+#include "voice_face.hpp"
+
+#include "fapcast/core/file_io.hpp"
+#include "fapcast/corpus/ema.hpp"
+#include "fapcast/eval/articulography_evaluation.hpp"
+#include "fapcast/eval/svg_plot.hpp"
+
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace {
+using namespace fapcast;
+
+std::string shell_word(const std::string& s) {
+  return s.find_first_of(" \t\"'") == std::string::npos ? s : "\"" + s + "\"";
+}
+
+const cli::Registration reg{"eval articulography", [](CLI::App& app) {
+  struct Args {
+    std::string ema;
+    std::string wav;
+    std::string align;
+    cli::AlignmentArgs alignment;
+    cli::TranscriptArgs transcript;
+    std::string voice;
+    SynthesisOptions options;
+    std::string json;
+    std::string svg;
+    bool quiet = false;
+  };
+  auto args = std::make_shared<Args>();
+  auto* cmd = cli::command_group(app, "eval", cli::kEvalGroupHelp)
+                  ->add_subcommand("articulography",
+                                   "Animate a recording and compare the face's lips, jaw and tongue tip with the "
+                                   "talker's real articulography (MOCHA-TIMIT EMA): range ratio, r, best lag");
+  cmd->add_option("EMA", args->ema, "The talker's articulography: MOCHA-TIMIT EMA (EST Track ASCII or binary, or bare rows)")
+      ->required();
+  cmd->add_option("SPEECH", args->wav, "The recording the EMA was taken with (WAV): the timeline")->required();
+  cmd->add_option("ALIGNMENT", args->align,
+                  "Its phone alignment (any format `animate` reads; MOCHA's .lab labels read as the mocha set); or "
+                  "none: the phones are found with --transcript or --text, else by recognising the speech");
+  cli::add_transcript_options(*cmd, args->transcript);
+  cli::add_alignment_options(*cmd, args->alignment);
+  cmd->add_option("--voice", args->voice, "Voice file (default: the reference voice, built on first use)");
+  cli::add_synthesis_options(*cmd, args->options);
+  cmd->add_option("--json-out", args->json, "Write the results as JSON to this file (atomically)");
+  cmd->add_option("--svg-out", args->svg, "Write the curves, real and synthesised, as an SVG plot to this file (atomically)");
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
+  cmd->callback([args] {
+    if (args->transcript.file_given() && args->transcript.text_given())
+      throw cli::UsageError("eval articulography: give what the speech says with --transcript FILE or --text TEXT, not both");
+    if (args->align.empty() && (!args->alignment.tier.empty() || !args->alignment.phone_set.empty()))
+      throw cli::UsageError("eval articulography: --tier and --phone-set read an ALIGNMENT file");
+    cli::check_output_writable(args->json);  // before the voice is read and the speech animated
+    cli::check_output_writable(args->svg);
+    const MarkerFrames<Millimetres> ema = read_ema(read_file(args->ema), args->ema);
+    const Voice voice = cli::open_voice_or_default(args->voice, args->quiet);
+    const std::string voice_name = args->voice.empty() ? std::string("the default voice") : args->voice;
+    cli::check_voice_phone_set(voice, voice_name);
+
+    std::string command = "fapcast eval articulography " + shell_word(args->ema) + " " + shell_word(args->wav);
+    if (!args->align.empty()) command += " " + shell_word(args->align);
+    if (args->transcript.file_given()) command += " --transcript " + shell_word(args->transcript.file);
+    if (args->transcript.text_given()) command += " --text " + shell_word(args->transcript.text);
+    if (!args->voice.empty()) command += " --voice " + shell_word(args->voice);
+    command += cli::synthesis_options_text(args->options);
+
+    std::vector<ArticulographyEvaluation> evaluations;
+    std::vector<std::string> names;
+    if (!args->align.empty()) {
+      const cli::RecordedPhones speech =
+          cli::phones_from_alignment(args->wav, args->align, args->alignment, "eval articulography", args->quiet);
+      evaluations.push_back(evaluate_articulography(ema, args->ema, voice, speech.phones, speech.sample_rate,
+                                                    speech.samples, args->options, args->align));
+      names.push_back("reference alignment");
+    }
+    if (args->align.empty() || args->transcript.given()) {
+      const cli::RecordedPhones speech = cli::phones_from_recording(args->wav, args->transcript, args->quiet);
+      evaluations.push_back(evaluate_articulography(ema, args->ema, voice, speech.phones, speech.sample_rate,
+                                                    speech.samples, args->options, args->wav));
+      names.push_back(args->transcript.given() ? "own alignment (forced, transcript)" : "own alignment (recognised)");
+    }
+
+    std::cout << "# " << command << "\n";
+    std::cout << "Real articulography " << args->ema << " against the face animated on " << voice_name
+              << " (ICT face points 8.1, 8.2, 2.1, incisor tips; the parametric tongue's tip)\n\n";
+    nlohmann::json json;
+    json["command"] = command;
+    json["ema"] = args->ema;
+    json["speech"] = args->wav;
+    json["voice"] = voice_name;
+    for (std::size_t i = 0; i < evaluations.size(); ++i) {
+      std::cout << articulography_table(evaluations[i], "## animated from the " + names[i]) << "\n";
+      nlohmann::json one = articulography_json(evaluations[i]);
+      one["phones_from"] = names[i];
+      json["animations"].push_back(std::move(one));
+    }
+    if (evaluations.size() == 2) {
+      std::cout << "## own alignment against the reference alignment\n"
+                << alignment_effect_table(evaluations[0], evaluations[1]) << "\n";
+    }
+    if (!args->json.empty()) write_file_atomically(args->json, json.dump(2) + "\n");
+    if (!args->svg.empty())
+      write_file_atomically(args->svg, svg_line_plot(articulography_plot(evaluations, names, command)));
+  });
+}};
+
+}  // namespace

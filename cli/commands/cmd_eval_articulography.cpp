@@ -68,10 +68,6 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
     cli::check_output_writable(args->json);  // before the voice is read and the speech animated
     cli::check_output_writable(args->svg);
     const MarkerFrames<Millimetres> ema = read_ema(read_file(args->ema), args->ema);
-    const Voice voice = cli::open_voice_or_default(args->voice, args->quiet);
-    const std::string voice_name = args->voice.empty() ? std::string("the default voice") : args->voice;
-    cli::check_voice_phone_set(voice, voice_name);
-
     std::string command = "fapcast eval articulography " + shell_word(args->ema) + " " + shell_word(args->wav);
     if (!args->align.empty()) command += " " + shell_word(args->align);
     if (args->transcript.file_given()) command += " --transcript " + shell_word(args->transcript.file);
@@ -79,20 +75,33 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
     if (!args->voice.empty()) command += " --voice " + shell_word(args->voice);
     command += cli::synthesis_options_text(args->options);
 
+    // The phones first (the reference alignment's, then fapcast's own), checked against the EMA
+    // before the voice is opened.
+    struct Animation {
+      std::string name;
+      std::string source;
+      cli::RecordedPhones speech;
+    };
+    std::vector<Animation> animations;
+    if (!args->align.empty())
+      animations.push_back({"reference alignment", args->align,
+                            cli::phones_from_alignment(args->wav, args->align, args->alignment, "eval articulography",
+                                                       args->quiet)});
+    if (args->align.empty() || args->transcript.given())
+      animations.push_back({args->transcript.given() ? "own alignment (forced, transcript)" : "own alignment (recognised)",
+                            args->wav, cli::phones_from_recording(args->wav, args->transcript, args->quiet)});
+    for (const Animation& a : animations)
+      check_articulography_inputs(ema, args->ema, a.speech.phones, a.speech.sample_rate, a.source);
+
+    const Voice voice = cli::open_voice_or_default(args->voice, args->quiet);
+    const std::string voice_name = args->voice.empty() ? std::string("the default voice") : args->voice;
+    cli::check_voice_phone_set(voice, voice_name);
     std::vector<ArticulographyEvaluation> evaluations;
     std::vector<std::string> names;
-    if (!args->align.empty()) {
-      const cli::RecordedPhones speech =
-          cli::phones_from_alignment(args->wav, args->align, args->alignment, "eval articulography", args->quiet);
-      evaluations.push_back(evaluate_articulography(ema, args->ema, voice, speech.phones, speech.sample_rate,
-                                                    speech.samples, args->options, args->align));
-      names.push_back("reference alignment");
-    }
-    if (args->align.empty() || args->transcript.given()) {
-      const cli::RecordedPhones speech = cli::phones_from_recording(args->wav, args->transcript, args->quiet);
-      evaluations.push_back(evaluate_articulography(ema, args->ema, voice, speech.phones, speech.sample_rate,
-                                                    speech.samples, args->options, args->wav));
-      names.push_back(args->transcript.given() ? "own alignment (forced, transcript)" : "own alignment (recognised)");
+    for (const Animation& a : animations) {
+      evaluations.push_back(evaluate_articulography(ema, args->ema, voice, a.speech.phones, a.speech.sample_rate,
+                                                    a.speech.samples, args->options, a.source));
+      names.push_back(a.name);
     }
 
     std::cout << "# " << command << "\n";

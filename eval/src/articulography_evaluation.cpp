@@ -88,6 +88,17 @@ std::array<std::vector<double>, 2> coil_track(const MarkerFrames<Millimetres>& e
   return xy;
 }
 
+// coil_track of a coil the evaluation needs; InputError "ema-coils" when there is none.
+std::array<std::vector<double>, 2> used_coil(const MarkerFrames<Millimetres>& ema, std::string_view label,
+                                             const std::string& source) {
+  auto xy = coil_track(ema, label);
+  if (xy[0].empty())
+    throw InputError({source, std::nullopt, std::nullopt}, "ema-coils",
+                     "no samples of coil '" + std::string(label) +
+                         "': the evaluation needs the coils ui li ul ll tt bn (spec/articulography.md)");
+  return xy;
+}
+
 double mean(std::span<const double> x) {
   double s = 0;
   for (double v : x) s += v;
@@ -148,11 +159,7 @@ EmaRegistration register_ema(const MarkerFrames<Millimetres>& ema, const std::st
                              const Eigen::Ref<const RowMajorMatrixXf>& mesh_m, const ArticulographyFacePoints& points) {
   std::array<std::array<double, 2>, kEmaCoilsUsed.size()> means{};
   for (std::size_t c = 0; c < kEmaCoilsUsed.size(); ++c) {
-    const auto xy = coil_track(ema, kEmaCoilsUsed[c]);
-    if (xy[0].empty())
-      throw InputError({source, std::nullopt, std::nullopt}, "ema-coils",
-                       "no samples of coil '" + std::string(kEmaCoilsUsed[c]) +
-                           "': the evaluation needs the coils ui li ul ll tt bn (spec/articulography.md)");
+    const auto xy = used_coil(ema, kEmaCoilsUsed[c], source);
     means[c] = {mean(xy[0]), mean(xy[1])};
   }
   const auto& ui = means[0];
@@ -266,32 +273,41 @@ MeasureCurves face_measure_curves(const Eigen::Ref<const RowMajorMatrixXf>& mean
   return out;
 }
 
+void check_articulography_inputs(const MarkerFrames<Millimetres>& ema, const std::string& ema_source,
+                                 std::span<const TimedPhone> phones, SampleRate sample_rate,
+                                 const std::string& phones_source) {
+  const Eigen::Index frames = ema.frame_count();
+  if (frames < 3)
+    throw InputError({ema_source, std::nullopt, std::nullopt}, "ema-too-short",
+                     std::to_string(frames) + " frames: the evaluation needs at least 3");
+  const double first_s = static_cast<double>(ema.first_frame) / ema.frame_rate_hz;
+  const double end_s = static_cast<double>(ema.first_frame + frames - 1) / ema.frame_rate_hz;
+  if (first_s < 0)
+    throw InputError({ema_source, std::nullopt, std::nullopt}, "articulography-span",
+                     "the EMA starts at " + fixed(first_s, 3) + " s: its frames must lie on the speech's timeline from 0");
+  for (const std::string_view coil : kEmaCoilsUsed) used_coil(ema, coil, ema_source);
+  const auto seconds = [&](std::int64_t sample) { return static_cast<double>(sample) / static_cast<double>(sample_rate.hz); };
+  for (const TimedPhone& p : phones) {
+    if (p.phone == Phone::SIL) continue;
+    if (seconds(p.end_sample) > end_s + kSpanToleranceS || seconds(p.start_sample) < first_s - kSpanToleranceS)
+      throw InputError({phones_source, std::nullopt, std::nullopt}, "articulography-span",
+                       "a phone spoken from " + fixed(seconds(p.start_sample), 3) + " to " + fixed(seconds(p.end_sample), 3) +
+                           " s lies outside the EMA " + ema_source + " (" + fixed(first_s, 3) + " to " + fixed(end_s, 3) +
+                           " s): the articulography must cover the speech");
+  }
+}
+
 ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>& ema, const std::string& ema_source,
                                                  const Voice& voice, std::span<const TimedPhone> phones,
                                                  SampleRate sample_rate, std::int64_t audio_samples,
                                                  const SynthesisOptions& options, const std::string& phones_source,
                                                  const ArticulographySettings& settings) {
+  check_articulography_inputs(ema, ema_source, phones, sample_rate, phones_source);
   ArticulographyEvaluation e;
   e.settings = settings;
   e.ema_rate_hz = ema.frame_rate_hz;
   e.ema_frames = ema.frame_count();
-  if (e.ema_frames < 3)
-    throw InputError({ema_source, std::nullopt, std::nullopt}, "ema-too-short",
-                     std::to_string(e.ema_frames) + " frames: the evaluation needs at least 3");
-  const double first_s = static_cast<double>(ema.first_frame) / ema.frame_rate_hz;
   e.end_s = static_cast<double>(ema.first_frame + e.ema_frames - 1) / ema.frame_rate_hz;
-  if (first_s < 0 || first_s > e.end_s)
-    throw InputError({ema_source, std::nullopt, std::nullopt}, "articulography-span",
-                     "the EMA starts at " + fixed(first_s, 3) + " s: its frames must lie on the speech's timeline from 0");
-  const auto seconds = [&](std::int64_t sample) { return static_cast<double>(sample) / static_cast<double>(sample_rate.hz); };
-  for (const TimedPhone& p : phones) {
-    if (p.phone == Phone::SIL) continue;
-    if (seconds(p.end_sample) > e.end_s + kSpanToleranceS || seconds(p.start_sample) < first_s - kSpanToleranceS)
-      throw InputError({phones_source, std::nullopt, std::nullopt}, "articulography-span",
-                       "a phone spoken from " + fixed(seconds(p.start_sample), 3) + " to " + fixed(seconds(p.end_sample), 3) +
-                           " s lies outside the EMA " + ema_source + " (" + fixed(first_s, 3) + " to " + fixed(e.end_s, 3) +
-                           " s): the articulography must cover the speech");
-  }
   const auto mean = voice.pca_mean();
   const auto components = voice.pca_components();
   const ArticulographyFacePoints points = ict_articulography_points();

@@ -122,11 +122,19 @@ struct ArticulographyEvaluation {
   std::size_t phones = 0, units = 0;  // of the synthesis
 };
 
+// What the comparison needs of its inputs, checked before any work: `ema` (named `ema_source`)
+// has at least 3 frames from t >= 0 ("ema-too-short", "articulography-span") and a sample of every
+// coil of kEmaCoilsUsed ("ema-coils"), and covers the speech of `phones` (at `sample_rate`;
+// `phones_source` in errors): no phone other than silence ends more than 20 ms after the EMA's
+// last frame or starts before its first ("articulography-span"). Throws InputError.
+void check_articulography_inputs(const MarkerFrames<Millimetres>& ema, const std::string& ema_source,
+                                 std::span<const TimedPhone> phones, SampleRate sample_rate,
+                                 const std::string& phones_source);
+
 // Animates `phones` (at `sample_rate`, audio of `audio_samples`; `phones_source` names them in
 // errors) on `voice` with `options`, then compares its face with `ema` (`ema_source`). Throws
-// InputError "articulography-span" when the alignment's speech (its phones other than silence)
-// ends more than 20 ms after the EMA's last frame or starts before its first, "articulography-mesh"
-// when the voice's face is not of the ICT topology, and what register_ema and synthesize throw.
+// what check_articulography_inputs, register_ema and synthesize throw, and InputError
+// "articulography-mesh" when the voice's face is not of the ICT topology.
 ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>& ema, const std::string& ema_source,
                                                  const Voice& voice, std::span<const TimedPhone> phones,
                                                  SampleRate sample_rate, std::int64_t audio_samples,

@@ -1,7 +1,10 @@
 #include "fapcast/eval/articulography_evaluation.hpp"
 
 #include "fapcast/core/input_error.hpp"
+#include "fapcast/face/face_model.hpp"
 #include "fapcast/face/marker_map.hpp"
+
+#include <algorithm>
 
 #include <gtest/gtest.h>
 
@@ -77,6 +80,37 @@ TEST(ArticulographyEvaluation, FacePointsAreTheMarkerTablesFeaturePoints) {
   EXPECT_EQ(p.subnasale, 1147);
   EXPECT_EQ(p.upper_incisor, 18075);
   EXPECT_EQ(p.lower_incisor, 20271);
+}
+
+// The incisor tips on the ICT face: on the midline, the upper one moved by no expression shape
+// (the head frame's origin, like MOCHA's ui coil), the lower one carried down and back by jawOpen
+// (40 mm at jawOpen = 1: an adult's maximal opening); the nose dorsum runs above them, and at
+// fsew0_001's ui -> bn distance (57.7 mm) its point is 13 deg forward of up.
+TEST(ArticulographyEvaluation, TheIncisorTipsAndTheNoseOfTheIctFace) {
+  const FaceModel& face = ict_face_model();
+  const ArticulographyFacePoints p = ict_articulography_points();
+  const auto moved_by = [&](std::int32_t v, std::size_t k) {
+    const auto& d = face.expressions[k].vertices;
+    return std::binary_search(d.begin(), d.end(), v);
+  };
+  for (std::size_t k = 0; k < face.expressions.size(); ++k)
+    EXPECT_FALSE(moved_by(p.upper_incisor, k)) << face.expression_names[k];
+  const std::size_t jaw = face.expression_index("jawOpen");
+  const auto& d = face.expressions[jaw];
+  const auto at = std::lower_bound(d.vertices.begin(), d.vertices.end(), p.lower_incisor);
+  ASSERT_TRUE(at != d.vertices.end() && *at == p.lower_incisor);
+  const Eigen::Vector3f drop = d.offsets_cm.col(at - d.vertices.begin());
+  EXPECT_NEAR(drop.norm(), 4.02, 0.05);
+  EXPECT_LT(drop.y(), -3);
+  EXPECT_LT(drop.z(), 0);
+  EXPECT_LT(std::abs(face.neutral_cm(0, p.upper_incisor)), 0.15);
+  EXPECT_LT(std::abs(face.neutral_cm(0, p.lower_incisor)), 0.15);
+  // At rest the teeth are closed: the tips within a few mm (the lower ones overlap behind the upper).
+  EXPECT_LT((face.neutral_cm.col(p.upper_incisor) - face.neutral_cm.col(p.lower_incisor)).norm(), 0.5);
+  RowMajorMatrixXf mesh_m(1, 3 * face.vertex_count());
+  for (std::int32_t v = 0; v < face.vertex_count(); ++v)
+    for (int a = 0; a < 3; ++a) mesh_m(0, 3 * v + a) = face.neutral_cm(a, v) / 100;
+  EXPECT_NEAR(face_nose_angle_rad(mesh_m, p, 57.7) / kDeg, 13.1, 0.2);
 }
 
 TEST(ArticulographyEvaluation, TheNosePointAnglesAreReadOffTheDorsum) {

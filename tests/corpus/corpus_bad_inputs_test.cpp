@@ -1,6 +1,7 @@
 // Every named bad input in tests/data/corpus/bad is refused with exactly the message listed in
 // expected-errors.txt, and with the rule its file name carries (bad.NNN.<rule>.<ext>).
 #include "fapcast/corpus/c3d.hpp"
+#include "fapcast/corpus/ema.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/corpus/lab_file.hpp"
 #include "fapcast/corpus/marker_csv.hpp"
@@ -27,6 +28,7 @@ void read_by_extension(const std::string& bytes, const fs::path& name) {
   else if (ext == ".c3d") (void)read_c3d(bytes, source);
   else if (ext == ".trc") (void)read_trc(bytes, source);
   else if (ext == ".csv") (void)read_marker_csv(bytes, source);
+  else if (ext == ".ema") (void)read_ema(bytes, source);
   else throw std::logic_error("no reader for " + source);
 }
 
@@ -90,6 +92,7 @@ TEST(CorpusBadInputs, EnoughNamedInputsPerFormat) {
   EXPECT_GE(per_extension[".lab"], 3);
   EXPECT_GE(per_extension[".trc"], 3);
   EXPECT_GE(per_extension[".csv"], 3);
+  EXPECT_GE(per_extension[".ema"], 16);  // text and binary: header, data and time rules
 }
 
 }  // namespace

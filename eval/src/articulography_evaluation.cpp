@@ -115,6 +115,11 @@ double degrees(double rad) { return rad * 180.0 / std::numbers::pi; }
 
 double median(std::span<const double> x) { return percentile(x, 50); }
 
+// A best lag on the edge of the searched window is no lag found: the curves do not line up.
+bool at_window_edge(const TrajectoryAgreement& a, const ArticulographySettings& settings) {
+  return std::abs(a.best_lag_s) > settings.max_lag_s - settings.lag_step_s / 2;
+}
+
 }  // namespace
 
 std::string_view articulatory_measure_name(ArticulatoryMeasure m) { return kNames.at(static_cast<std::size_t>(m)); }
@@ -338,8 +343,8 @@ std::string articulography_table(const ArticulographyEvaluation& e, const std::s
   for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m) {
     const TrajectoryAgreement& a = e.agreement[m];
     out << "| " << kNames[m] << " | " << fixed(a.reference_range, 2) << " | " << fixed(a.compared_range, 2) << " | "
-        << fixed(a.range_ratio, 2) << " | " << fixed(a.r_zero_lag, 2) << " | " << fixed(1000 * a.best_lag_s, 0) << " | "
-        << fixed(a.r_best_lag, 2) << " |\n";
+        << fixed(a.range_ratio, 2) << " | " << fixed(a.r_zero_lag, 2) << " | " << fixed(1000 * a.best_lag_s, 0)
+        << (at_window_edge(a, e.settings) ? " (window edge)" : "") << " | " << fixed(a.r_best_lag, 2) << " |\n";
   }
   const EmaRegistration& r = e.registration;
   out << "EMA " << e.ema_frames << " frames at " << fixed(e.ema_rate_hz, 1) << " Hz, compared on 0 to " << fixed(e.end_s, 3)
@@ -391,7 +396,8 @@ nlohmann::json articulography_json(const ArticulographyEvaluation& e) {
                                             {"range_ratio", a.range_ratio},
                                             {"r_zero_lag", a.r_zero_lag},
                                             {"best_lag_ms", 1000 * a.best_lag_s},
-                                            {"r_best_lag", a.r_best_lag}};
+                                            {"r_best_lag", a.r_best_lag},
+                                            {"best_lag_at_window_edge", at_window_edge(a, e.settings)}};
   }
   return j;
 }

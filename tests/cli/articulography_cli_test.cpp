@@ -6,6 +6,7 @@
 #include "support/run_command.hpp"
 
 #include "fapcast/core/file_io.hpp"
+#include "fapcast/corpus/ema.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -79,6 +80,7 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
       EXPECT_LE(std::abs(s["r_zero_lag"].get<double>()), 1) << m;
       EXPECT_GE(s["r_best_lag"].get<double>(), s["r_zero_lag"].get<double>()) << m;
       EXPECT_LE(std::abs(s["best_lag_ms"].get<double>()), 200) << m;
+      EXPECT_EQ(s["best_lag_at_window_edge"], std::abs(s["best_lag_ms"].get<double>()) == 200) << m;
     }
   }
   // The table's first row is the JSON's lip aperture.
@@ -110,6 +112,17 @@ TEST(ArticulographyCliInput, InputsThatCannotBeComparedAreRefused) {
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find(kMocha + ".lab: articulography-span: a phone spoken from"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("short.ema (0.000 to 0.598 s)"), std::string::npos) << r.err;
+
+  // Without the nose-bridge coil there is no head pitch to register (an EST file names its coils).
+  MarkerFrames<Millimetres> ema = read_ema(read_file(kMocha + ".ema"), kMocha + ".ema");
+  const Eigen::Index bn = *ema.find("bn");
+  ASSERT_EQ(bn, ema.marker_count() - 1);  // the last in MOCHA's order
+  ema.labels.pop_back();
+  ema.positions.conservativeResize(3 * bn, Eigen::NoChange);
+  write_file_atomically(dir + "/no-bn.ema", write_ema_est(ema, EstEncoding::ascii));
+  r = run_command(fapcast("eval articulography " + dir + "/no-bn.ema " + kMocha + ".wav " + kMocha + ".lab" + no_voice));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("no-bn.ema: ema-coils: no samples of coil 'bn'"), std::string::npos) << r.err;
 
   write_file_atomically(dir + "/text.ema", "this is not articulography\n");
   r = run_command(fapcast("eval articulography " + dir + "/text.ema " + kMocha + ".wav " + kMocha + ".lab" + no_voice));

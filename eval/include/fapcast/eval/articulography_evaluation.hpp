@@ -142,8 +142,9 @@ ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>
                                                  const ArticulographySettings& settings = {});
 
 // The table `eval articulography` prints for one animation, headed by `title`: one row per
-// measure (range real and ours in mm, their ratio, r at zero lag, best lag in ms, r there), then
-// the registration.
+// measure (range real and ours in mm, their ratio, r at zero lag, best lag in ms, r there; a lag
+// on the edge of the window is marked "(window edge)": no delay lines the curves up), then the
+// registration.
 std::string articulography_table(const ArticulographyEvaluation& e, const std::string& title);
 // Two animations of one EMA (the reference alignment's and fapcast's own): per measure the range
 // ratio and r of both and the own one's change relative to the reference one's, in %.

@@ -17,8 +17,11 @@
 #include "fapcast/eval/articulography_evaluation.hpp"
 #include "fapcast/eval/svg_plot.hpp"
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
+#include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -38,6 +41,7 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
     cli::TranscriptArgs transcript;
     std::string voice;
     SynthesisOptions options;
+    double tilt_deg = 0;
     std::string json;
     std::string svg;
     bool quiet = false;
@@ -57,6 +61,11 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
   cli::add_alignment_options(*cmd, args->alignment);
   cmd->add_option("--voice", args->voice, "Voice file (default: the reference voice, built on first use)");
   cli::add_synthesis_options(*cmd, args->options);
+  cmd->add_option("--tilt", args->tilt_deg,
+                  "Degrees added to the registration's head-pitch rotation (+ turns the coils' up towards forward): "
+                  "how much the scores depend on it")
+      ->check(CLI::Range(-45.0, 45.0))
+      ->capture_default_str();
   cmd->add_option("--json-out", args->json, "Write the results as JSON to this file (atomically)");
   cmd->add_option("--svg-out", args->svg, "Write the curves, real and synthesised, as an SVG plot to this file (atomically)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
@@ -74,6 +83,13 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
     if (args->transcript.text_given()) command += " --text " + shell_word(args->transcript.text);
     if (!args->voice.empty()) command += " --voice " + shell_word(args->voice);
     command += cli::synthesis_options_text(args->options);
+    ArticulographySettings settings;
+    settings.extra_rotation_rad = args->tilt_deg * std::numbers::pi / 180;
+    if (args->tilt_deg != 0) {
+      std::ostringstream tilt;
+      tilt << " --tilt " << args->tilt_deg;
+      command += tilt.str();
+    }
 
     // The phones first (the reference alignment's, then fapcast's own), checked against the EMA
     // before the voice is opened.
@@ -100,7 +116,7 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
     std::vector<std::string> names;
     for (const Animation& a : animations) {
       evaluations.push_back(evaluate_articulography(ema, args->ema, voice, a.speech.phones, a.speech.sample_rate,
-                                                    a.speech.samples, args->options, a.source));
+                                                    a.speech.samples, args->options, a.source, settings));
       names.push_back(a.name);
     }
 
@@ -123,8 +139,11 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
                 << alignment_effect_table(evaluations[0], evaluations[1]) << "\n";
     }
     if (!args->json.empty()) write_file_atomically(args->json, json.dump(2) + "\n");
-    if (!args->svg.empty())
-      write_file_atomically(args->svg, svg_line_plot(articulography_plot(evaluations, names, command)));
+    if (!args->svg.empty()) {
+      const std::string title = std::filesystem::path(args->ema).filename().string() +
+                                ": real articulography against the face on " + voice_name;
+      write_file_atomically(args->svg, svg_line_plot(articulography_plot(evaluations, names, title)));
+    }
   });
 }};
 

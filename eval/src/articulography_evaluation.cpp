@@ -321,6 +321,7 @@ ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>
                      "the voice's face has " + std::to_string(mean.cols() / 3) +
                          " vertices: the face points are ICT-FaceKit vertices (an ICT-topology voice is needed)");
   e.registration = register_ema(ema, ema_source, mean, points);
+  e.registration.rotation_rad += settings.extra_rotation_rad;
   e.real = ema_measure_curves(ema, e.registration, settings.rate_hz, e.end_s, settings.lowpass_hz);
   const SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones, sample_rate,
                                             audio_samples, options, phones_source);
@@ -347,7 +348,7 @@ std::string articulography_table(const ArticulographyEvaluation& e, const std::s
         << (at_window_edge(a, e.settings) ? " (window edge)" : "") << " | " << fixed(a.r_best_lag, 2) << " |\n";
   }
   const EmaRegistration& r = e.registration;
-  out << "EMA " << e.ema_frames << " frames at " << fixed(e.ema_rate_hz, 1) << " Hz, compared on 0 to " << fixed(e.end_s, 3)
+  out << "\nEMA " << e.ema_frames << " frames at " << fixed(e.ema_rate_hz, 1) << " Hz, compared on 0 to " << fixed(e.end_s, 3)
       << " s at " << fixed(e.settings.rate_hz, 0) << " Hz; coils low-passed at " << fixed(e.settings.lowpass_hz, 0)
       << " Hz (zero phase); registration: origin the mean upper incisor, ui->bn " << fixed(r.nose_distance_mm, 1)
       << " mm at " << fixed(degrees(r.coil_angle_rad), 1) << " deg (forward of up) turned by "
@@ -369,7 +370,8 @@ std::string alignment_effect_table(const ArticulographyEvaluation& reference, co
     const TrajectoryAgreement& b = own.agreement[m];
     out << "| " << kNames[m] << " | " << fixed(a.range_ratio, 2) << " | " << fixed(b.range_ratio, 2) << " | "
         << change(b.range_ratio, a.range_ratio) << " | " << fixed(a.r_zero_lag, 2) << " | " << fixed(b.r_zero_lag, 2)
-        << " | " << change(b.r_zero_lag, a.r_zero_lag) << " |\n";
+        << " | " << (b.r_zero_lag >= a.r_zero_lag ? "+" : "") << fixed(b.r_zero_lag - a.r_zero_lag, 2) << " ("
+        << change(b.r_zero_lag, a.r_zero_lag) << ") |\n";
   }
   return out.str();
 }

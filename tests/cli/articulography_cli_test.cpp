@@ -91,6 +91,23 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
   row << "| lip aperture | " << lip["range_real_mm"].get<double>() << " | " << lip["range_ours_mm"].get<double>() << " | "
       << lip["range_ratio"].get<double>() << " |";
   EXPECT_NE(r.out.find(row.str()), std::string::npos) << row.str() << "\n" << r.out;
+  // --tilt turns the coils further: the rotation-free incisor distance keeps its range, the
+  // lip aperture (measured along "up") does not.
+  const auto t = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha +
+                                     ".lab --tilt 10 --voice " + voice() + " --json-out " + out("t.json") + " -q"));
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_NE(t.out.find(" --tilt 10\n"), std::string::npos) << t.out;
+  const auto tilted = nlohmann::json::parse(read_file(out("t.json")))["animations"][0];
+  const auto& upright = j["animations"][0];
+  EXPECT_NEAR(tilted["registration"]["rotation_deg"].get<double>(),
+              upright["registration"]["rotation_deg"].get<double>() + 10, 1e-9);
+  EXPECT_NEAR(tilted["measures"]["jaw_opening"]["range_real_mm"].get<double>(),
+              upright["measures"]["jaw_opening"]["range_real_mm"].get<double>(), 1e-9);
+  EXPECT_GT(std::abs(tilted["measures"]["lip_aperture"]["range_real_mm"].get<double>() -
+                     upright["measures"]["lip_aperture"]["range_real_mm"].get<double>()),
+            0.2);
+  EXPECT_EQ(tilted["measures"]["lip_aperture"]["range_ours_mm"], upright["measures"]["lip_aperture"]["range_ours_mm"]);
+
   const std::string svg = read_file(out("a.svg"));
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   for (const char* label : {"lip aperture (mm", "jaw opening (mm", "jaw opening (chin 2.1) (mm", "lower-lip protrusion",

@@ -109,6 +109,7 @@ struct ArticulographySettings {
   double lowpass_hz = 15;   // the coils' low-pass
   double max_lag_s = 0.2;   // best lag searched within +-
   double lag_step_s = 0.001;
+  double extra_rotation_rad = 0;  // added to the registration's rotation (a sensitivity check)
 };
 
 struct ArticulographyEvaluation {
@@ -147,7 +148,8 @@ ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>
 // registration.
 std::string articulography_table(const ArticulographyEvaluation& e, const std::string& title);
 // Two animations of one EMA (the reference alignment's and fapcast's own): per measure the range
-// ratio and r of both and the own one's change relative to the reference one's, in %.
+// ratio and r of both and the own one's change relative to the reference one's, in % (for r also
+// the difference: near r = 0 a small change is a large percentage).
 std::string alignment_effect_table(const ArticulographyEvaluation& reference, const ArticulographyEvaluation& own);
 
 nlohmann::json articulography_json(const ArticulographyEvaluation& e);

@@ -28,10 +28,11 @@ class ArticulographyCli : public ::testing::Test {
  public:
   static void SetUpTestSuite() {
     dir_ = new std::string(make_temp_dir("articulography-cli"));
-    const auto r = run_command(fapcast("corpus record-reference -q --count 40 --seed 1 -o " + *dir_ + "/corpus"));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    const auto b = run_command(fapcast("voice build -q " + *dir_ + "/corpus -o " + voice()));
-    ASSERT_EQ(b.exit_code, 0) << b.err;
+    for (const std::string& step : {"corpus record-reference -q --count 40 --seed 1 -o " + *dir_ + "/corpus",
+                                    "voice build -q " + *dir_ + "/corpus -o " + voice()}) {
+      const auto r = run_command(fapcast(step));
+      ASSERT_EQ(r.exit_code, 0) << step << "\n" << r.err;
+    }
   }
   static void TearDownTestSuite() {
     fs::remove_all(*dir_);

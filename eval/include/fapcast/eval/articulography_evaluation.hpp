@@ -75,8 +75,9 @@ double face_nose_angle_rad(const Eigen::Ref<const RowMajorMatrixXf>& mesh_m, con
                            double distance_mm);
 
 // The registration of `ema` (named `source` in errors) onto the face `mesh_m`. Throws InputError
-// "ema-coils" naming a coil of kEmaCoilsUsed the file lacks or never has a sample of, or an
-// upper lip not in front of the upper incisor.
+// "ema-coils" naming a coil of kEmaCoilsUsed the file lacks or never has a sample of, for upper-lip
+// and upper-incisor coils less than 1 mm apart along x (no forward direction), or for a nose-bridge
+// coil within 10 mm of the upper incisor.
 EmaRegistration register_ema(const MarkerFrames<Millimetres>& ema, const std::string& source,
                              const Eigen::Ref<const RowMajorMatrixXf>& mesh_m, const ArticulographyFacePoints& points);
 

@@ -391,6 +391,7 @@ nlohmann::json articulography_json(const ArticulographyEvaluation& e) {
                        {"face_angle_deg", degrees(r.face_angle_rad)},
                        {"rotation_deg", degrees(r.rotation_rad)}};
   j["synthesis"] = {{"phones", e.phones}, {"units", e.units}};
+  j["curves"]["rate_hz"] = e.real.rate_hz;
   for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m) {
     const TrajectoryAgreement& a = e.agreement[m];
     j["measures"][std::string(kKeys[m])] = {{"range_real_mm", a.reference_range},
@@ -400,6 +401,8 @@ nlohmann::json articulography_json(const ArticulographyEvaluation& e) {
                                             {"best_lag_ms", 1000 * a.best_lag_s},
                                             {"r_best_lag", a.r_best_lag},
                                             {"best_lag_at_window_edge", at_window_edge(a, e.settings)}};
+    j["curves"]["real_mm"][std::string(kKeys[m])] = e.real.mm[m];
+    j["curves"]["ours_mm"][std::string(kKeys[m])] = e.face.mm[m];
   }
   return j;
 }

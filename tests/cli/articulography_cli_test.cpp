@@ -73,7 +73,10 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
     // The real talker's ranges (p95 - p5): 11.1 mm lip aperture, 3.9 mm incisor distance.
     EXPECT_NEAR(a["measures"]["lip_aperture"]["range_real_mm"].get<double>(), 11.08, 0.2);
     EXPECT_NEAR(a["measures"]["jaw_opening"]["range_real_mm"].get<double>(), 3.88, 0.1);
+    EXPECT_EQ(a["curves"]["rate_hz"], 100);
     for (const char* m : kMeasures) {
+      EXPECT_EQ(a["curves"]["real_mm"][m].size(), 194u) << m;  // 0 to 1.93 s at 100 Hz
+      EXPECT_EQ(a["curves"]["ours_mm"][m].size(), 194u) << m;
       const auto& s = a["measures"][m];
       EXPECT_EQ(s["range_real_mm"], j["animations"][0]["measures"][m]["range_real_mm"]) << m;
       EXPECT_GT(s["range_ours_mm"].get<double>(), 0) << m;

@@ -153,6 +153,8 @@ std::string articulography_table(const ArticulographyEvaluation& e, const std::s
 // the difference: near r = 0 a small change is a large percentage).
 std::string alignment_effect_table(const ArticulographyEvaluation& reference, const ArticulographyEvaluation& own);
 
+// The evaluation as JSON: EMA, settings, registration, synthesis, per measure the scores
+// ("measures") and both curves on the grid ("curves": rate_hz, real_mm and ours_mm by measure).
 nlohmann::json articulography_json(const ArticulographyEvaluation& e);
 
 // One panel per measure: the real curve and each animation's (named by `names`), each minus its

@@ -20,12 +20,12 @@ namespace {
 
 // The commands in pipeline order, as --help lists them: recording and aligning speech, making a
 // voice, speaking with it, measuring it, faces, the file formats, looking at a mesh, the network.
-constexpr std::array<std::string_view, 21> kCommandOrder{
+constexpr std::array<std::string_view, 22> kCommandOrder{
     "corpus script", "corpus record-reference",                       // the recording (paper 3.2)
     "align",                                                          // recorded speech's phones
     "voice build",   "voice info", "voice default", "voice adapt",    // the voice (3.3-3.6, 3.9)
     "say",           "animate",                                       // synthesis (3.7-3.8)
-    "eval retarget", "eval synth", "eval align",                      // evaluation (4.1), the aligner
+    "eval retarget", "eval synth", "eval align", "eval articulography",  // evaluation (4.1), the aligner, real talkers
     "adapt",         "expressions",                                   // faces (3.9)
     "fap",           "encode",      "decode",        "export",        // the file formats
     "render",                                                         // looking at a .glb

@@ -1,5 +1,7 @@
 #include "fapcast/eval/lip_measures.hpp"
 
+#include "fapcast/math/sample_statistics.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -91,28 +93,11 @@ CurveAgreement compare_curves(std::span<const double> a, std::span<const double>
     ++out.frames;
   }
   if (out.frames == 0 || max_a <= 0 || max_b <= 0) return out;
-  // One pass for the error, the means and the co-moments (values are O(1) after normalising).
-  double error = 0, mean_a = 0, mean_b = 0;
-  for (std::size_t t = 0; t < a.size(); ++t) {
-    if (std::isnan(a[t]) || std::isnan(b[t])) continue;
-    error += std::abs(a[t] / max_a - b[t] / max_b);
-    mean_a += a[t] / max_a;
-    mean_b += b[t] / max_b;
-  }
-  const auto n = static_cast<double>(out.frames);
-  mean_a /= n;
-  mean_b /= n;
-  double saa = 0, sbb = 0, sab = 0;
-  for (std::size_t t = 0; t < a.size(); ++t) {
-    if (std::isnan(a[t]) || std::isnan(b[t])) continue;
-    const double da = a[t] / max_a - mean_a;
-    const double db = b[t] / max_b - mean_b;
-    saa += da * da;
-    sbb += db * db;
-    sab += da * db;
-  }
-  out.mean_error_percent = 100.0 * error / n;
-  out.correlation = (saa > 0 && sbb > 0) ? sab / std::sqrt(saa * sbb) : 0.0;
+  double error = 0;
+  for (std::size_t t = 0; t < a.size(); ++t)
+    if (!std::isnan(a[t]) && !std::isnan(b[t])) error += std::abs(a[t] / max_a - b[t] / max_b);
+  out.mean_error_percent = 100.0 * error / static_cast<double>(out.frames);
+  out.correlation = pearson_correlation(a, b);  // scale-free: the normalisation does not change it
   return out;
 }
 

@@ -55,7 +55,8 @@ TEST(Cli, HelpListsTheCommandsInPipelineOrder) {
             (std::vector<std::string>{"script", "record-reference"}));
   EXPECT_EQ(listed_commands(run_command(fapcast("voice --help")).out),
             (std::vector<std::string>{"build", "info", "default", "adapt"}));
-  EXPECT_EQ(listed_commands(run_command(fapcast("eval --help")).out), (std::vector<std::string>{"retarget", "synth", "align"}));
+  EXPECT_EQ(listed_commands(run_command(fapcast("eval --help")).out),
+            (std::vector<std::string>{"retarget", "synth", "align", "articulography"}));
 }
 
 TEST(Cli, VersionPrintsTheProjectVersion) {
@@ -68,7 +69,7 @@ TEST(Cli, VersionPrintsTheProjectVersion) {
 TEST(Cli, SynthesisDefaultsAreTheLibrarysInEveryCommand) {
   const SynthesisOptions shipped;
   ASSERT_TRUE(shipped.search.max_active.has_value());
-  for (const std::string command : {"say", "animate", "eval synth"}) {
+  for (const std::string command : {"say", "animate", "eval synth", "eval articulography"}) {
     SCOPED_TRACE(command);
     const auto r = run_command(fapcast(command + " --help"));
     ASSERT_EQ(r.exit_code, 0) << r.err;

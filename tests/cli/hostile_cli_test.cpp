@@ -190,7 +190,13 @@ INSTANTIATE_TEST_SUITE_P(
         UnwritableOutput{"animate", "animate " + kIn + ".wav " + kIn + ".lab -o " + kNo + "x.glb", kNo + "x.glb"},
         UnwritableOutput{"rig", "animate " + kIn + ".wav " + kIn + ".lab --rig arkit -o " + kNo + "x.csv",
                          kNo + "x.csv"},
-        UnwritableOutput{"expressions", "expressions -o " + kNo + "x.glb", kNo + "x.glb"}),
+        UnwritableOutput{"expressions", "expressions -o " + kNo + "x.glb", kNo + "x.glb"},
+        UnwritableOutput{"eval_articulography_json",
+                         "eval articulography " + kIn + ".ema " + kIn + ".wav " + kIn + ".lab --json-out " + kNo + "x.json",
+                         kNo + "x.json"},
+        UnwritableOutput{"eval_articulography_svg",
+                         "eval articulography " + kIn + ".ema " + kIn + ".wav --text hi --svg-out " + kNo + "x.svg",
+                         kNo + "x.svg"}),
     unwritable_name);
 
 }  // namespace

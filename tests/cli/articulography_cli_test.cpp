@@ -1,0 +1,168 @@
+// `fapcast eval articulography` end to end on MOCHA-TIMIT fsew0_001 (real EMA, its WAV and its
+// phone alignment, tests/data/mocha): the face animated on a small SYNTHETIC voice from the
+// reference alignment and from fapcast's own forced alignment, compared with the coils; and the
+// refusals of inputs that cannot be compared (exit 1, named) and of bad usage (exit 2).
+#include "cli/fapcast_command.hpp"
+#include "support/run_command.hpp"
+
+#include "fapcast/core/file_io.hpp"
+#include "fapcast/corpus/ema.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+namespace fapcast::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kMocha = std::string(FAPCAST_TEST_DATA) + "/mocha/fsew0_001";
+
+// The voice is built once per process from 40 SYNTHETIC script items (as SayCli's); CTest runs
+// each test in its own process, so the end-to-end checks share one test.
+class ArticulographyCli : public ::testing::Test {
+ public:
+  static void SetUpTestSuite() {
+    dir_ = new std::string(make_temp_dir("articulography-cli"));
+    for (const std::string& step : {"corpus record-reference -q --count 40 --seed 1 -o " + *dir_ + "/corpus",
+                                    "voice build -q " + *dir_ + "/corpus -o " + voice()}) {
+      const auto r = run_command(fapcast(step));
+      ASSERT_EQ(r.exit_code, 0) << step << "\n" << r.err;
+    }
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*dir_);
+    delete dir_;
+  }
+  static std::string voice() { return *dir_ + "/v.fapv"; }
+  static std::string out(const std::string& name) { return *dir_ + "/" + name; }
+  static std::string* dir_;
+};
+std::string* ArticulographyCli::dir_ = nullptr;
+
+constexpr const char* kMeasures[] = {"lip_aperture", "jaw_opening", "jaw_opening_chin", "lower_lip_protrusion",
+                                     "tongue_tip_height"};
+
+// Both animations of the sentence: the real side is the same in each (it does not depend on the
+// phones), the registration is the spec's (ui -> bn 57.7 mm, turned 18.7 deg), every score is a
+// range ratio, a correlation and a lag inside the searched window; the table, the JSON and the
+// SVG say the same.
+TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
+  const auto r = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha +
+                                     ".lab --text \"This was easy for us.\" --voice " + voice() + " --json-out " +
+                                     out("a.json") + " --svg-out " + out("a.svg") + " -q"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("## animated from the reference alignment"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("## animated from the own alignment (forced, transcript)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("## own alignment against the reference alignment"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(voice()), std::string::npos) << "the voice is named: " << r.out;
+  const auto j = nlohmann::json::parse(read_file(out("a.json")));
+  EXPECT_EQ(j["voice"], voice());
+  ASSERT_EQ(j["animations"].size(), 2u);
+  EXPECT_EQ(j["animations"][0]["phones_from"], "reference alignment");
+  for (const auto& a : j["animations"]) {
+    EXPECT_EQ(a["ema"]["frames"], 966);
+    EXPECT_NEAR(a["ema"]["end_s"].get<double>(), 1.93, 1e-9);
+    EXPECT_NEAR(a["registration"]["nose_distance_mm"].get<double>(), 57.7, 0.1);
+    EXPECT_NEAR(a["registration"]["rotation_deg"].get<double>(), 18.7, 0.3);
+    EXPECT_EQ(a["registration"]["forward_sign"], -1);  // MOCHA's x points back
+    // The real talker's ranges (p95 - p5): 11.1 mm lip aperture, 3.9 mm incisor distance.
+    EXPECT_NEAR(a["measures"]["lip_aperture"]["range_real_mm"].get<double>(), 11.08, 0.2);
+    EXPECT_NEAR(a["measures"]["jaw_opening"]["range_real_mm"].get<double>(), 3.88, 0.1);
+    EXPECT_EQ(a["curves"]["rate_hz"], 100);
+    for (const char* m : kMeasures) {
+      EXPECT_EQ(a["curves"]["real_mm"][m].size(), 194u) << m;  // 0 to 1.93 s at 100 Hz
+      EXPECT_EQ(a["curves"]["ours_mm"][m].size(), 194u) << m;
+      const auto& s = a["measures"][m];
+      EXPECT_EQ(s["range_real_mm"], j["animations"][0]["measures"][m]["range_real_mm"]) << m;
+      EXPECT_GT(s["range_ours_mm"].get<double>(), 0) << m;
+      EXPECT_NEAR(s["range_ratio"].get<double>(), s["range_ours_mm"].get<double>() / s["range_real_mm"].get<double>(), 1e-9);
+      EXPECT_LE(std::abs(s["r_zero_lag"].get<double>()), 1) << m;
+      EXPECT_GE(s["r_best_lag"].get<double>(), s["r_zero_lag"].get<double>()) << m;
+      EXPECT_LE(std::abs(s["best_lag_ms"].get<double>()), 200) << m;
+      EXPECT_EQ(s["best_lag_at_window_edge"], std::abs(s["best_lag_ms"].get<double>()) == 200) << m;
+    }
+  }
+  // The table's first row is the JSON's lip aperture.
+  std::ostringstream row;
+  const auto& lip = j["animations"][0]["measures"]["lip_aperture"];
+  row.setf(std::ios::fixed);
+  row.precision(2);
+  row << "| lip aperture | " << lip["range_real_mm"].get<double>() << " | " << lip["range_ours_mm"].get<double>() << " | "
+      << lip["range_ratio"].get<double>() << " |";
+  EXPECT_NE(r.out.find(row.str()), std::string::npos) << row.str() << "\n" << r.out;
+  // --tilt turns the coils further: the rotation-free incisor distance keeps its range, the
+  // lip aperture (measured along "up") does not.
+  const auto t = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha +
+                                     ".lab --tilt 10 --voice " + voice() + " --json-out " + out("t.json") + " -q"));
+  ASSERT_EQ(t.exit_code, 0) << t.err;
+  EXPECT_NE(t.out.find(" --tilt 10\n"), std::string::npos) << t.out;
+  const auto tilted = nlohmann::json::parse(read_file(out("t.json")))["animations"][0];
+  const auto& upright = j["animations"][0];
+  EXPECT_NEAR(tilted["registration"]["rotation_deg"].get<double>(),
+              upright["registration"]["rotation_deg"].get<double>() + 10, 1e-9);
+  EXPECT_NEAR(tilted["measures"]["jaw_opening"]["range_real_mm"].get<double>(),
+              upright["measures"]["jaw_opening"]["range_real_mm"].get<double>(), 1e-9);
+  EXPECT_GT(std::abs(tilted["measures"]["lip_aperture"]["range_real_mm"].get<double>() -
+                     upright["measures"]["lip_aperture"]["range_real_mm"].get<double>()),
+            0.2);
+  EXPECT_EQ(tilted["measures"]["lip_aperture"]["range_ours_mm"], upright["measures"]["lip_aperture"]["range_ours_mm"]);
+
+  const std::string svg = read_file(out("a.svg"));
+  EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
+  for (const char* label : {"lip aperture (mm", "jaw opening (mm", "jaw opening (chin 2.1) (mm", "lower-lip protrusion",
+                            "tongue-tip height", "real (EMA)", "own alignment (forced, transcript)"})
+    EXPECT_NE(svg.find(label), std::string::npos) << label;
+}
+
+// Refusals that come before any voice is opened (the voice named does not exist): exit 1 naming
+// the file and the rule, or exit 2 for usage.
+TEST(ArticulographyCliInput, InputsThatCannotBeComparedAreRefused) {
+  const std::string dir = make_temp_dir("articulography-bad");
+  const std::string no_voice = " --voice " + dir + "/missing.fapv";
+  // The EMA stops at 0.6 s; the sentence is spoken until 1.67 s.
+  std::istringstream rows(read_file(kMocha + ".ema"));
+  std::string line, shortened;
+  for (int i = 0; i < 300 && std::getline(rows, line); ++i) shortened += line + "\n";
+  write_file_atomically(dir + "/short.ema", shortened);
+  auto r = run_command(fapcast("eval articulography " + dir + "/short.ema " + kMocha + ".wav " + kMocha + ".lab" + no_voice));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find(kMocha + ".lab: articulography-span: a phone spoken from"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("short.ema (0.000 to 0.598 s)"), std::string::npos) << r.err;
+
+  // Without the nose-bridge coil there is no head pitch to register (an EST file names its coils).
+  MarkerFrames<Millimetres> ema = read_ema(read_file(kMocha + ".ema"), kMocha + ".ema");
+  const Eigen::Index bn = *ema.find("bn");
+  ASSERT_EQ(bn, ema.marker_count() - 1);  // the last in MOCHA's order
+  ema.labels.pop_back();
+  ema.positions.conservativeResize(3 * bn, Eigen::NoChange);
+  write_file_atomically(dir + "/no-bn.ema", write_ema_est(ema, EstEncoding::ascii));
+  r = run_command(fapcast("eval articulography " + dir + "/no-bn.ema " + kMocha + ".wav " + kMocha + ".lab" + no_voice));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("no-bn.ema: ema-coils: no samples of coil 'bn'"), std::string::npos) << r.err;
+
+  write_file_atomically(dir + "/text.ema", "this is not articulography\n");
+  r = run_command(fapcast("eval articulography " + dir + "/text.ema " + kMocha + ".wav " + kMocha + ".lab" + no_voice));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("text.ema"), std::string::npos) << r.err;
+
+  r = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha + ".lab" + no_voice +
+                          " --json-out " + dir + "/no/such/dir/a.json"));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("a.json"), std::string::npos) << r.err;
+
+  r = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav --tier phones"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  r = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav --text a --transcript " + kMocha +
+                          ".txt"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  r = run_command(fapcast("eval articulography " + kMocha + ".ema"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+}
+
+}  // namespace
+}  // namespace fapcast::test

@@ -10,7 +10,7 @@
 #include "recorded_speech.hpp"
 #include "speech_transcript.hpp"
 #include "synthesis_cli.hpp"
-#include "voice_face.hpp"
+#include "fapcast/utterance/voice_face.hpp"
 
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/corpus/ema.hpp"
@@ -111,7 +111,7 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
 
     const Voice voice = cli::open_voice_or_default(args->voice, args->quiet);
     const std::string voice_name = args->voice.empty() ? std::string("the default voice") : args->voice;
-    cli::check_voice_phone_set(voice, voice_name);
+    check_voice_phone_set(voice, voice_name);
     std::vector<ArticulographyEvaluation> evaluations;
     std::vector<std::string> names;
     for (const Animation& a : animations) {

@@ -79,7 +79,7 @@ void RealisedArticulation::add_take(std::span<const Phone> phones, std::span<con
   }
   validate_timeline(timeline);
   for (std::size_t s = 0; s < phones.size(); ++s) {
-    const double centre = static_cast<double>(spans[s].first + spans[s].count / 2) / kVoiceFramesPerSecond;
+    const double centre = static_cast<double>(centre_frame(spans[s])) / kVoiceFramesPerSecond;
     const ChannelValues v = channel_values_at(timeline, centre);
     const auto c = static_cast<std::size_t>(search_viseme(phones[s]));
     for (std::size_t k = 0; k < kChannelCount; ++k) sum_[c][k] += std::clamp(v[k], 0.0f, 1.0f);

@@ -160,11 +160,9 @@ sf_count_t sink_write(const void* in, sf_count_t count, void* user) {
   auto& f = *static_cast<AtomicSink*>(user);
   const std::string_view bytes(static_cast<const char*>(in), static_cast<std::size_t>(count));
   try {
-    if (f.position == f.length) {
-      f.file->write(bytes);
-    } else {
-      f.file->write_at(static_cast<std::uint64_t>(f.position), bytes);
-    }
+    // Always at the sink's own position: a pwrite does not move the descriptor's offset, so a
+    // later appending write() after one that ran past the end would land inside it.
+    f.file->write_at(static_cast<std::uint64_t>(f.position), bytes);
   } catch (...) {
     f.error = std::current_exception();
     return 0;
@@ -200,6 +198,11 @@ WavWriter::~WavWriter() = default;
 void WavWriter::append(std::span<const std::int16_t> samples) {
   if (!state_->file) throw std::logic_error("WavWriter::append after finish");
   const auto n = static_cast<sf_count_t>(samples.size());
+  // The RIFF and data chunk sizes are 32-bit (libsndfile would wrap them silently).
+  constexpr std::int64_t kMaxDataBytes = 0xFFFFFFFFLL - 44;
+  if (2 * (instants_ + n) > kMaxDataBytes)
+    throw std::runtime_error(state_->sink.file->path().string() +
+                             ": WAV: more than 4 GiB of 16-bit samples, past the RIFF header's 32-bit sizes");
   if (sf_writef_short(state_->file.get(), samples.data(), n) != n) {
     if (state_->sink.error) std::rethrow_exception(state_->sink.error);
     throw std::runtime_error(state_->sink.file->path().string() + ": WAV: write failed: " + sf_strerror(state_->file.get()));

@@ -501,6 +501,8 @@ std::string write_ema_est(const MarkerFrames<Millimetres>& markers, EstEncoding 
   if (binary) out += big_endian ? "ByteOrder 10\n" : "ByteOrder 01\n";
   out += "NumFrames " + std::to_string(markers.frame_count()) + "\n";
   out += "NumChannels " + std::to_string(2 * coils) + "\n";
+  // FrameShift too, so that a file of one frame (no step in its time column) keeps its rate.
+  out += "FrameShift " + shortest_decimal(1 / markers.frame_rate_hz) + "\n";
   out += "EqualSpace 1\nBreaksPresent true\nCommentChar ;\n\n";
   for (Eigen::Index m = 0; m < coils; ++m) {
     const std::string& label = markers.labels[static_cast<std::size_t>(m)];

@@ -160,8 +160,11 @@ double face_nose_angle_rad(const Eigen::Ref<const RowMajorMatrixXf>& mesh_m, con
   return std::atan2(at[1], at[0]);
 }
 
-EmaRegistration register_ema(const MarkerFrames<Millimetres>& ema, const std::string& source,
-                             const Eigen::Ref<const RowMajorMatrixXf>& mesh_m, const ArticulographyFacePoints& points) {
+namespace {
+
+// The part of the registration the coils alone decide (origin, forward, the nose's distance and
+// angle); the face's angle is added by register_ema. Throws InputError for coils that give no frame.
+EmaRegistration register_coils(const MarkerFrames<Millimetres>& ema, const std::string& source) {
   std::array<std::array<double, 2>, kEmaCoilsUsed.size()> means{};
   for (std::size_t c = 0; c < kEmaCoilsUsed.size(); ++c) {
     const auto xy = used_coil(ema, kEmaCoilsUsed[c], source);
@@ -184,7 +187,20 @@ EmaRegistration register_ema(const MarkerFrames<Millimetres>& ema, const std::st
     throw InputError({source, std::nullopt, std::nullopt}, "ema-coils",
                      "the nose-bridge coil lies " + fixed(r.nose_distance_mm, 1) +
                          " mm from the upper incisor: too close to give the head's pitch");
+  // The frame's y must point up: a rotation cannot undo a y-down track (forward would flip too).
+  if (!(u > 0))
+    throw InputError({source, std::nullopt, std::nullopt}, "ema-coils",
+                     "the nose-bridge coil lies " + fixed(-u, 1) +
+                         " mm below the upper incisor: the file's y axis must point up (MOCHA's does)");
   r.coil_angle_rad = std::atan2(f, u);
+  return r;
+}
+
+}  // namespace
+
+EmaRegistration register_ema(const MarkerFrames<Millimetres>& ema, const std::string& source,
+                             const Eigen::Ref<const RowMajorMatrixXf>& mesh_m, const ArticulographyFacePoints& points) {
+  EmaRegistration r = register_coils(ema, source);
   r.face_angle_rad = face_nose_angle_rad(mesh_m, points, r.nose_distance_mm);
   r.rotation_rad = r.face_angle_rad - r.coil_angle_rad;
   return r;
@@ -287,19 +303,30 @@ void check_articulography_inputs(const MarkerFrames<Millimetres>& ema, const std
                      std::to_string(frames) + " frames: the evaluation needs at least 3");
   const double first_s = static_cast<double>(ema.first_frame) / ema.frame_rate_hz;
   const double end_s = static_cast<double>(ema.first_frame + frames - 1) / ema.frame_rate_hz;
-  if (first_s < 0)
+  // The comparison grid runs from 0 (the speech's start): an EMA starting later would be held flat there.
+  if (first_s < 0 || first_s > kSpanToleranceS)
     throw InputError({ema_source, std::nullopt, std::nullopt}, "articulography-span",
-                     "the EMA starts at " + fixed(first_s, 3) + " s: its frames must lie on the speech's timeline from 0");
-  for (const std::string_view coil : kEmaCoilsUsed) used_coil(ema, coil, ema_source);
+                     "the EMA starts at " + fixed(first_s, 3) + " s: it must start with the speech, at 0");
+  // 100 Hz: the comparison grid's rate, and over twice the 15 Hz low-pass.
+  if (!(ema.frame_rate_hz >= 100))
+    throw InputError({ema_source, std::nullopt, std::nullopt}, "ema-rate",
+                     "the EMA's rate " + fixed(ema.frame_rate_hz, 1) +
+                         " Hz is below 100 Hz, the rate the evaluation compares at");
+  (void)register_coils(ema, ema_source);  // its refusals before any voice is opened
   const auto seconds = [&](std::int64_t sample) { return static_cast<double>(sample) / static_cast<double>(sample_rate.hz); };
+  std::size_t spoken = 0;
   for (const TimedPhone& p : phones) {
     if (p.phone == Phone::SIL) continue;
+    ++spoken;
     if (seconds(p.end_sample) > end_s + kSpanToleranceS || seconds(p.start_sample) < first_s - kSpanToleranceS)
       throw InputError({phones_source, std::nullopt, std::nullopt}, "articulography-span",
                        "a phone spoken from " + fixed(seconds(p.start_sample), 3) + " to " + fixed(seconds(p.end_sample), 3) +
                            " s lies outside the EMA " + ema_source + " (" + fixed(first_s, 3) + " to " + fixed(end_s, 3) +
                            " s): the articulography must cover the speech");
   }
+  if (spoken == 0)
+    throw InputError({phones_source, std::nullopt, std::nullopt}, "articulography-span",
+                     "no phone is spoken (only silences and noises): nothing to compare with the EMA");
 }
 
 ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>& ema, const std::string& ema_source,

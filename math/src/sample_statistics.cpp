@@ -9,8 +9,12 @@
 namespace fapcast {
 
 double percentile(std::span<const double> x, double p) {
-  if (x.empty() || !(p >= 0 && p <= 100)) throw std::invalid_argument("percentile: needs samples and 0 <= p <= 100");
-  std::vector<double> s(x.begin(), x.end());
+  if (!(p >= 0 && p <= 100)) throw std::invalid_argument("percentile: needs 0 <= p <= 100");
+  std::vector<double> s;  // NaN (a missing sample) skipped, as pearson_correlation does: sort needs an order
+  s.reserve(x.size());
+  for (const double v : x)
+    if (!std::isnan(v)) s.push_back(v);
+  if (s.empty()) throw std::invalid_argument("percentile: no sample that is a number");
   std::sort(s.begin(), s.end());
   const double pos = p / 100 * static_cast<double>(s.size() - 1);
   const auto lo = static_cast<std::size_t>(std::floor(pos));

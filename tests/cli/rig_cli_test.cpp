@@ -175,7 +175,9 @@ TEST_F(RigCli, AvatarSpeaksInThreeJsAndChromium) {
       ++closures;
       pbm_frames += (closures > 1 ? "," : "") + std::to_string((lo - gap.begin()) / 60.0);
     } else if (is_vowel(run.viseme) && run.end - run.first >= 4) {  // and part for every vowel
-      EXPECT_GT(*hi, 5.0) << run.viseme << " frames " << run.first << ".." << run.end;
+      // 4 mm: the calibrated talker's vowels (spec/talker.md) open about half as far as the
+      // uncalibrated ones did; a lax /I/ of 4-6 frames reaches 4.7 mm on this avatar.
+      EXPECT_GT(*hi, 4.0) << run.viseme << " frames " << run.first << ".." << run.end;
       ++vowels;
       vowel_frames += (vowels > 1 ? "," : "") + std::to_string((hi - gap.begin()) / 60.0);
     }
@@ -194,7 +196,9 @@ TEST_F(RigCli, AvatarSpeaksInThreeJsAndChromium) {
     const double median_open = open[open.size() / 2];
     std::cout << "avatar inner-lip gap (three.js): closures at most " << *std::max_element(closed.begin(), closed.end())
               << " mm, vowels' median opening " << median_open << " mm\n";
-    for (double c : closed) EXPECT_LT(c, 0.2 * median_open);
+    // A quarter: the closures' 2.1 mm is this avatar's known limit (spec/rigs.md), the vowels'
+    // median 10 mm since the calibration against real articulography (was 21.6 mm).
+    for (double c : closed) EXPECT_LT(c, 0.25 * median_open);
   }
   // rendered by three.js in headless Chromium: the mouth crop is darker (the open mouth) at the
   // vowels' most open frames than at the closures' most closed ones

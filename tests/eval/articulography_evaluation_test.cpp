@@ -3,6 +3,7 @@
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/face/marker_map.hpp"
+#include "fapcast/phonetics/timed_phone.hpp"
 
 #include <algorithm>
 
@@ -218,6 +219,34 @@ TEST(ArticulographyEvaluation, ThePlotHasAPanelPerMeasureAndACurvePerAnimation) 
   EXPECT_EQ(plot.panels[0].series[1].values, (std::vector<double>{0, 0, 3}));
   EXPECT_EQ(plot.panels[4].y_label, "tongue-tip height (mm, median 0)");
   EXPECT_THROW(articulography_plot(both, std::span(names).first(1), "t"), std::invalid_argument);
+}
+
+// Inputs that would give a wrong comparison are refused before any voice is opened.
+TEST(ArticulographyEvaluation, InputsThatCannotBeComparedAreRefused) {
+  const SampleRate rate{16000};
+  const std::vector<TimedPhone> speech{{Phone::SIL, 0, 4000}, {Phone::AA, 4000, 12000}, {Phone::SIL, 12000, 16000}};
+  const auto rule_of = [&](const MarkerFrames<Millimetres>& ema, std::span<const TimedPhone> phones) -> std::string {
+    try {
+      check_articulography_inputs(ema, "head.ema", phones, rate, "head.lab");
+    } catch (const InputError& e) {
+      return e.rule();
+    }
+    return "accepted";
+  };
+  EXPECT_EQ(rule_of(constructed_ema(0), speech), "accepted");
+  MarkerFrames<Millimetres> slow = constructed_ema(0, 50);  // 50 frames at 25 Hz: 2 s
+  slow.frame_rate_hz = 25;
+  EXPECT_EQ(rule_of(slow, speech), "ema-rate");
+  MarkerFrames<Millimetres> late = constructed_ema(0);
+  late.first_frame = 100;  // starts at 0.2 s: the grid from 0 would hold it flat
+  EXPECT_EQ(rule_of(late, speech), "articulography-span");
+  MarkerFrames<Millimetres> upside_down = constructed_ema(0);
+  for (Eigen::Index k = 0; k < upside_down.frame_count(); ++k)
+    for (Eigen::Index m = 0; m < upside_down.marker_count(); ++m)
+      upside_down.positions(3 * m + 1, k) = -upside_down.positions(3 * m + 1, k);
+  EXPECT_EQ(rule_of(upside_down, speech), "ema-coils");
+  const std::vector<TimedPhone> silent{{Phone::SIL, 0, 16000}};
+  EXPECT_EQ(rule_of(constructed_ema(0), silent), "articulography-span");
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Fuzzes read_ema: any input either reads or throws InputError, never crashes or over-allocates;
 // what it reads is a consistent marker set that write_ema_est writes and read_ema reads back to
-// the same coils, frames, rate and numbering (values to double rounding of x100 / 100).
+// the same coils, frames, rate (to a relative 1e-12) and numbering (values to double rounding of x100 / 100).
 #include "fapcast/corpus/ema.hpp"
 #include "fapcast/core/input_error.hpp"
 
@@ -19,7 +19,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (!m.consistent() || m.labels.empty() || !(m.frame_rate_hz > 0)) std::abort();
   const fapcast::MarkerFrames<fapcast::Millimetres> back =
       fapcast::read_ema(fapcast::write_ema_est(m, fapcast::EstEncoding::ascii), "fuzz-back");
-  if (back.labels != m.labels || back.frame_rate_hz != m.frame_rate_hz || back.first_frame != m.first_frame ||
+  // The rate to a relative 1e-12: the file holds 1 / rate as a shortest decimal, read back as 1 / that.
+  if (back.labels != m.labels || std::abs(back.frame_rate_hz - m.frame_rate_hz) > 1e-12 * m.frame_rate_hz ||
+      back.first_frame != m.first_frame ||
       back.frame_count() != m.frame_count()) {
     std::abort();
   }

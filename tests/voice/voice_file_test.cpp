@@ -24,6 +24,7 @@ TEST(Crc32, MatchesTheStandardCheckValueAndChains) {
   EXPECT_EQ(crc32({}), 0u);
   const auto all = std::as_bytes(std::span(s));
   EXPECT_EQ(crc32(all.subspan(4), crc32(all.first(4))), 0xCBF43926u);
+  EXPECT_EQ(crc32({}, 0x12345678u), 0x12345678u);  // an empty piece keeps the running value
 }
 
 VoiceProvenance tiny_provenance() {

@@ -111,9 +111,11 @@ struct SourcePrototype {
 std::vector<SourcePrototype> select_source_prototypes(const Eigen::MatrixXd& frames,
                                                       std::span<const PhoneState> states);
 
-// The frame at the centre of a state: first + count / 2.
-inline Eigen::Index centre_frame(const PhoneState& s) {
-  return static_cast<Eigen::Index>(s.frames.first) + static_cast<Eigen::Index>(s.frames.count / 2);
+// The frame at the centre of a span: first + count / 2 (source prototypes are taken there, and
+// the realised articulation the target prototypes follow is measured there).
+inline Eigen::Index centre_frame(const FrameSpan& frames) {
+  return static_cast<Eigen::Index>(frames.first) + static_cast<Eigen::Index>(frames.count / 2);
 }
+inline Eigen::Index centre_frame(const PhoneState& s) { return centre_frame(s.frames); }
 
 }  // namespace fapcast

@@ -34,7 +34,7 @@ enum class EstEncoding {
   binary_big_endian,     // DataType binary, ByteOrder 10, float32 (as Sun machines wrote it)
 };
 
-// The EST Track file of `markers` (channels <coil>_x, <coil>_y per marker, 1/100 mm, a time
+// The EST Track file of `markers` (FrameShift 1 / rate; channels <coil>_x, <coil>_y per marker, 1/100 mm, a time
 // and a break column; a frame with every coil missing is a break), which read_ema reads back
 // (binary: to float32 precision). Throws std::invalid_argument for labels that are not MOCHA
 // coil names or repeat, a non-zero z, a frame with some coils missing and some not, a rate

@@ -3,7 +3,7 @@
 // articulography"): an utterance is animated from its phones on a voice, and lip aperture, jaw
 // opening, lower-lip protrusion and tongue-tip height are measured on the face's ICT vertices and
 // on the EMA coils after a stated registration, low-passed (the coils), resampled to one 100 Hz
-// grid on the EMA's time span and compared (trajectory_agreement.hpp).
+// grid from 0 to the EMA's end and compared (trajectory_agreement.hpp).
 #include "fapcast/core/eigen_types.hpp"
 #include "fapcast/core/sample_rate.hpp"
 #include "fapcast/corpus/marker_frames.hpp"
@@ -125,10 +125,12 @@ struct ArticulographyEvaluation {
 };
 
 // What the comparison needs of its inputs, checked before any work: `ema` (named `ema_source`)
-// has at least 3 frames from t >= 0 ("ema-too-short", "articulography-span") and a sample of every
-// coil of kEmaCoilsUsed ("ema-coils"), and covers the speech of `phones` (at `sample_rate`;
-// `phones_source` in errors): no phone other than silence ends more than 20 ms after the EMA's
-// last frame or starts before its first ("articulography-span"). Throws InputError.
+// has at least 3 frames starting at 0 (within 20 ms) at 100 Hz or more ("ema-too-short",
+// "articulography-span", "ema-rate"), a sample of every coil of kEmaCoilsUsed and coils that
+// give a head frame (register_ema's "ema-coils"), and covers the speech of `phones` (at
+// `sample_rate`; `phones_source` in errors): some phone other than silence, none ending more than
+// 20 ms after the EMA's last frame or starting before its first ("articulography-span"). Throws
+// InputError.
 void check_articulography_inputs(const MarkerFrames<Millimetres>& ema, const std::string& ema_source,
                                  std::span<const TimedPhone> phones, SampleRate sample_rate,
                                  const std::string& phones_source);

@@ -6,8 +6,8 @@
 namespace fapcast {
 
 // The p-th percentile (0..100) of `x` by linear interpolation between order statistics
-// (Hyndman & Fan's type 7, the common default). Throws std::invalid_argument for an empty `x`
-// or p outside 0..100.
+// (Hyndman & Fan's type 7, the common default), NaN samples skipped. Throws
+// std::invalid_argument when no sample is a number or p is outside 0..100.
 double percentile(std::span<const double> x, double p);
 
 // Pearson's correlation of two curves of the same length (>= 2 samples), over the samples where

@@ -87,6 +87,14 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
       EXPECT_EQ(s["best_lag_at_window_edge"], std::abs(s["best_lag_ms"].get<double>()) == 200) << m;
     }
   }
+  // The calibration against real articulography (spec/talker.md): the jaw and the lower lip's
+  // protrusion move about as far as the real talker's. The uncalibrated talker's were 3.7 and
+  // 2.5 times the real ranges on the default voice.
+  for (const char* m : {"jaw_opening", "lower_lip_protrusion"}) {
+    const double ratio = j["animations"][0]["measures"][m]["range_ratio"].get<double>();
+    EXPECT_GT(ratio, 0.5) << m;
+    EXPECT_LT(ratio, 2.0) << m;
+  }
   // The table's first row is the JSON's lip aperture.
   std::ostringstream row;
   const auto& lip = j["animations"][0]["measures"]["lip_aperture"];

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "decoder.hpp"
+#include "pauses.hpp"
 #include "fapcast/recognise/resample.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
@@ -44,7 +45,11 @@ std::vector<Phone> phone_set() {
 }
 
 std::string tagged(char kind, Phone p, std::size_t word) {
-  return std::string(1, kind) + std::string(arpabet(p)) + "@" + std::to_string(word % kTags);
+  std::string s(1, kind);
+  s.append(arpabet(p));
+  s.push_back('@');
+  s.push_back(static_cast<char>('0' + word % kTags));
+  return s;
 }
 
 std::vector<std::pair<std::string, std::string>> phone_words() {
@@ -64,7 +69,10 @@ std::vector<Phone> parse_pronunciation(const std::string& phones) {
 
 std::string pronunciation_string(const std::vector<Phone>& phones) {
   std::string s;
-  for (Phone p : phones) s += (s.empty() ? "" : " ") + std::string(arpabet(p));
+  for (Phone p : phones) {
+    if (!s.empty()) s.push_back(' ');
+    s.append(arpabet(p));
+  }
   return s;
 }
 
@@ -147,65 +155,80 @@ struct SpeechAligner::Impl {
 
 namespace {
 
-// The phone grammar: word i's variants run in parallel from boundary state i to i + 1; pauses
-// (silence, noise) may repeat at every boundary. With `garbage`, each word may instead be a loop
-// of garbage phones (or nothing: a word the recording leaves out).
-Grammar phone_grammar(const std::vector<WordEntry>& entries, bool garbage) {
+// The phone grammar over words [first, last): word i's variants run in parallel from boundary
+// state i - first to i - first + 1; pauses (silence, noise) may repeat at every boundary. With
+// `garbage`, each word may instead be a loop of garbage phones (or nothing: a word the recording
+// leaves out). With `open_end`, the path may end after any word (a piece of a long recording).
+Grammar phone_grammar(const std::vector<WordEntry>& entries, std::size_t first, std::size_t last, bool garbage,
+                      bool open_end = false) {
   Grammar g;
-  const int n = static_cast<int>(entries.size());
+  const int n = static_cast<int>(last - first);
   g.start = 0;
   g.final = n;
   int next = n + 1;
   for (int i = 0; i < n; ++i) {
-    const double p = 1.0 / static_cast<double>(entries[static_cast<std::size_t>(i)].variants.size());
-    for (const auto& v : entries[static_cast<std::size_t>(i)].variants) {
+    const std::size_t word = first + static_cast<std::size_t>(i);
+    const double p = 1.0 / static_cast<double>(entries[word].variants.size());
+    for (const auto& v : entries[word].variants) {
       int from = i;
       for (std::size_t k = 0; k < v.size(); ++k) {
         const int to = k + 1 == v.size() ? i + 1 : next++;
-        g.arcs.push_back({from, to, tagged('~', v[k], static_cast<std::size_t>(i)), k == 0 ? p : 1.0});
+        g.arcs.push_back({from, to, tagged('~', v[k], word), k == 0 ? p : 1.0});
         from = to;
       }
     }
     if (garbage) {
       const int loop = next++;
       g.arcs.push_back({i, loop, "", kGarbageEnter});
-      for (Phone ph : phone_set()) g.arcs.push_back({loop, loop, tagged('#', ph, static_cast<std::size_t>(i)), kGarbagePhone});
+      for (Phone ph : phone_set()) g.arcs.push_back({loop, loop, tagged('#', ph, word), kGarbagePhone});
       g.arcs.push_back({loop, i + 1, "", 1.0});
       // the recording stops before word i (at 0: has none of them): one null arc to the end, not a chain of skipped
       // words (each skip costs kGarbageEnter, so a chain falls out of the beam)
       g.arcs.push_back({i, n, "", kGarbageEnter});
     }
   }
+  if (open_end && !garbage)
+    for (int i = 1; i < n; ++i) g.arcs.push_back({i, n, "", 1.0});
   g.states = next;
   for (int i = 0; i <= n; ++i) g.pause_states.push_back(i);
   return g;
 }
+Grammar phone_grammar(const std::vector<WordEntry>& entries, bool garbage) {
+  return phone_grammar(entries, 0, entries.size(), garbage);
+}
 
-// The word grammar: the same words as whole dictionary entries (cross-word triphones).
-Grammar word_grammar(const std::vector<WordEntry>& entries) {
+// The word grammar: words [first, last) as whole dictionary entries (cross-word triphones).
+Grammar word_grammar(const std::vector<WordEntry>& entries, std::size_t first, std::size_t last) {
   Grammar g;
-  const int n = static_cast<int>(entries.size());
+  const int n = static_cast<int>(last - first);
   g.states = n + 1;
   g.final = n;
-  for (int i = 0; i < n; ++i)
-    for (const auto& key : entries[static_cast<std::size_t>(i)].keys)
-      g.arcs.push_back({i, i + 1, key, 1.0 / static_cast<double>(entries[static_cast<std::size_t>(i)].keys.size())});
+  for (int i = 0; i < n; ++i) {
+    const auto& keys = entries[first + static_cast<std::size_t>(i)].keys;
+    for (const auto& key : keys) g.arcs.push_back({i, i + 1, key, 1.0 / static_cast<double>(keys.size())});
+  }
   for (int i = 0; i <= n; ++i) g.pause_states.push_back(i);
   return g;
 }
 
+// Reads a path decoded from the 16 kHz samples starting at `offset16` (a piece of the
+// recording), onto the recording's timeline clamped to [begin, end) (its samples at `rate`).
 struct PathReader {
   const Decoder& decoder;
   std::int64_t rate;
   std::int64_t samples;
+  std::int64_t offset16 = 0;
+  std::int64_t begin = 0;
+  std::int64_t end = samples;
 
   std::int64_t to_sample(int frame) const {
-    const std::int64_t s16 = decoder.frame_start_sample(frame);
-    return std::clamp<std::int64_t>((s16 * rate + kDecoderSampleRateHz / 2) / kDecoderSampleRateHz, 0, samples);
+    const std::int64_t s16 = decoder.frame_start_sample(frame) + offset16;
+    return std::clamp<std::int64_t>((s16 * rate + kDecoderSampleRateHz / 2) / kDecoderSampleRateHz, begin, end);
   }
 
-  // Segments from a phone-grammar path; `words` gets one entry per transcript word.
-  SpeechAlignment read(const std::vector<DecodedSegment>& path, const Transcript& t) const {
+  // Segments from a phone-grammar path whose first word is transcript word `first`; `words`
+  // gets one entry per transcript word.
+  SpeechAlignment read(const std::vector<DecodedSegment>& path, const Transcript& t, std::size_t first = 0) const {
     SpeechAlignment a;
     a.sample_rate = SampleRate{rate};
     a.samples = samples;
@@ -219,7 +242,7 @@ struct PathReader {
       if ((s.word.front() == '~' || s.word.front() == '#') && s.word.find('@') != std::string::npos) {
         const auto at = s.word.rfind('@');
         const std::size_t tag = std::stoul(s.word.substr(at + 1));
-        std::size_t w = started ? word : 0;
+        std::size_t w = started ? word : first;
         while (w % kTags != tag) ++w;
         word = w;
         started = true;
@@ -242,8 +265,8 @@ struct PathReader {
       a.segments.push_back(g);
     }
     if (!a.segments.empty()) {
-      a.segments.front().start_sample = 0;
-      a.segments.back().end_sample = samples;
+      a.segments.front().start_sample = begin;
+      a.segments.back().end_sample = end;
     }
     for (std::size_t i = 0; i < t.words.size(); ++i) a.words.push_back({t.words[i].text, t.words[i].byte_offset});
     return a;
@@ -274,13 +297,14 @@ void finish_words(SpeechAlignment& a) {
 
 // Moves each word's first and last phone edge to where `edges` (a word-grammar path) puts the
 // word, when that stays inside the neighbouring segments.
+// `edges` are those of words first, first + 1, ...
 void snap_word_edges(SpeechAlignment& a, const std::vector<std::pair<std::int64_t, std::int64_t>>& edges,
-                     std::int64_t min_gap) {
+                     std::int64_t min_gap, std::size_t first_word = 0) {
   auto& seg = a.segments;
   for (std::size_t w = 0; w < edges.size(); ++w) {
     int first = -1, last = -1;
     for (std::size_t i = 0; i < seg.size(); ++i)
-      if (seg[i].word == static_cast<int>(w)) {
+      if (seg[i].word == static_cast<int>(first_word + w)) {
         if (first < 0) first = static_cast<int>(i);
         last = static_cast<int>(i);
       }
@@ -300,6 +324,114 @@ std::vector<std::pair<std::int64_t, std::int64_t>> word_edges(const std::vector<
   for (const auto& s : path)
     if (!is_silence(s.word) && !is_noise(s.word))
       out.emplace_back(reader.to_sample(s.start_frame), reader.to_sample(s.end_frame));
+  return out;
+}
+
+// A piece of a long recording: 16 kHz samples [begin16, end16) and the transcript words
+// [first, last) its path went through.
+struct Piece {
+  std::int64_t begin16 = 0;
+  std::int64_t end16 = 0;
+  std::size_t first = 0;
+  std::size_t last = 0;
+};
+
+// Pieces of kMinPieceSeconds to about kMaxPieceSeconds, cut where the recording pauses; a
+// recording under twice the first is aligned in one piece (spec/recognise.md, "Long recordings").
+constexpr std::int64_t kMinPieceSeconds = 4;
+constexpr std::int64_t kMaxPieceSeconds = 10;
+
+struct PiecewiseAlignment {
+  SpeechAlignment alignment;
+  std::vector<Piece> pieces;
+};
+
+// `s16` (the recording at 16 kHz) aligned piece by piece: cut at pauses (pauses.hpp), each piece
+// decoded over the next transcript words with an open end (its path may stop after any word;
+// 1.2 times the words the mean speaking rate expects, plus 6; twice as many again while the path
+// uses every word offered), the next piece starting at the word after its last; the last piece
+// must end the transcript. A piece with no path is joined to the next once; nullopt when the
+// recording has no cut or a joined piece still finds no path: the caller aligns it whole.
+std::optional<PiecewiseAlignment> align_in_pieces(Decoder& pd, bool word_edges_pass, std::span<const std::int16_t> s16,
+                                                  const std::vector<WordEntry>& entries, const Transcript& t,
+                                                  std::int64_t rate, std::int64_t samples) {
+  const auto length = static_cast<std::int64_t>(s16.size());
+  if (length < 2 * kMinPieceSeconds * kDecoderSampleRateHz || entries.empty()) return std::nullopt;
+  std::vector<std::int64_t> cuts = cut_points(find_pauses(s16), length, kMinPieceSeconds * kDecoderSampleRateHz,
+                                              kMaxPieceSeconds * kDecoderSampleRateHz);
+  if (cuts.empty()) return std::nullopt;
+  cuts.push_back(length);
+  const auto to_rate = [&](std::int64_t s) {
+    return std::clamp<std::int64_t>((s * rate + kDecoderSampleRateHz / 2) / kDecoderSampleRateHz, 0, samples);
+  };
+  const std::size_t n = entries.size();
+  const double words_per_sample = static_cast<double>(n) / static_cast<double>(length);
+  // The path through piece [begin, end) from word w0 (captured by reference below); w1 gets the
+  // word after its last.
+  std::size_t w0 = 0;
+  auto piece_path = [&](std::int64_t begin, std::int64_t end, bool last_piece, std::size_t& w1) -> std::optional<SpeechAlignment> {
+    const auto piece = s16.subspan(static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin));
+    const PathReader reader{pd, rate, samples, begin, begin == 0 ? 0 : to_rate(begin), last_piece ? samples : to_rate(end)};
+    std::size_t offered = last_piece ? n - w0
+                                     : static_cast<std::size_t>(1.2 * words_per_sample * static_cast<double>(end - begin)) + 6;
+    while (true) {
+      w1 = std::min(n, w0 + offered);
+      const auto path = pd.decode(phone_grammar(entries, w0, w1, false, !last_piece), piece);
+      if (!path) return std::nullopt;
+      SpeechAlignment p = reader.read(*path, t, w0);
+      int reached = -1;
+      for (const auto& g : p.segments)
+        if (g.kind == SpeechSegmentKind::phone) reached = std::max(reached, g.word);
+      if (reached < static_cast<int>(w0)) return std::nullopt;
+      const auto next = static_cast<std::size_t>(reached) + 1;
+      if (last_piece || next < w1 || w1 == n) {
+        w1 = next;
+        return p;
+      }
+      offered *= 2;  // the path used every word offered: the piece may say more
+    }
+  };
+  PiecewiseAlignment out;
+  SpeechAlignment& a = out.alignment;
+  a.sample_rate = SampleRate{rate};
+  a.samples = samples;
+  std::int64_t begin = 0;
+  for (std::size_t k = 0; k < cuts.size(); ++k) {
+    if (w0 >= n) return std::nullopt;  // the words ran out before the recording
+    // A piece with no path is joined to the next one once (a cut the transcript split badly).
+    std::optional<SpeechAlignment> found;
+    std::size_t w1 = 0;
+    for (bool joined = false; !found; joined = true) {
+      if (joined) {
+        if (k + 1 == cuts.size()) return std::nullopt;
+        ++k;
+      }
+      const bool last_piece = k + 1 == cuts.size();
+      found = piece_path(begin, cuts[k], last_piece, w1);
+      if (!found && joined) return std::nullopt;
+    }
+    const std::int64_t end = cuts[k];
+    SpeechAlignment& p = *found;
+    const auto piece = s16.subspan(static_cast<std::size_t>(begin), static_cast<std::size_t>(end - begin));
+    const PathReader reader{pd, rate, samples, begin, k == 0 ? 0 : to_rate(begin), k + 1 == cuts.size() ? samples : to_rate(end)};
+    if (word_edges_pass)
+      if (const auto wpath = pd.decode(word_grammar(entries, w0, w1), piece)) {
+        const auto edges = word_edges(*wpath, reader);
+        if (edges.size() == w1 - w0) snap_word_edges(p, edges, rate / 200, w0);
+      }
+    for (const auto& g : p.segments) {
+      if (!a.segments.empty() && g.kind != SpeechSegmentKind::phone && a.segments.back().kind == g.kind &&
+          a.segments.back().word == g.word) {
+        a.segments.back().end_sample = g.end_sample;  // the pause a cut falls in, joined again
+        continue;
+      }
+      a.segments.push_back(g);
+    }
+    out.pieces.push_back({begin, end, w0, w1});
+    w0 = w1;
+    begin = end;
+  }
+  for (const auto& w : t.words) a.words.push_back({w.text, w.byte_offset});
   return out;
 }
 
@@ -330,26 +462,32 @@ SpeechAlignment SpeechAligner::align(const Audio& speech, const Transcript& tran
   Decoder& pd = impl_->phone_decoder();
   const PathReader reader{pd, rate, samples};
 
-  // Where a recording diverges from its transcript: the garbage loop at 100 fps.
-  auto diagnose = [&]() -> std::optional<SpeechAlignment> {
+  // Where a recording (or the piece of it from 16 kHz sample begin16, through words [first,
+  // last)) diverges from its transcript: the garbage loop at 100 fps.
+  const auto length16 = static_cast<std::int64_t>(s16.samples.size());
+  auto diagnose = [&](const Piece& piece) -> std::optional<SpeechAlignment> {
     Decoder& wd = impl_->word_decoder();
-    const PathReader wr{wd, rate, samples};
-    const auto path = wd.decode(phone_grammar(entries, true), s16.samples);
+    const auto to_rate = [&](std::int64_t s) { return std::clamp<std::int64_t>((s * rate + kDecoderSampleRateHz / 2) / kDecoderSampleRateHz, 0, samples); };
+    const PathReader wr{wd, rate, samples, piece.begin16, piece.begin16 == 0 ? 0 : to_rate(piece.begin16),
+                        piece.end16 == length16 ? samples : to_rate(piece.end16)};
+    const auto path = wd.decode(phone_grammar(entries, piece.first, piece.last, true),
+                                std::span<const std::int16_t>(s16.samples).subspan(static_cast<std::size_t>(piece.begin16),
+                                                                                   static_cast<std::size_t>(piece.end16 - piece.begin16)));
     if (!path) throw InputError({source, std::nullopt, std::nullopt}, "no-speech", "no path through the transcript fits the recording, even with words left out (another recording's text, silence or noise?)");
-    SpeechAlignment d = wr.read(*path, transcript);
+    SpeechAlignment d = wr.read(*path, transcript, piece.first);
     std::vector<bool> matched(transcript.words.size(), false), garbage(transcript.words.size(), false);
     for (const auto& g : d.segments) {
       if (g.word < 0) continue;
       (g.kind == SpeechSegmentKind::phone ? matched : garbage)[static_cast<std::size_t>(g.word)] = true;
     }
-    if (std::none_of(matched.begin(), matched.end(), [](bool m) { return m; }))
+    if (std::none_of(matched.begin() + static_cast<std::ptrdiff_t>(piece.first), matched.begin() + static_cast<std::ptrdiff_t>(piece.last), [](bool m) { return m; }))
       throw InputError({source, std::nullopt, std::nullopt}, "no-speech", "no word of the transcript was found in the recording (silence, noise, another recording?)");
-    for (std::size_t w = 0; w < matched.size(); ++w) {
+    for (std::size_t w = piece.first; w < piece.last; ++w) {
       if (matched[w] && !garbage[w]) continue;
-      std::int64_t at = 0;  // where the recording leaves the transcript: the garbage, or the end of the last word found
+      std::int64_t at = wr.begin;  // where the recording leaves the transcript: the garbage, or the end of the last word found
       for (const auto& g : d.segments)
         if (g.word == static_cast<int>(w) && g.kind == SpeechSegmentKind::unmatched) { at = g.start_sample; break; }
-        else if (g.word >= 0 && g.word < static_cast<int>(w)) at = g.end_sample;
+        else if (g.word >= static_cast<int>(piece.first) && g.word < static_cast<int>(w)) at = g.end_sample;
       const auto& tw = transcript.words[w];
       throw InputError({source, std::nullopt, std::nullopt}, "transcript-mismatch",
                        seconds(at, rate) + ": the recording diverges from the transcript at word " + std::to_string(w + 1) +
@@ -359,20 +497,35 @@ SpeechAlignment SpeechAligner::align(const Audio& speech, const Transcript& tran
     finish_words(d);
     return d;
   };
+  const Piece whole{0, length16, 0, entries.size()};
+  const auto low = [](const SpeechAlignment& x) {
+    return std::any_of(x.words.begin(), x.words.end(), [](const SpeechWord& w) { return w.low_confidence; });
+  };
 
-  const auto path = pd.decode(phone_grammar(entries, false), s16.samples);
   SpeechAlignment a;
-  if (path) {
+  std::optional<PiecewiseAlignment> pieces;
+  if (impl_->settings.in_pieces)
+    pieces = align_in_pieces(pd, impl_->settings.word_edges, s16.samples, entries, transcript, rate, samples);
+  if (pieces) {
+    a = std::move(pieces->alignment);
+    finish_words(a);
+    for (const Piece& piece : pieces->pieces)  // each piece with a low-confidence word diagnosed alone
+      for (std::size_t w = piece.first; w < piece.last; ++w)
+        if (a.words[w].low_confidence) {
+          diagnose(piece);
+          break;
+        }
+  } else if (const auto path = pd.decode(phone_grammar(entries, false), s16.samples)) {
     a = reader.read(*path, transcript);
     if (impl_->settings.word_edges)
-      if (const auto wpath = pd.decode(word_grammar(entries), s16.samples)) {
+      if (const auto wpath = pd.decode(word_grammar(entries, 0, entries.size()), s16.samples)) {
         const auto edges = word_edges(*wpath, reader);
         if (edges.size() == transcript.words.size()) snap_word_edges(a, edges, rate / 200);
       }
     finish_words(a);
-    if (std::any_of(a.words.begin(), a.words.end(), [](const SpeechWord& w) { return w.low_confidence; })) diagnose();
+    if (low(a)) diagnose(whole);
   } else {
-    a = *diagnose();  // throws, or aligns at 100 fps when every word is there; then checked as any alignment
+    a = *diagnose(whole);  // throws, or aligns at 100 fps when every word is there; then checked as any alignment
   }
   double sum = 0, frames = 0;
   for (const auto& g : a.segments)
@@ -415,7 +568,12 @@ SpeechAlignment SpeechAligner::recognise(const Audio& speech, const std::string&
   Decoder& pd = impl_->phone_decoder();
   const PathReader reader{pd, rate, samples};
   SpeechAlignment a;
-  if (const auto path = pd.decode(phone_grammar(entries, false), s16.samples)) {
+  std::optional<PiecewiseAlignment> pieces;
+  if (impl_->settings.in_pieces) pieces = align_in_pieces(pd, false, s16.samples, entries, t, rate, samples);
+  if (pieces) {
+    a = std::move(pieces->alignment);
+    snap_word_edges(a, edges, rate / 200);
+  } else if (const auto path = pd.decode(phone_grammar(entries, false), s16.samples)) {
     a = reader.read(*path, t);
     snap_word_edges(a, edges, rate / 200);
   } else {  // no phone path through the words heard: each word's first pronunciation spread over it

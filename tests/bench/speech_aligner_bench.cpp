@@ -3,7 +3,8 @@
 // same run: the model's own 100 frames per second (every frame scored) against the default 200
 // with scores every second frame, and the default with the word-edge pass (spec/recognise.md).
 // Recognition without the transcript (the word 3-gram, then the alignment of the words heard) on
-// the same recordings, beside the alignment with it.
+// the same recordings, beside the alignment with it. A long recording (the 7 joined end to end,
+// 3 times over: 64 s) aligned piece by piece, cut at its pauses, beside the same in one piece.
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/core/wav_file.hpp"
 #include "fapcast/recognise/resample.hpp"
@@ -66,6 +67,33 @@ void BM_RecogniseThenAlign(benchmark::State& state) {
       benchmark::Counter(seconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 
+// The 7 takes joined end to end `times` times over, with their transcripts one after the other.
+Take joined(int times) {
+  Take out;
+  std::string text;
+  for (int k = 0; k < times; ++k)
+    for (const Take& t : takes()) {
+      out.audio.sample_rate = t.audio.sample_rate;
+      out.audio.samples.insert(out.audio.samples.end(), t.audio.samples.begin(), t.audio.samples.end());
+      text += t.transcript.text + "\n";
+    }
+  out.transcript = parse_transcript(text, "joined");
+  return out;
+}
+
+void align_long(benchmark::State& state, AlignerSettings settings) {
+  SpeechAligner aligner(settings);
+  const Take take = joined(3);
+  const double seconds = static_cast<double>(take.audio.instants()) / static_cast<double>(take.audio.sample_rate.hz);
+  (void)aligner.align(takes().front().audio, takes().front().transcript, "warm-up");
+  for (auto _ : state) benchmark::DoNotOptimize(aligner.align(take.audio, take.transcript, "bench"));
+  state.counters["x_real_time"] =
+      benchmark::Counter(seconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+
+void BM_AlignLong64sInPieces(benchmark::State& state) { align_long(state, {}); }
+void BM_AlignLong64sOnePiece(benchmark::State& state) { align_long(state, {.in_pieces = false}); }
+
 // What share of the alignment's time is the resampling to 16 kHz (libsamplerate's medium sinc),
 // on the same recordings.
 void BM_ResampleTo16k(benchmark::State& state) {
@@ -81,6 +109,8 @@ BENCHMARK(BM_Align200FpsOnePass)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RecogniseThenAlign)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Align100FpsOnePass)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Align200FpsWordEdges)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AlignLong64sInPieces)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AlignLong64sOnePiece)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -18,6 +18,10 @@ struct AlignerSettings {
   // Feature frames per second of the phone pass: 200 (5 ms frames, Gaussian scores every second
   // frame: the default) or 100 (the model's own rate, every frame scored). Else invalid_argument.
   int frames_per_second = 200;
+  // A recording of 8 s or more is cut at its pauses and aligned piece by piece, in time linear
+  // in its length (spec/recognise.md, "Long recordings"); false aligns it in one piece (the
+  // comparison of tests/bench/speech_aligner_bench.cpp).
+  bool in_pieces = true;
 };
 
 class SpeechAligner {

@@ -59,9 +59,7 @@ constexpr auto kEmuAe = std::to_array<Row>({
 // stand for): @ = schwa, @@ = nurse, a = trap, aa = bath/start, uh = strut, o = lot (rounded in
 // southern British English, so AO, not AA), oo = thought, ou = goat, i = kit, ii = fleece, iy =
 // the happY vowel, u = foot, uu = goose, e@ i@ u@ = square near cure; consonants as ARPAbet in
-// lower case ("y" = yes). "breath" (an audible inhalation before or between phrases) is HH: speech
-// inhalations are mostly taken through parted lips, as an open-glottis, open-mouth airflow
-// (spec/talker.md, "Calibration against real articulography").
+// lower case ("y" = yes). "breath" is an inhalation (LabelKind::breath, mapped in map_label).
 constexpr auto kMocha = std::to_array<Row>({
     {"@", Phone::AH}, {"@@", Phone::ER}, {"a", Phone::AE}, {"aa", Phone::AA}, {"uh", Phone::AH}, {"o", Phone::AO},
     {"oo", Phone::AO}, {"ou", Phone::OW}, {"i", Phone::IH}, {"ii", Phone::IY}, {"iy", Phone::IY}, {"u", Phone::UH},
@@ -69,7 +67,7 @@ constexpr auto kMocha = std::to_array<Row>({
     {"e@", Phone::EH}, {"i@", Phone::IY}, {"u@", Phone::UH},
     {"p", Phone::P}, {"b", Phone::B}, {"t", Phone::T}, {"d", Phone::D}, {"k", Phone::K}, {"g", Phone::G},
     {"f", Phone::F}, {"v", Phone::V}, {"th", Phone::TH}, {"dh", Phone::DH}, {"s", Phone::S}, {"z", Phone::Z},
-    {"sh", Phone::SH}, {"zh", Phone::ZH}, {"h", Phone::HH}, {"breath", Phone::HH}, {"ch", Phone::CH}, {"jh", Phone::JH}, {"m", Phone::M},
+    {"sh", Phone::SH}, {"zh", Phone::ZH}, {"h", Phone::HH}, {"ch", Phone::CH}, {"jh", Phone::JH}, {"m", Phone::M},
     {"n", Phone::N}, {"ng", Phone::NG}, {"l", Phone::L}, {"r", Phone::R}, {"w", Phone::W}, {"y", Phone::Y},
 });
 
@@ -161,6 +159,7 @@ std::optional<MappedLabel> map_label(LabelSet set, std::string_view label) {
       case LabelSet::sampa: return from_table(kSampa, label);
       case LabelSet::emu_ae: return from_table(kEmuAe, label);
       case LabelSet::mocha:
+        if (label == "breath") return MappedLabel{LabelKind::breath, {}, LabelJoin::none};
         return from_table(kMocha, label);
     }
   } catch (const std::invalid_argument&) {

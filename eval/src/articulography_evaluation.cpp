@@ -1,11 +1,11 @@
 #include "fapcast/eval/articulography_evaluation.hpp"
 
 #include "fapcast/codec/fapu_values.hpp"
+#include "fapcast/codec/feature_point.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/math/sample_statistics.hpp"
 #include "fapcast/math/zero_phase_lowpass.hpp"
-#include "fapcast/utterance/voice_face.hpp"
 #include "fapcast/voice/voice_frame_grid.hpp"
 
 #include <algorithm>
@@ -356,7 +356,10 @@ ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>
   e.phones = track.timeline.phones.size();
   e.units = track.search.units.size();
   // The tongue FAPs are in the MNS of the neutral face (what a renderer measures: codec's FAPU rule).
-  const double mns_mm = 1000 * measure_fapu(voice_neutral_feature_points(voice, phones_source)).mns;
+  FeaturePointPositions neutral_m;
+  for (const VoiceFeaturePoint& p : voice.feature_points())
+    if (const auto fp = parse_feature_point(p.label)) neutral_m[*fp] = p.neutral_m;
+  const double mns_mm = 1000 * measure_fapu(neutral_m).mns;
   e.face = face_measure_curves(mean, components, track.pca_frames, track.tongue, points, mns_mm, settings.rate_hz,
                                e.end_s);
   for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m)

@@ -8,26 +8,17 @@
 
 namespace fapcast {
 
-namespace {
-
-FeaturePoint voice_feature_point(const VoiceFeaturePoint& p, const std::string& source) {
-  const auto fp = parse_feature_point(p.label);
-  if (!fp) throw std::runtime_error(source + ": feature point label '" + p.label + "' is not an MPEG-4 feature point");
-  return *fp;
-}
-
-}  // namespace
-
-FeaturePointBasis face_basis(const SpeechBasis& basis, const Voice& voice, const std::string& source) {
+FeaturePointBasis face_basis(const SpeechBasis& basis, const Voice& voice,
+                                    const std::string& source) {
   std::vector<FeaturePointVertex> vertices;
-  for (const VoiceFeaturePoint& p : voice.feature_points()) vertices.push_back({voice_feature_point(p, source), p.vertex});
-  return restrict_basis(basis.mean, basis.components, vertices, voice_neutral_feature_points(voice, source));
-}
-
-FeaturePointPositions voice_neutral_feature_points(const Voice& voice, const std::string& source) {
   FeaturePointPositions neutral;
-  for (const VoiceFeaturePoint& p : voice.feature_points()) neutral[voice_feature_point(p, source)] = p.neutral_m;
-  return neutral;
+  for (const VoiceFeaturePoint& p : voice.feature_points()) {
+    const auto fp = parse_feature_point(p.label);
+    if (!fp) throw std::runtime_error(source + ": feature point label '" + p.label + "' is not an MPEG-4 feature point");
+    vertices.push_back({*fp, p.vertex});
+    neutral[*fp] = p.neutral_m;
+  }
+  return restrict_basis(basis.mean, basis.components, vertices, std::move(neutral));
 }
 
 void check_voice_phone_set(const Voice& voice, const std::string& source) {

@@ -14,10 +14,6 @@ namespace fapcast {
 // naming the voice and the label when a label is not a feature point.
 FeaturePointBasis face_basis(const SpeechBasis& basis, const Voice& voice, const std::string& source);
 
-// The voice's feature points on its neutral face (metres), keyed by feature point: what FAPU are
-// measured on. Throws std::runtime_error as face_basis does.
-FeaturePointPositions voice_neutral_feature_points(const Voice& voice, const std::string& source);
-
 // Checks that the voice's graph classes are this build's classes of its phones (a voice built
 // with another phone set or viseme table would search the wrong units). Throws
 // std::runtime_error "SOURCE: voice-phone-set: ..." naming the first state that disagrees.

@@ -446,15 +446,16 @@ AlignmentFile read_alignment_file(std::string_view bytes, const std::string& pat
     out.label_set = best_set(*c.tier).first;
   }
   out.segments = segments_of(*c.tier, out.label_set, path);
-  std::size_t phones = 0, noises = 0;
+  std::size_t phones = 0, noises = 0, breaths = 0;
   double speech = 0;
   for (const AlignedSegment& s : out.segments) {
     if (s.kind == LabelKind::silence) continue;
-    (s.kind == LabelKind::phone ? phones : noises) += 1;
+    (s.kind == LabelKind::phone ? phones : s.kind == LabelKind::breath ? breaths : noises) += 1;
     speech += s.end_s - s.start_s;
   }
   out.notes.push_back("labels: " + std::string(label_set_name(out.label_set)) + " (" + std::to_string(phones) + " phones)");
   if (noises > 0) out.notes.push_back(std::to_string(noises) + " noise segment(s) (spn, oov ...) animated as rest");
+  if (breaths > 0) out.notes.push_back(std::to_string(breaths) + " breath segment(s) animated as an inhalation (lips parted)");
   if (phones == 0) {
     refuse(path, "alignment-no-phones", "tier \"" + out.tier + "\" has no phone, only " +
                                             (out.segments.empty() ? std::string("nothing") : "silence or empty labels"));

@@ -8,7 +8,7 @@
 namespace fapcast {
 
 std::vector<TimedPhone> timed_phones(const std::vector<AlignedSegment>& segments, SampleRate sample_rate,
-                                     const std::string& source) {
+                                     const std::string& source, Phone breath_as) {
   std::vector<TimedPhone> out;
   out.reserve(segments.size());
   for (std::size_t i = 0; i < segments.size(); ++i) {
@@ -16,7 +16,7 @@ std::vector<TimedPhone> timed_phones(const std::vector<AlignedSegment>& segments
     const auto sample = [&](double seconds) {
       return alignment_sample(seconds, sample_rate, source, "segment " + std::to_string(i + 1) + " '" + s.label + "'");
     };
-    out.push_back({s.phone, sample(s.start_s), sample(s.end_s)});
+    out.push_back({s.kind == LabelKind::breath ? breath_as : s.phone, sample(s.start_s), sample(s.end_s)});
   }
   return out;
 }

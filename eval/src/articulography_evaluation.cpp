@@ -1,5 +1,7 @@
 #include "fapcast/eval/articulography_evaluation.hpp"
 
+#include "fapcast/codec/fapu_values.hpp"
+#include "fapcast/codec/feature_point.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/math/sample_statistics.hpp"
@@ -132,9 +134,7 @@ ArticulographyFacePoints ict_articulography_points() {
           .chin = fp("2.1"),
           .upper_incisor = 18075,
           .lower_incisor = 20271,
-          .nose_dorsum = {978, 4527, 4942, 4857},
-          .subnasale = fp("9.15"),
-          .inner_upper_lip = fp("2.2")};
+          .nose_dorsum = {978, 4527, 4942, 4857}};
 }
 
 double face_nose_angle_rad(const Eigen::Ref<const RowMajorMatrixXf>& mesh_m, const ArticulographyFacePoints& points,
@@ -254,8 +254,8 @@ MeasureCurves ema_measure_curves(const MarkerFrames<Millimetres>& ema, const Ema
 
 MeasureCurves face_measure_curves(const Eigen::Ref<const RowMajorMatrixXf>& mean_m,
                                   const Eigen::Ref<const RowMajorMatrixXf>& components_m, const Eigen::MatrixXf& pca_frames,
-                                  const Eigen::MatrixXf& tongue, const ArticulographyFacePoints& points, double rate_hz,
-                                  double end_s) {
+                                  const Eigen::MatrixXf& tongue, const ArticulographyFacePoints& points, double mns_mm,
+                                  double rate_hz, double end_s) {
   const Eigen::Index frames = pca_frames.rows();
   if (components_m.cols() != mean_m.cols() || pca_frames.cols() != components_m.rows() || tongue.rows() != frames ||
       tongue.cols() < 2 || frames < 1)
@@ -274,7 +274,6 @@ MeasureCurves face_measure_curves(const Eigen::Ref<const RowMajorMatrixXf>& mean
       for (Eigen::Index k = 0; k < frames; ++k) out[static_cast<std::size_t>(k)] = 1000.0 * v(k);
     }
   }
-  const double mns_mm = (sagittal_mm(mean_m, points.subnasale)[0] - sagittal_mm(mean_m, points.inner_upper_lip)[0]) / 1024;
   if (!(mns_mm > 0)) throw std::invalid_argument("face_measure_curves: the face's mouth-nose separation is not positive");
   std::vector<double> times(static_cast<std::size_t>(frames));
   std::array<std::vector<double>, kArticulatoryMeasureCount> raw;
@@ -356,7 +355,13 @@ ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>
     throw InputError({phones_source, std::nullopt, std::nullopt}, "articulography-span", "no frames were synthesised");
   e.phones = track.timeline.phones.size();
   e.units = track.search.units.size();
-  e.face = face_measure_curves(mean, components, track.pca_frames, track.tongue, points, settings.rate_hz, e.end_s);
+  // The tongue FAPs are in the MNS of the neutral face (what a renderer measures: codec's FAPU rule).
+  FeaturePointPositions neutral_m;
+  for (const VoiceFeaturePoint& p : voice.feature_points())
+    if (const auto fp = parse_feature_point(p.label)) neutral_m[*fp] = p.neutral_m;
+  const double mns_mm = 1000 * measure_fapu(neutral_m).mns;
+  e.face = face_measure_curves(mean, components, track.pca_frames, track.tongue, points, mns_mm, settings.rate_hz,
+                               e.end_s);
   for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m)
     e.agreement[m] = trajectory_agreement(e.real.mm[m], e.face.mm[m], settings.rate_hz, settings.max_lag_s,
                                           settings.lag_step_s);

@@ -59,7 +59,7 @@ constexpr auto kEmuAe = std::to_array<Row>({
 // stand for): @ = schwa, @@ = nurse, a = trap, aa = bath/start, uh = strut, o = lot (rounded in
 // southern British English, so AO, not AA), oo = thought, ou = goat, i = kit, ii = fleece, iy =
 // the happY vowel, u = foot, uu = goose, e@ i@ u@ = square near cure; consonants as ARPAbet in
-// lower case ("y" = yes). "breath" is a noise (mapped in map_label).
+// lower case ("y" = yes). "breath" is an inhalation (LabelKind::breath, mapped in map_label).
 constexpr auto kMocha = std::to_array<Row>({
     {"@", Phone::AH}, {"@@", Phone::ER}, {"a", Phone::AE}, {"aa", Phone::AA}, {"uh", Phone::AH}, {"o", Phone::AO},
     {"oo", Phone::AO}, {"ou", Phone::OW}, {"i", Phone::IH}, {"ii", Phone::IY}, {"iy", Phone::IY}, {"u", Phone::UH},
@@ -159,7 +159,7 @@ std::optional<MappedLabel> map_label(LabelSet set, std::string_view label) {
       case LabelSet::sampa: return from_table(kSampa, label);
       case LabelSet::emu_ae: return from_table(kEmuAe, label);
       case LabelSet::mocha:
-        if (label == "breath") return MappedLabel{LabelKind::noise, {}, LabelJoin::none};
+        if (label == "breath") return MappedLabel{LabelKind::breath, {}, LabelJoin::none};
         return from_table(kMocha, label);
     }
   } catch (const std::invalid_argument&) {

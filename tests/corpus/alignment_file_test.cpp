@@ -96,7 +96,7 @@ const Case kCases[] = {
     {"alignment/gentle/peppa/ep_197_2_0.json", 0, 0, nullptr, "phones", "arpabet", 17, 0, 2.03, 4.42},
     {"alignment/gentle/peppa/ep_197_1_0.json", 0, 0, nullptr, "phones", "arpabet", 5, 0, 2.5, 3.01},
     {"alignment/gentle/peppa/ep_197_3_7.json", 0, 0, nullptr, "phones", "arpabet", 14, 1, 1.56, 2.8},
-    // MOCHA-TIMIT's own labels (@ ii i uh iy, and breath: a noise before the first phone).
+    // MOCHA-TIMIT's own labels (@ ii i uh iy, and breath: an inhalation before the first phone).
     {"mocha/fsew0_001.lab", 16000, 2.218437, nullptr, "phones", "mocha", 14, 1, 0.25, 1.67},
 };
 

@@ -33,6 +33,22 @@ TEST(AlignmentPhones, ReadsArpabetTimitAndGaps) {
   EXPECT_EQ(p[6].end_sample, 11200);
 }
 
+// MOCHA's breath: a pause where alignments are compared, an open-lip inhalation (HH) where
+// the animation asks for it.
+TEST(AlignmentPhones, ABreathIsAPauseOrAnInhalation) {
+  const LabelTier t = tier({{0.0, 0.25, "sil"}, {0.25, 0.28, "breath"}, {0.28, 0.35, "sil"}, {0.35, 0.42, "dh"}});
+  const auto segments = segments_of(t, LabelSet::mocha, "m.lab");
+  ASSERT_EQ(segments.size(), 4u);
+  EXPECT_EQ(segments[1].kind, LabelKind::breath);
+  EXPECT_EQ(segments[1].phone, Phone::SIL);
+  EXPECT_EQ(timed_phones(segments, SampleRate{16000}, "m.lab")[1].phone, Phone::SIL);
+  const auto animated = timed_phones(segments, SampleRate{16000}, "m.lab", kInhalationPhone);
+  EXPECT_EQ(animated[1].phone, Phone::HH);
+  EXPECT_EQ(animated[1].start_sample, 4000);
+  EXPECT_EQ(animated[0].phone, Phone::SIL);
+  EXPECT_EQ(animated[3].phone, Phone::DH);
+}
+
 TEST(AlignmentPhones, CompoundsSplitAndAspirationJoins) {
   // EMU ae: "k H" is one K with its aspiration; "db" is D then B in halves of its interval.
   const LabelTier t = tier({{0.0, 0.1, "k"}, {0.1, 0.14, "H"}, {0.14, 0.24, "db"}});

@@ -36,8 +36,6 @@ RowMajorMatrixXf constructed_face(double nose_deg) {
   put(p.lower_lip, -14, 11);
   put(p.chin, -55, 8);
   put(p.lower_incisor, -9, -1);
-  put(p.subnasale, 20.48, 15);  // MNS = 20.48 mm / 1024
-  put(p.inner_upper_lip, 0, 10);
   return mesh;
 }
 
@@ -78,7 +76,6 @@ TEST(ArticulographyEvaluation, FacePointsAreTheMarkerTablesFeaturePoints) {
   EXPECT_EQ(p.upper_lip, marker_sites()[marker_row("8.1")].vertex);
   EXPECT_EQ(p.lower_lip, 5518);
   EXPECT_EQ(p.chin, 966);
-  EXPECT_EQ(p.subnasale, 1147);
   EXPECT_EQ(p.upper_incisor, 18075);
   EXPECT_EQ(p.lower_incisor, 20271);
 }
@@ -191,7 +188,7 @@ TEST(ArticulographyEvaluation, FaceCurvesFollowThePcaFramesAndTheTongue) {
     pca(k, 1) = 1.0f;
     tongue(k, 1) = 500;                         // FAP 44: 500 MNS units
   }
-  const MeasureCurves m = face_measure_curves(mean, components, pca, tongue, p, 100, 1.5);
+  const MeasureCurves m = face_measure_curves(mean, components, pca, tongue, p, 20.48 / 1024, 100, 1.5);
   ASSERT_EQ(m.size(), 151u);
   for (std::size_t j = 0; j < m.size(); ++j) {
     const double t = static_cast<double>(j) / 100;
@@ -201,7 +198,8 @@ TEST(ArticulographyEvaluation, FaceCurvesFollowThePcaFramesAndTheTongue) {
     EXPECT_NEAR(m.mm[3][j], 9, 1e-3) << t;                      // 8.2 forward of the incisor
     EXPECT_NEAR(m.mm[4][j], 500 * 20.48 / 1024, 1e-3) << t;     // FAP 44 x MNS
   }
-  EXPECT_THROW(face_measure_curves(mean, components, Eigen::MatrixXf::Zero(frames, 3), tongue, p, 100, 1), std::invalid_argument);
+  EXPECT_THROW(face_measure_curves(mean, components, Eigen::MatrixXf::Zero(frames, 3), tongue, p, 20.48 / 1024, 100, 1), std::invalid_argument);
+  EXPECT_THROW(face_measure_curves(mean, components, pca, tongue, p, 0, 100, 1), std::invalid_argument);
 }
 
 TEST(ArticulographyEvaluation, ThePlotHasAPanelPerMeasureAndACurvePerAnimation) {

@@ -97,7 +97,7 @@ TEST(LabelSets, MochaTimitByLexicalSet) {
   EXPECT_EQ(one(LabelSet::mocha, "o"), Phone::AO);  // lot is rounded in southern British English
   EXPECT_EQ(one(LabelSet::mocha, "y"), Phone::Y);
   EXPECT_EQ(one(LabelSet::mocha, "dh"), Phone::DH);
-  EXPECT_EQ(map_label(LabelSet::mocha, "breath")->kind, LabelKind::noise);
+  EXPECT_EQ(map_label(LabelSet::mocha, "breath")->kind, LabelKind::breath);  // an inhalation, not a phone
   EXPECT_FALSE(map_label(LabelSet::mocha, "AH0"));  // ARPAbet is not MOCHA's
   EXPECT_FALSE(map_label(LabelSet::arpabet, "@"));
 }

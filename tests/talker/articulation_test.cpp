@@ -96,6 +96,19 @@ TEST(Articulation, ContactsHaveOverridingDominance) {
     EXPECT_GT(phone_articulation(p).dominance[ch(Channel::labiodental)].alpha, 50 * others_labio);
 }
 
+// The calibration's class rule (spec/talker.md): the lips' own opening is one target for every
+// unrounded vowel, the height differences are the jaw's; the jaw still orders them by height.
+TEST(Articulation, UnroundedVowelsShareOneLipOpeningAndDifferInJaw) {
+  const auto ch = [](Channel c) { return static_cast<std::size_t>(c); };
+  const float lips = phone_articulation("AH").target[ch(Channel::lip_opening)];
+  for (const char* p : {"AA", "AE", "AY", "EH", "EY", "IH", "IY"}) {
+    EXPECT_EQ(phone_articulation(p).target[ch(Channel::lip_opening)], lips) << p;
+    EXPECT_EQ(phone_articulation(p).target[ch(Channel::rounding)], 0.0f) << p;
+  }
+  EXPECT_GT(phone_articulation("AA").target[ch(Channel::jaw)], phone_articulation("EH").target[ch(Channel::jaw)]);
+  EXPECT_GT(phone_articulation("EH").target[ch(Channel::jaw)], phone_articulation("IY").target[ch(Channel::jaw)]);
+}
+
 TEST(Articulation, DominanceIsAsymmetricAndPeaksAtTheCentre) {
   const Dominance d{2.0f, 5.0f, 20.0f, 1.0f};
   EXPECT_DOUBLE_EQ(d.at(0.0), 2.0);

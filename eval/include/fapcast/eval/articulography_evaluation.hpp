@@ -48,8 +48,6 @@ struct ArticulographyFacePoints {
   std::int32_t upper_incisor;  // tip of the upper central incisors: moved by no ICT expression shape
   std::int32_t lower_incisor;  // tip of the lower central incisors: moved by jawOpen
   std::array<std::int32_t, 4> nose_dorsum;  // ICT landmarks 27..30, nose root to tip
-  std::int32_t subnasale;      // FP 9.15, for MNS
-  std::int32_t inner_upper_lip;  // FP 2.2, for MNS
 };
 ArticulographyFacePoints ict_articulography_points();
 
@@ -97,12 +95,13 @@ MeasureCurves ema_measure_curves(const MarkerFrames<Millimetres>& ema, const Ema
 
 // The face's curves from the voice's PCA frames (F x k, 60 fps from t = 0: synthesize's track)
 // on its mesh (mean 1 x 3N and components k x 3N, metres) and the tongue's FAPs (F x 5, FAP 43..47;
-// the tip's height is FAP 44 x MNS / 1024, MNS measured on the mean), sampled linearly at the grid
-// (the last frame held). Throws std::invalid_argument for shapes that disagree.
+// the tip's height is FAP 44 x `mns_mm`, the face's MNS FAPU in mm as the renderer measures it on
+// the neutral face), sampled linearly at the grid (the last frame held). Throws
+// std::invalid_argument for shapes that disagree or an MNS that is not positive.
 MeasureCurves face_measure_curves(const Eigen::Ref<const RowMajorMatrixXf>& mean_m,
                                   const Eigen::Ref<const RowMajorMatrixXf>& components_m, const Eigen::MatrixXf& pca_frames,
-                                  const Eigen::MatrixXf& tongue, const ArticulographyFacePoints& points, double rate_hz,
-                                  double end_s);
+                                  const Eigen::MatrixXf& tongue, const ArticulographyFacePoints& points, double mns_mm,
+                                  double rate_hz, double end_s);
 
 // Settings of the comparison (the defaults are the spec's).
 struct ArticulographySettings {

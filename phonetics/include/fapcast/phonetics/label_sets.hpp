@@ -24,7 +24,10 @@ inline constexpr LabelSet kLabelSets[] = {LabelSet::arpabet, LabelSet::timit, La
 std::string_view label_set_name(LabelSet set);  // "arpabet", "timit", "ipa", "sampa", "emu-ae", "mocha"
 std::optional<LabelSet> label_set_from_name(std::string_view name);
 
-enum class LabelKind { phone, silence, noise };
+// breath: an audible inhalation (MOCHA's "breath"). Not a phone of the words: alignments and
+// boundary comparisons read it as a pause; the animation shows it as an inhalation with parted
+// lips (alignment_phones.hpp, kInhalationPhone).
+enum class LabelKind { phone, silence, noise, breath };
 
 // How a segment joins its neighbour: a TIMIT closure with the release after it, an EMU
 // aspiration ("H") with the stop before it.

@@ -1,0 +1,37 @@
+#pragma once
+// What the avatar page needs (spec/serve.md, "The avatar page"): the page and its script
+// (serve/web/, compiled into the binary), three.js and its GLTFLoader from Debian's libjs-three
+// (read once at start), and each voice's face as a .glb: the voice's PCA mean as the mesh, its k
+// components as the first k morph targets, then the six FAP 2 expressions at full intensity (on
+// the voice's face) as six more; no animation (the weights arrive live).
+#include "fapcast/voice/voice.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace fapcast {
+
+struct PageAssets {
+  std::string page_html;
+  std::string page_script;
+  std::string three_js;
+  std::string gltf_loader_js;
+  std::map<std::string, std::string> face_glb;  // voice name -> .glb (voices on the ICT topology)
+};
+
+// Throws std::runtime_error naming a three.js file that cannot be read.
+PageAssets load_page_assets(const std::filesystem::path& three_dir, const std::map<std::string, Voice>& voices,
+                            const std::function<void(std::string_view)>& log);
+
+// The voice's face for the page, or nothing when its face is not the ICT topology.
+std::optional<std::string> face_glb(const Voice& voice, const std::string& name);
+
+// The page files compiled in (serve/web/).
+std::string_view embedded_page_html();
+std::string_view embedded_page_script();
+
+}  // namespace fapcast

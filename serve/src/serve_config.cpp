@@ -107,6 +107,9 @@ void apply_serve_config(std::string_view json_text, const std::string& source, c
   } catch (const json::parse_error& e) {
     throw InputError({source, line_of(json_text, e.byte == 0 ? 0 : e.byte - 1), std::nullopt}, "serve-config-json",
                      e.what());
+  } catch (const json::out_of_range& e) {
+    // A number beyond double's range ("1e999"): nlohmann reports it without a position.
+    throw InputError({source, std::nullopt, std::nullopt}, "serve-config-json", e.what());
   }
   const Reader r{source, base_dir};
   if (!j.is_object()) r.fail("the file", "a JSON object");

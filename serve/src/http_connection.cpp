@@ -9,7 +9,7 @@ namespace fapcast {
 HttpResponse make_response(http::status status, std::string body, std::string_view content_type, unsigned version) {
   HttpResponse res{status, version};
   res.set(http::field::server, "fapcast");
-  res.set(http::field::content_type, content_type);
+  res.set(http::field::content_type, std::string(content_type));
   res.set(http::field::cache_control, "no-store");
   res.set("X-Content-Type-Options", "nosniff");
   res.body() = std::move(body);

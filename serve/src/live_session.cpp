@@ -37,7 +37,7 @@ LiveSession::LiveSession(SessionContext context, std::string id, std::uint32_t n
       id_(std::move(id)),
       number_(number),
       request_(std::move(request)),
-      sentences_(split_sentences(request_.text)),
+      sentences_(sentence_offsets(request_)),
       rtp_(std::move(rtp)),
       speaker_(std::move(speaker)),
       encoder_(std::make_shared<FbaFrameEncoder>(FbaEncoderOptions{}, ctx_.rate)),
@@ -53,15 +53,19 @@ void LiveSession::start() {
 void LiveSession::submit(std::size_t index) {
   if (index >= sentences_.size()) return;
   job_in_flight_ = true;
-  const SentenceSpan span = sentences_[index];
+  const std::size_t from = sentences_[index];
+  const std::size_t to = index + 1 < sentences_.size() ? sentences_[index + 1] : request_.text.size();
   SpeakerSettings settings;
+  settings.speech.language = request_.lang;
+  settings.speech.ssml = request_.ssml;
+  settings.speech.source = "session " + id_ + " text";
   settings.rate = ctx_.rate;
   settings.expression = request_.expression;
   settings.name = "fapcast serve";
   ctx_.worker.submit(index == 0, [weak = weak_from_this(), io = &ctx_.io, voice = &ctx_.voice, speaker = speaker_,
                                   encoder = encoder_, settings = std::move(settings),
                                   source = "voice '" + ctx_.voice_name + "'", index,
-                                  text = request_.text.substr(span.offset, span.length)]() mutable {
+                                  text = request_.text.substr(from, to - from)]() mutable {
     PreparedSentence p;
     p.index = index;
     p.text = std::move(text);
@@ -69,7 +73,7 @@ void LiveSession::submit(std::size_t index) {
       if (!speaker) speaker = std::make_shared<const Speaker>(*voice, settings, source);
       p.speaker = speaker;
       p.spoken = speaker->speak(p.text);
-      const std::int64_t rate_hz = p.spoken.audio.sample_rate_hz;
+      const SampleRate rate_hz = p.spoken.audio.sample_rate;
       FbaAccessUnit au;
       p.units.reserve(p.spoken.faps.frames.size());
       for (std::size_t k = 0; k < p.spoken.faps.frames.size(); ++k) {
@@ -91,8 +95,8 @@ void LiveSession::submit(std::size_t index) {
 void LiveSession::on_prepared(PreparedSentence p) {
   job_in_flight_ = false;
   if (!active()) return;  // stopped while it was being synthesised
-  if (p.error.empty() && p.spoken.audio.sample_rate_hz <= 0) p.error = "the front-end gave no audio";
-  if (p.error.empty() && sample_rate_ != 0 && p.spoken.audio.sample_rate_hz != sample_rate_)
+  if (p.error.empty() && !p.spoken.audio.sample_rate.valid()) p.error = "the front-end gave no audio";
+  if (p.error.empty() && sample_rate_.valid() && p.spoken.audio.sample_rate != sample_rate_)
     p.error = "sentence " + std::to_string(p.index + 1) + " came at another audio rate";
   if (!p.error.empty()) {
     const std::string why = "synthesis-failed: sentence " + std::to_string(p.index + 1) + ": " + p.error;
@@ -102,7 +106,7 @@ void LiveSession::on_prepared(PreparedSentence p) {
   }
   if (!speaker_) speaker_ = p.speaker;
   if (state_ == SessionState::kStarting) {
-    sample_rate_ = p.spoken.audio.sample_rate_hz;
+    sample_rate_ = p.spoken.audio.sample_rate;
     first_speech_time_ = p.spoken.speech_time;
     first_animation_time_ = p.spoken.animation_time;
     state_ = SessionState::kSpeaking;
@@ -159,7 +163,7 @@ void LiveSession::tick() {
   // report when one is due.
   std::size_t packets = 0;
   std::error_code ec;
-  const std::int64_t rtcp_step = sample_rate_ * ctx_.rtcp_interval.count() / 1000;
+  const std::int64_t rtcp_step = sample_rate_.hz * ctx_.rtcp_interval.count() / 1000;
   const bool report = rtcp_step > 0 && sample >= next_report_;
   const auto ntp = [&](std::int64_t at) {
     return to_ntp(wall_start_ + std::chrono::duration_cast<std::chrono::system_clock::duration>(
@@ -173,7 +177,7 @@ void LiveSession::tick() {
       r->send_audio(std::span(s.spoken.audio.samples).subspan(static_cast<std::size_t>(at), static_cast<std::size_t>(count)),
                     1, offset_ + at, at == 0, ec);
     }
-    if (!ec && report) r->send_reports(sample, ntp(sample), ec);
+    if (!ec && report) r->send_reports(sample, ntp(sample), false, ec);
     if (ec) break;
   }
   if (report) next_report_ = sample + rtcp_step;
@@ -226,7 +230,7 @@ void LiveSession::end(SessionState state, const std::string& reason) {
     std::error_code ignored;
     const auto ntp = to_ntp(wall_start_ + std::chrono::duration_cast<std::chrono::system_clock::duration>(
                                               samples_to_duration(last, sample_rate_)));
-    for (auto& r : rtp_) r->send_reports(last, ntp, ignored);
+    for (auto& r : rtp_) r->send_reports(last, ntp, true, ignored);
     broadcast(dump({{"type", "end"}, {"session", number_}, {"id", id_}, {"reason", reason}}));
   }
   state_ = state;
@@ -263,7 +267,7 @@ std::string LiveSession::session_message() const {
                {"id", id_},
                {"channel", request_.channel},
                {"voice", request_.voice},
-               {"sample_rate", sample_rate_},
+               {"sample_rate", sample_rate_.hz},
                {"fps", static_cast<double>(ctx_.rate.numerator) / ctx_.rate.denominator},
                {"components", speaker_ ? speaker_->components() : 0},
                {"expression_weights", expression},

@@ -10,7 +10,6 @@
 #include "fapcast/serve/say_request.hpp"
 #include "fapcast/transport/media_unit.hpp"
 #include "fapcast/transport/rtp_sender.hpp"
-#include "fapcast/utterance/sentence_split.hpp"
 #include "fapcast/utterance/speaker.hpp"
 
 #include <nlohmann/json.hpp>
@@ -96,7 +95,7 @@ class LiveSession : public std::enable_shared_from_this<LiveSession> {
   std::string id_;
   std::uint32_t number_;
   SayRequest request_;
-  std::vector<SentenceSpan> sentences_;
+  std::vector<std::size_t> sentences_;  // byte offsets of the sentences in request_.text (sentence_offsets)
   std::vector<std::unique_ptr<RtpSender>> rtp_;
   std::shared_ptr<const Speaker> speaker_;
   std::shared_ptr<FbaFrameEncoder> encoder_;  // used by one synthesis job at a time
@@ -107,7 +106,7 @@ class LiveSession : public std::enable_shared_from_this<LiveSession> {
   std::optional<PreparedSentence> current_, next_;
   bool job_in_flight_ = false;
   bool waiting_for_next_ = false;
-  std::int64_t sample_rate_ = 0;
+  SampleRate sample_rate_{};
   std::chrono::steady_clock::time_point started_at_{}, start_{};  // start(); sample 0
   std::chrono::system_clock::time_point wall_start_{};
   std::int64_t offset_ = 0;          // current sentence's first sample on the session's timeline

@@ -32,15 +32,22 @@ PageAssets load_page_assets(const std::filesystem::path& three_dir, const std::m
   PageAssets a;
   a.page_html = std::string(embedded_page_html());
   a.page_script = std::string(embedded_page_script());
-  const auto three = [&](const char* file) {
-    try {
-      return read_file(three_dir / file, 16 << 20);
-    } catch (const std::exception& e) {
-      throw std::runtime_error(std::string(e.what()) + " (the avatar page's three.js: Debian package libjs-three, or three_dir)");
-    }
-  };
-  a.three_js = three("build/three.min.js");
-  a.gltf_loader_js = three("examples/js/loaders/GLTFLoader.js");
+  const std::string hint = " (the avatar page's three.js: Debian package libjs-three, or --three-dir)";
+  std::error_code ec;
+  if (!std::filesystem::is_directory(three_dir, ec))
+    throw std::runtime_error(three_dir.string() + ": not a folder" + hint);
+  std::size_t total = 0;
+  for (auto it = std::filesystem::recursive_directory_iterator(three_dir, ec); !ec && it != std::filesystem::end(it);
+       it.increment(ec)) {
+    if (!it->is_regular_file(ec)) continue;
+    const std::string rel = std::filesystem::relative(it->path(), three_dir).generic_string();
+    std::string bytes = read_file(it->path(), kMaxThreeBytes);
+    total += bytes.size();
+    if (total > kMaxThreeBytes)
+      throw std::runtime_error(three_dir.string() + ": more than " + std::to_string(kMaxThreeBytes) + " bytes" + hint);
+    a.three.emplace(rel, std::move(bytes));
+  }
+  if (ec) throw std::runtime_error(three_dir.string() + ": " + ec.message() + hint);
   for (const auto& [name, voice] : voices) {
     if (auto glb = face_glb(voice, name)) a.face_glb.emplace(name, std::move(*glb));
     else if (log) log("voice '" + name + "': its face is not the ICT topology: the page cannot show it (RTP only)");

@@ -1,7 +1,7 @@
 #pragma once
 // What the avatar page needs (spec/serve.md, "The avatar page"): the page and its script
 // (serve/web/, compiled into the binary), three.js and its GLTFLoader from Debian's libjs-three
-// (read once at start), and each voice's face as a .glb: the voice's PCA mean as the mesh, its k
+// (every file of its folder, read once at start), and each voice's face as a .glb: the voice's PCA mean as the mesh, its k
 // components as the first k morph targets, then the six FAP 2 expressions at full intensity (on
 // the voice's face) as six more; no animation (the weights arrive live).
 #include "fapcast/voice/voice.hpp"
@@ -18,12 +18,13 @@ namespace fapcast {
 struct PageAssets {
   std::string page_html;
   std::string page_script;
-  std::string three_js;
-  std::string gltf_loader_js;
+  std::map<std::string, std::string> three;     // path under the three.js folder -> its bytes
   std::map<std::string, std::string> face_glb;  // voice name -> .glb (voices on the ICT topology)
 };
 
-// Throws std::runtime_error naming a three.js file that cannot be read.
+// Reads every regular file under `three_dir` (at most kMaxThreeBytes in all). Throws
+// std::runtime_error naming the folder when it is missing or too big, or a file that cannot be read.
+inline constexpr std::size_t kMaxThreeBytes = 64u << 20;
 PageAssets load_page_assets(const std::filesystem::path& three_dir, const std::map<std::string, Voice>& voices,
                             const std::function<void(std::string_view)>& log);
 

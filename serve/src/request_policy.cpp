@@ -32,6 +32,24 @@ bool valid_session_id(std::string_view id) {
   return true;
 }
 
+// A relative path of plain segments (A-Z a-z 0-9 . - _), none empty, "." or "..": nothing can
+// leave the folder (the files are served from memory anyway, read at start).
+bool valid_asset_path(std::string_view path) {
+  if (path.empty() || path.size() > 256) return false;
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const auto slash = path.find('/', start);
+    const std::string_view seg = path.substr(start, slash == std::string_view::npos ? std::string_view::npos : slash - start);
+    if (seg.empty() || seg == "." || seg == "..") return false;
+    for (const char c : seg)
+      if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' || c == '-' || c == '_'))
+        return false;
+    if (slash == std::string_view::npos) break;
+    start = slash + 1;
+  }
+  return true;
+}
+
 asio::ip::address_v6 as_v6(const asio::ip::address& a) {
   return a.is_v4() ? asio::ip::make_address_v6(asio::ip::v4_mapped, a.to_v4()) : a.to_v6();
 }
@@ -50,10 +68,10 @@ RouteMatch match_route(http::verb method, std::string_view target) {
   };
   if (path == "/" || path == "/index.html") only(Route::kPage, get);
   else if (path == "/avatar.js") only(Route::kPageScript, get);
-  else if (path == "/three/three.min.js") only(Route::kThree, get);
-  else if (path == "/three/GLTFLoader.js") only(Route::kGltfLoader, get);
-  else if (path.substr(0, 4) == "/v1/" || path == "/v1") {
-    m.protected_route = true;
+  else if (path.substr(0, 7) == "/three/" && valid_asset_path(path.substr(7))) {
+    only(Route::kThree, get);
+    m.asset = std::string(path.substr(7));
+  } else if (path.substr(0, 4) == "/v1/") {
     if (path == "/v1/face.glb") only(Route::kFace, get);
     else if (path == "/v1/say") only(Route::kSay, method == http::verb::post);
     else if (path == "/v1/stats") only(Route::kStats, get);
@@ -70,6 +88,10 @@ RouteMatch match_route(http::verb method, std::string_view target) {
   }
   if (m.route == Route::kNotFound) return m;
   const bool ok = each_parameter(query, [&](std::string_view name, std::string_view value) {
+    if (get && name == "token" && !m.token) {
+      m.token = std::string(value);
+      return true;
+    }
     if (m.route == Route::kLive && name == "channel" && valid_name(value)) {
       m.channel = std::string(value);
       return true;
@@ -84,12 +106,12 @@ RouteMatch match_route(http::verb method, std::string_view target) {
   return m;
 }
 
-std::optional<std::string> presented_token(const http::request_header<>& head) {
+std::optional<std::string> presented_token(const http::request_header<>& head, const RouteMatch& route) {
   if (const auto a = head.find(http::field::authorization); a != head.end())
     if (const auto t = bearer_credentials(std::string_view(a->value().data(), a->value().size()))) return std::string(*t);
   if (const auto p = head.find(http::field::sec_websocket_protocol); p != head.end())
     if (const auto t = subprotocol_token(std::string_view(p->value().data(), p->value().size()))) return std::string(*t);
-  return std::nullopt;
+  return route.token;
 }
 
 OriginPolicy::OriginPolicy(const std::string& host, std::uint16_t port, const std::vector<std::string>& extra)

@@ -15,8 +15,7 @@ namespace fapcast {
 enum class Route {
   kPage,        // GET /                   the avatar page
   kPageScript,  // GET /avatar.js
-  kThree,       // GET /three/three.min.js  (Debian libjs-three)
-  kGltfLoader,  // GET /three/GLTFLoader.js
+  kThree,       // GET /three/PATH  (Debian libjs-three, read at start)
   kFace,        // GET /v1/face.glb[?voice=NAME]
   kSay,         // POST /v1/say
   kStop,        // POST /v1/sessions/ID/stop
@@ -29,18 +28,19 @@ enum class Route {
 struct RouteMatch {
   Route route = Route::kNotFound;
   bool method_allowed = true;  // false: the path exists, the method does not (405)
-  bool protected_route = false;  // under /v1/: token and Origin checked
   std::string session;           // kStop, kSession
+  std::string asset;             // kThree: PATH under the three.js folder (no "..", no empty segment)
   std::string channel = "default";  // kLive
   std::string voice = "default";    // kFace
+  std::optional<std::string> token;  // ?token=T (GET requests: browsers cannot set headers on <script> or WebSocket)
   bool bad_query = false;           // a parameter that is unknown or not a valid name
 };
 
 RouteMatch match_route(http::verb method, std::string_view target);
 
-// The token the request presents: "Authorization: Bearer T", or on a WebSocket upgrade the
-// subprotocol "bearer.T" a browser offers beside "fapcast.v1".
-std::optional<std::string> presented_token(const http::request_header<>& head);
+// The token the request presents: "Authorization: Bearer T", else the subprotocol "bearer.T" a
+// browser offers beside "fapcast.v1" on a WebSocket upgrade, else the route's ?token=T.
+std::optional<std::string> presented_token(const http::request_header<>& head, const RouteMatch& route);
 
 // The Origins a browser on this server's own page sends (http://HOST:PORT for the listening
 // host, localhost, 127.0.0.1 and [::1]) plus the configured ones. A request without an Origin

@@ -2,11 +2,9 @@
 
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
-#include "fapcast/utterance/sentence_split.hpp"
 
 #include <nlohmann/json.hpp>
 
-#include <array>
 
 namespace fapcast {
 namespace {
@@ -26,11 +24,21 @@ bool bool_field(const json& v, const char* key) {
   return v.get<bool>();
 }
 
-constexpr std::array<std::string_view, 2> kLanguages = {"en-us", "en"};
+// An espeak-ng language code as `espeak-ng --voices` lists it: 1..16 of a-z 0-9 - (en-us, cmn, en-gb-x-rp).
+bool valid_language_code(std::string_view code) {
+  if (code.empty() || code.size() > 16) return false;
+  for (const char c : code)
+    if (!((c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-')) return false;
+  return true;
+}
 
 }  // namespace
 
-std::span<const std::string_view> supported_languages() { return kLanguages; }
+std::vector<std::size_t> sentence_offsets(const SayRequest& request) {
+  if (request.text.find_first_not_of(" \t\r\n") == std::string::npos) return {};
+  if (request.ssml) return {0};
+  return chunk_offsets(request.text, kSentenceBytes);
+}
 
 bool valid_name(std::string_view name) {
   if (name.empty() || name.size() > 32) return false;
@@ -59,17 +67,15 @@ SayRequest parse_say_request(std::string_view body, const SayLimits& limits) {
   SayRequest r;
   bool have_text = false;
   for (const auto& [key, v] : j.items()) {
-    if (key == "text") {
-      r.text = string_field(v, "text");
+    if (key == "text" || key == "ssml") {
+      if (have_text) throw bad("text-twice", "give 'text' or 'ssml', not both");
+      r.text = string_field(v, key.c_str());
+      r.ssml = key == "ssml";
       have_text = true;
-    } else if (key == "ssml") {
-      // The field is reserved for SSML input; this build's front-end reads plain text only.
-      throw bad("ssml-unsupported", "this server speaks plain text ('text'); SSML input is not supported");
     } else if (key == "lang") {
       r.lang = string_field(v, "lang");
-      bool known = false;
-      for (const auto l : kLanguages) known |= r.lang == l;
-      if (!known) throw bad("lang-unsupported", "'" + r.lang + "': this server speaks en-us (espeak-ng's en-us voice)");
+      if (!valid_language_code(r.lang))
+        throw bad("lang-invalid", "'" + r.lang.substr(0, 64) + "': a language code is 1..16 of a-z 0-9 - (espeak-ng --voices)");
     } else if (key == "expression") {
       try {
         r.expression = parse_expression_blend(string_field(v, "expression"));
@@ -97,22 +103,18 @@ SayRequest parse_say_request(std::string_view body, const SayLimits& limits) {
           throw bad("rtp-url", "'" + u.substr(0, 200) + "': expected udp://HOST:PORT with PORT 1..65532 (P..P+3 are used)");
         r.rtp.push_back(std::move(url));
       }
-    } else if (key == "srtp_key") {
-      try {
-        r.srtp_key = parse_srtp_key(string_field(v, "srtp_key"), "srtp_key");
-      } catch (const InputError& e) {
-        throw bad("srtp-key-invalid", e.what());
-      }
+    } else if (key == "srtp") {
+      r.srtp = bool_field(v, "srtp");
     } else if (key == "channel") {
       r.channel = string_field(v, "channel");
       if (!valid_name(r.channel)) throw bad("channel-invalid", "a channel is 1..32 of a-z 0-9 - _");
-    } else if (key == "barge_in") {
-      r.barge_in = bool_field(v, "barge_in");
+    } else if (key == "interrupt") {
+      r.interrupt = bool_field(v, "interrupt");
     } else {
       throw bad("unknown-field", "'" + key.substr(0, 64) + "' (spec/serve.md lists the fields)");
     }
   }
-  if (!have_text) throw bad("text-missing", "the body needs 'text'");
+  if (!have_text) throw bad("text-missing", "the body needs 'text' (or 'ssml')");
   if (r.text.size() > limits.max_text_bytes)
     throw RequestError(413, "text-too-long", std::to_string(r.text.size()) + " bytes; at most " +
                                                  std::to_string(limits.max_text_bytes) + " per request");
@@ -121,8 +123,8 @@ SayRequest parse_say_request(std::string_view body, const SayLimits& limits) {
   } catch (const InputError& e) {
     throw bad("text-invalid", e.what());
   }
-  if (split_sentences(r.text).empty()) throw bad("text-empty", "'text' holds nothing to say");
-  if (r.srtp_key && r.rtp.empty()) throw bad("srtp-key-invalid", "'srtp_key' without 'rtp': nothing to protect");
+  if (sentence_offsets(r).empty()) throw bad("text-empty", "'text' holds nothing to say");
+  if (r.srtp.value_or(false) && r.rtp.empty()) throw bad("srtp-without-rtp", "'srtp' without 'rtp': nothing to protect");
   return r;
 }
 

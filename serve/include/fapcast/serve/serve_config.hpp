@@ -36,8 +36,8 @@ struct ServeConfig {
   std::map<std::string, std::filesystem::path> voices;  // name -> voice file; empty path: the default voice
   FrameRate rate{25, 1};                       // frames per second of every session
   std::vector<std::string> allowed_origins;    // WebSocket/HTTP Origins accepted besides the server's own
-  // Where RTP may be sent (CIDR prefixes): loopback and administratively scoped multicast.
-  std::vector<std::string> rtp_networks = {"127.0.0.0/8", "::1/128", "239.0.0.0/8", "ff05::/16"};
+  // Where RTP may be sent (CIDR prefixes): loopback only unless configured.
+  std::vector<std::string> rtp_networks = {"127.0.0.0/8", "::1/128"};
   std::filesystem::path srtp_key_file;         // key of RTP destinations that bring none
   bool require_srtp = false;                   // refuse RTP destinations without a key
   int multicast_ttl = 1;

@@ -1,0 +1,148 @@
+// The named bad requests of tests/data/serve/bad: each NAME.http (raw bytes: one request, or
+// several on one connection when the refusal needs a server that is busy) is sent over a real
+// loopback TCP connection to a real Server, and the last answer's status, rule and detail are
+// compared with the golden line "NAME: STATUS RULE: DETAIL" of expected-answers.txt. Also the
+// start-up refusals: a bad SRTP key file and a bad token file stop the Server (and `fapcast
+// serve`, exit 1) with the file named.
+#include "fapcast/core/file_io.hpp"
+#include "fapcast/core/input_error.hpp"
+#include "fapcast/serve/server.hpp"
+#include "fapcast/voice/voice.hpp"
+#include "support/bad_inputs.hpp"
+#include "support/run_command.hpp"
+#include "support/serve_client.hpp"
+#include "support/spoken_voice.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <thread>
+
+namespace fapcast {
+namespace {
+
+const std::filesystem::path kBad = std::filesystem::path(FAPCAST_TEST_DATA) / "serve" / "bad";
+constexpr const char* kToken = "c2VjcmV0LXRva2VuLWZvci10ZXN0cw";  // what the .http files present
+
+// A server on an ephemeral loopback port with the spoken test voice, run on its own thread.
+// The limits the stateful requests reach: two sessions in all, no queue.
+class RunningServer {
+ public:
+  explicit RunningServer(ServeConfig config = base_config()) {
+    ServeVoices voices;
+    voices.emplace("default", Voice::open(test::spoken_voice_file()));
+    server_ = std::make_unique<Server>(io_, std::move(config), std::move(voices));
+    thread_ = std::thread([this] { io_.run(); });
+  }
+  ~RunningServer() {
+    asio::post(io_, [this] { server_->stop(); });
+    thread_.join();
+  }
+  std::uint16_t port() const { return server_->port(); }
+  ServeStats stats() const { return server_->stats(); }
+
+  static ServeConfig base_config() {
+    static const std::filesystem::path dir = test::make_temp_dir("serve_bad_requests");
+    write_file_atomically(dir / "token", std::string(kToken) + "\n");
+    ServeConfig c;
+    c.host = "127.0.0.1";
+    c.port = 0;
+    c.token_file = dir / "token";
+    c.limits.max_sessions = 2;
+    c.limits.max_queue = 0;
+    return c;
+  }
+
+ private:
+  asio::io_context io_;
+  std::unique_ptr<Server> server_;
+  std::thread thread_;
+};
+
+// The number of requests in a file: each starts with a request line of a method.
+std::size_t request_count(const std::string& raw) {
+  std::size_t n = 0;
+  for (const char* method : {"GET /", "POST /"})
+    for (auto at = raw.find(method); at != std::string::npos; at = raw.find(method, at + 1))
+      if (at == 0 || raw.compare(at - 2, 2, "\r\n") == 0) ++n;
+  return n;
+}
+
+class BadRequest : public testing::TestWithParam<std::string> {};
+
+TEST_P(BadRequest, AnswersItsGoldenStatusRuleAndDetail) {
+  const std::string name = GetParam();
+  const auto golden = test::golden_lines(kBad / "expected-answers.txt");
+  ASSERT_TRUE(golden.count(name)) << name << " has no line in expected-answers.txt";
+  const std::string raw = test::slurp(kBad / name);
+  RunningServer server;
+  const std::size_t n = request_count(raw);
+  ASSERT_GE(n, 1u);
+  const auto answers = test::http_exchange(server.port(), raw, n);
+  ASSERT_EQ(answers.size(), n) << name << ": " << (answers.empty() ? "" : answers.back().error);
+  for (std::size_t i = 0; i + 1 < n; ++i) EXPECT_EQ(answers[i].status, 200) << name << " request " << i + 1;
+  const auto& last = answers.back();
+  const auto body = nlohmann::json::parse(last.body, nullptr, false);
+  ASSERT_TRUE(body.is_object()) << name << ": " << last.status << " " << last.body;
+  const std::string line = name + ": " + std::to_string(last.status) + " " + body.value("error", "?") + ": " +
+                           body.value("detail", "?");
+  EXPECT_EQ(line, golden.at(name));
+  // Refused and counted; a lone request refused before any work started nothing.
+  const ServeStats s = server.stats();
+  EXPECT_EQ(s.unauthorized + s.forbidden + s.bad_requests + s.over_limits, 1u) << name;
+  if (n == 1) {
+    EXPECT_EQ(s.sessions_started, 0u) << name;
+  }
+}
+
+std::vector<std::string> http_files() { return test::bad_input_names(kBad, ".http"); }
+
+INSTANTIATE_TEST_SUITE_P(Serve, BadRequest, testing::ValuesIn(http_files()),
+                         [](const testing::TestParamInfo<std::string>& info) { return test::test_name_of(info.param); });
+
+TEST(BadRequest, EveryGoldenLineHasItsRequest) {
+  for (const auto& [name, line] : test::golden_lines(kBad / "expected-answers.txt"))
+    if (name.ends_with(".http")) {
+      EXPECT_TRUE(std::filesystem::exists(kBad / name)) << line;
+    }
+}
+
+// A start-up refusal: the Server's exception, whose message names the file and the rule.
+std::string startup_error(ServeConfig config) {
+  ServeVoices voices;
+  voices.emplace("default", Voice::open(test::spoken_voice_file()));
+  asio::io_context io;
+  try {
+    Server server(io, std::move(config), std::move(voices));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "(started)";
+}
+
+TEST(BadRequest, BadSrtpKeyFileStopsTheServerAtStart) {
+  const auto golden = test::golden_lines(kBad / "expected-answers.txt");
+  for (const char* key : {"bad.002.srtp-key-length.key", "bad.004.srtp-key-weak.key"}) {
+    ServeConfig c = RunningServer::base_config();
+    c.srtp_key_file = std::filesystem::path(FAPCAST_TEST_DATA) / "srtp" / "bad" / key;
+    const std::string message = startup_error(c);
+    const std::string name = std::string("srtp-key-file ") + key;
+    ASSERT_TRUE(golden.count(name)) << name;
+    EXPECT_EQ(name + ": " + message.substr(message.find(key)), golden.at(name));
+  }
+}
+
+TEST(BadRequest, BadTokenFileStopsTheServerAtStart) {
+  const std::filesystem::path dir = test::make_temp_dir("serve_bad_token");
+  write_file_atomically(dir / "short.token", "abc\n");
+  ServeConfig c = RunningServer::base_config();
+  c.token_file = dir / "short.token";
+  const std::string message = startup_error(c);
+  EXPECT_NE(message.find("short.token"), std::string::npos) << message;
+  EXPECT_NE(message.find("serve-token"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace fapcast

@@ -61,12 +61,11 @@ class RunningServer {
   std::thread thread_;
 };
 
-// The number of requests in a file: each starts with a request line of a method.
+// The number of requests in a file: each has one request line ending in " HTTP/1.1" (no body
+// of these files holds that).
 std::size_t request_count(const std::string& raw) {
   std::size_t n = 0;
-  for (const char* method : {"GET /", "POST /"})
-    for (auto at = raw.find(method); at != std::string::npos; at = raw.find(method, at + 1))
-      if (at == 0 || raw.compare(at - 2, 2, "\r\n") == 0) ++n;
+  for (auto at = raw.find(" HTTP/1.1\r\n"); at != std::string::npos; at = raw.find(" HTTP/1.1\r\n", at + 1)) ++n;
   return n;
 }
 
@@ -75,20 +74,20 @@ class BadRequest : public testing::TestWithParam<std::string> {};
 TEST_P(BadRequest, AnswersItsGoldenStatusRuleAndDetail) {
   const std::string name = GetParam();
   const auto golden = test::golden_lines(kBad / "expected-answers.txt");
-  ASSERT_TRUE(golden.count(name)) << name << " has no line in expected-answers.txt";
   const std::string raw = test::slurp(kBad / name);
   RunningServer server;
   const std::size_t n = request_count(raw);
   ASSERT_GE(n, 1u);
   const auto answers = test::http_exchange(server.port(), raw, n);
   ASSERT_EQ(answers.size(), n) << name << ": " << (answers.empty() ? "" : answers.back().error);
-  for (std::size_t i = 0; i + 1 < n; ++i) EXPECT_EQ(answers[i].status, 200) << name << " request " << i + 1;
+  for (std::size_t i = 0; i + 1 < n; ++i)
+    EXPECT_EQ(answers[i].status, 202) << name << " request " << i + 1 << ": " << answers[i].body;
   const auto& last = answers.back();
   const auto body = nlohmann::json::parse(last.body, nullptr, false);
   ASSERT_TRUE(body.is_object()) << name << ": " << last.status << " " << last.body;
   const std::string line = name + ": " + std::to_string(last.status) + " " + body.value("error", "?") + ": " +
                            body.value("detail", "?");
-  EXPECT_EQ(line, golden.at(name));
+  EXPECT_EQ(line, golden.count(name) ? golden.at(name) : name + " has no line in expected-answers.txt");
   // Refused and counted; a lone request refused before any work started nothing.
   const ServeStats s = server.stats();
   EXPECT_EQ(s.unauthorized + s.forbidden + s.bad_requests + s.over_limits, 1u) << name;
@@ -129,8 +128,9 @@ TEST(BadRequest, BadSrtpKeyFileStopsTheServerAtStart) {
     c.srtp_key_file = std::filesystem::path(FAPCAST_TEST_DATA) / "srtp" / "bad" / key;
     const std::string message = startup_error(c);
     const std::string name = std::string("srtp-key-file ") + key;
-    ASSERT_TRUE(golden.count(name)) << name;
-    EXPECT_EQ(name + ": " + message.substr(message.find(key)), golden.at(name));
+    const auto at = message.find(key);
+    ASSERT_NE(at, std::string::npos) << message;
+    EXPECT_EQ(name + ": " + message.substr(at), golden.count(name) ? golden.at(name) : name + ": no golden line");
   }
 }
 

@@ -10,15 +10,14 @@
 #include "fapcast/voice/voice.hpp"
 #include "support/bad_inputs.hpp"
 #include "support/run_command.hpp"
+#include "serve/serve_support.hpp"
 #include "support/serve_client.hpp"
-#include "support/spoken_voice.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <string>
-#include <thread>
 
 namespace fapcast {
 namespace {
@@ -26,40 +25,17 @@ namespace {
 const std::filesystem::path kBad = std::filesystem::path(FAPCAST_TEST_DATA) / "serve" / "bad";
 constexpr const char* kToken = "c2VjcmV0LXRva2VuLWZvci10ZXN0cw";  // what the .http files present
 
-// A server on an ephemeral loopback port with the spoken test voice, run on its own thread.
-// The limits the stateful requests reach: two sessions in all, no queue.
-class RunningServer {
- public:
-  explicit RunningServer(ServeConfig config = base_config()) {
-    ServeVoices voices;
-    voices.emplace("default", Voice::open(test::spoken_voice_file()));
-    server_ = std::make_unique<Server>(io_, std::move(config), std::move(voices));
-    thread_ = std::thread([this] { io_.run(); });
-  }
-  ~RunningServer() {
-    asio::post(io_, [this] { server_->stop(); });
-    thread_.join();
-  }
-  std::uint16_t port() const { return server_->port(); }
-  ServeStats stats() const { return server_->stats(); }
-
-  static ServeConfig base_config() {
-    static const std::filesystem::path dir = test::make_temp_dir("serve_bad_requests");
-    write_file_atomically(dir / "token", std::string(kToken) + "\n");
-    ServeConfig c;
-    c.host = "127.0.0.1";
-    c.port = 0;
-    c.token_file = dir / "token";
-    c.limits.max_sessions = 2;
-    c.limits.max_queue = 0;
-    return c;
-  }
-
- private:
-  asio::io_context io_;
-  std::unique_ptr<Server> server_;
-  std::thread thread_;
-};
+// The config of every server here: the tests' (serve_support.hpp) with the token the .http
+// files present and the limits the stateful requests reach: two sessions in all, no queue.
+ServeConfig bad_request_config() {
+  static const std::filesystem::path dir = test::make_temp_dir("serve_bad_requests");
+  write_file_atomically(dir / "token", std::string(kToken) + "\n");
+  ServeConfig c = test::test_config();
+  c.token_file = dir / "token";
+  c.limits.max_sessions = 2;
+  c.limits.max_queue = 0;
+  return c;
+}
 
 // The number of requests in a file: each has one request line ending in " HTTP/1.1" (no body
 // of these files holds that).
@@ -75,7 +51,7 @@ TEST_P(BadRequest, AnswersItsGoldenStatusRuleAndDetail) {
   const std::string name = GetParam();
   const auto golden = test::golden_lines(kBad / "expected-answers.txt");
   const std::string raw = test::slurp(kBad / name);
-  RunningServer server;
+  test::TestServer server(bad_request_config());
   const std::size_t n = request_count(raw);
   ASSERT_GE(n, 1u);
   const auto answers = test::http_exchange(server.port(), raw, n);
@@ -89,7 +65,7 @@ TEST_P(BadRequest, AnswersItsGoldenStatusRuleAndDetail) {
                            body.value("detail", "?");
   EXPECT_EQ(line, golden.count(name) ? golden.at(name) : name + " has no line in expected-answers.txt");
   // Refused and counted; a lone request refused before any work started nothing.
-  const ServeStats s = server.stats();
+  const ServeStats s = server.server->stats();
   EXPECT_EQ(s.unauthorized + s.forbidden + s.bad_requests + s.over_limits, 1u) << name;
   if (n == 1) {
     EXPECT_EQ(s.sessions_started, 0u) << name;
@@ -111,7 +87,7 @@ TEST(BadRequest, EveryGoldenLineHasItsRequest) {
 // A start-up refusal: the Server's exception, whose message names the file and the rule.
 std::string startup_error(ServeConfig config) {
   ServeVoices voices;
-  voices.emplace("default", Voice::open(test::spoken_voice_file()));
+  voices.emplace("default", test::serve_test_voice());
   asio::io_context io;
   try {
     Server server(io, std::move(config), std::move(voices));
@@ -124,7 +100,7 @@ std::string startup_error(ServeConfig config) {
 TEST(BadRequest, BadSrtpKeyFileStopsTheServerAtStart) {
   const auto golden = test::golden_lines(kBad / "expected-answers.txt");
   for (const char* key : {"bad.002.srtp-key-length.key", "bad.004.srtp-key-weak.key"}) {
-    ServeConfig c = RunningServer::base_config();
+    ServeConfig c = bad_request_config();
     c.srtp_key_file = std::filesystem::path(FAPCAST_TEST_DATA) / "srtp" / "bad" / key;
     const std::string message = startup_error(c);
     const std::string name = std::string("srtp-key-file ") + key;
@@ -137,7 +113,7 @@ TEST(BadRequest, BadSrtpKeyFileStopsTheServerAtStart) {
 TEST(BadRequest, BadTokenFileStopsTheServerAtStart) {
   const std::filesystem::path dir = test::make_temp_dir("serve_bad_token");
   write_file_atomically(dir / "short.token", "abc\n");
-  ServeConfig c = RunningServer::base_config();
+  ServeConfig c = bad_request_config();
   c.token_file = dir / "short.token";
   const std::string message = startup_error(c);
   EXPECT_NE(message.find("short.token"), std::string::npos) << message;

@@ -86,9 +86,9 @@ inline std::string json_request(std::string_view method, std::string_view target
 
 // A WebSocket live client of /v1/live?channel=CHANNEL (token in the Authorization header), on
 // its own io_context: one thread uses it.
-class LiveTestClient {
+class DroppingLiveClient {
  public:
-  LiveTestClient(std::uint16_t port, const std::string& token, const std::string& channel) : ws_(io_) {
+  DroppingLiveClient(std::uint16_t port, const std::string& token, const std::string& channel) : ws_(io_) {
     beast::get_lowest_layer(ws_).connect(tcp::endpoint(asio::ip::make_address("127.0.0.1"), port));
     ws_.set_option(beast::websocket::stream_base::decorator([token](beast::websocket::request_type& req) {
       req.set(http::field::authorization, "Bearer " + token);

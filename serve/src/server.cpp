@@ -325,7 +325,7 @@ void Server::State::say(HttpConnection& conn, const HttpRequest& request) {
   const bool plain = r.lang == "en-us" && !r.ssml && !r.expression;
   std::shared_ptr<const Speaker> speaker = plain ? speakers.at(r.voice) : nullptr;
   std::weak_ptr<State> weak = weak_from_this();
-  SessionContext ctx{io, *worker, voices.at(r.voice), r.voice, config.rate, config.rtcp_interval, {}, {}, {}, {}, {}};
+  SessionContext ctx{io, *worker, voices.at(r.voice), r.voice, config.rate, config.rtcp_interval, config.sentence_bytes, {}, {}, {}, {}, {}};
   ctx.clients = [weak, channel_name]() -> const std::vector<std::shared_ptr<LiveClient>>& {
     auto s = weak.lock();
     if (!s) return no_clients();

@@ -64,7 +64,7 @@ void LiveClient::send(std::shared_ptr<const std::string> message, bool binary) {
 
 void LiveClient::write_next() {
   if (writing_ || finished_) return;
-  if (closing_) {
+  if (closing_ && queue_.empty()) {
     writing_ = true;
     close_timer_.cancel();
     ws_.async_close(close_reason_, [self = shared_from_this()](beast::error_code) {
@@ -89,7 +89,9 @@ void LiveClient::write_next() {
 void LiveClient::close(websocket::close_code code, const std::string& reason) {
   if (closing_ || finished_) return;
   closing_ = true;
-  queue_.clear();
+  // Going away (shutdown): what is queued (a session's "end") goes out before the close frame;
+  // any other close (a slow client, a protocol breach) drops it.
+  if (code != websocket::close_code::going_away) queue_.clear();
   close_reason_ = websocket::close_reason(code, reason.substr(0, 120));  // a close reason is at most 123 bytes
   if (!open_) return finish(reason);
   if (writing_) {

@@ -37,7 +37,7 @@ LiveSession::LiveSession(SessionContext context, std::string id, std::uint32_t n
       id_(std::move(id)),
       number_(number),
       request_(std::move(request)),
-      sentences_(sentence_offsets(request_)),
+      sentences_(sentence_offsets(request_, ctx_.sentence_bytes)),
       rtp_(std::move(rtp)),
       speaker_(std::move(speaker)),
       encoder_(std::make_shared<FbaFrameEncoder>(FbaEncoderOptions{}, ctx_.rate)),

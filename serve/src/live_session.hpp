@@ -47,6 +47,7 @@ struct SessionContext {
   std::string voice_name;
   FrameRate rate;
   std::chrono::milliseconds rtcp_interval;
+  std::size_t sentence_bytes;
   // The channel's live clients, now.
   std::function<const std::vector<std::shared_ptr<LiveClient>>&()> clients;
   std::function<void(std::chrono::nanoseconds late, std::size_t rtp_packets, std::size_t messages)> on_frame;

@@ -27,8 +27,7 @@ std::optional<std::string> face_glb(const Voice& voice, const std::string& name)
   return write_glb(animation);
 }
 
-PageAssets load_page_assets(const std::filesystem::path& three_dir, const std::map<std::string, Voice>& voices,
-                            const std::function<void(std::string_view)>& log) {
+PageAssets load_page_assets(const std::filesystem::path& three_dir) {
   PageAssets a;
   a.page_html = std::string(embedded_page_html());
   a.page_script = std::string(embedded_page_script());
@@ -48,10 +47,6 @@ PageAssets load_page_assets(const std::filesystem::path& three_dir, const std::m
     a.three.emplace(rel, std::move(bytes));
   }
   if (ec) throw std::runtime_error(three_dir.string() + ": " + ec.message() + hint);
-  for (const auto& [name, voice] : voices) {
-    if (auto glb = face_glb(voice, name)) a.face_glb.emplace(name, std::move(*glb));
-    else if (log) log("voice '" + name + "': its face is not the ICT topology: the page cannot show it (RTP only)");
-  }
   return a;
 }
 

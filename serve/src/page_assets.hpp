@@ -19,14 +19,15 @@ struct PageAssets {
   std::string page_html;
   std::string page_script;
   std::map<std::string, std::string> three;     // path under the three.js folder -> its bytes
-  std::map<std::string, std::string> face_glb;  // voice name -> .glb (voices on the ICT topology)
+  // voice name -> its .glb, or nothing for a face not on the ICT topology: made on the first
+  // GET /v1/face.glb of the voice (tens of milliseconds, once), so that starting is quick.
+  std::map<std::string, std::optional<std::string>> face_glb;
 };
 
 // Reads every regular file under `three_dir` (at most kMaxThreeBytes in all). Throws
 // std::runtime_error naming the folder when it is missing or too big, or a file that cannot be read.
 inline constexpr std::size_t kMaxThreeBytes = 64u << 20;
-PageAssets load_page_assets(const std::filesystem::path& three_dir, const std::map<std::string, Voice>& voices,
-                            const std::function<void(std::string_view)>& log);
+PageAssets load_page_assets(const std::filesystem::path& three_dir);
 
 // The voice's face for the page, or nothing when its face is not the ICT topology.
 std::optional<std::string> face_glb(const Voice& voice, const std::string& name);

@@ -34,10 +34,10 @@ bool valid_language_code(std::string_view code) {
 
 }  // namespace
 
-std::vector<std::size_t> sentence_offsets(const SayRequest& request) {
+std::vector<std::size_t> sentence_offsets(const SayRequest& request, std::size_t max_bytes) {
   if (request.text.find_first_not_of(" \t\r\n") == std::string::npos) return {};
   if (request.ssml) return {0};
-  return chunk_offsets(request.text, kSentenceBytes);
+  return chunk_offsets(request.text, max_bytes);
 }
 
 bool valid_name(std::string_view name) {

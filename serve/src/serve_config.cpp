@@ -145,6 +145,8 @@ void apply_serve_config(std::string_view json_text, const std::string& source, c
       c.three_dir = r.path(v, key);
     } else if (key == "synthesis_threads") {
       c.synthesis_threads = r.integer(v, key, 1, 64);
+    } else if (key == "sentence_bytes") {
+      c.sentence_bytes = r.integer(v, key, 16, 4096);
     } else if (key == "limits") {
       apply_limits(v, r, c.limits);
     } else {

@@ -52,7 +52,7 @@ Server::State::State(asio::io_context& io_, ServeConfig config_, ServeVoices voi
   if (!config.srtp_key_file.empty()) default_srtp_key = read_srtp_key_file(config.srtp_key_file);
   if (config.require_srtp && !default_srtp_key)
     throw std::invalid_argument("fapcast serve: require_srtp without an SRTP key file");
-  assets = load_page_assets(config.three_dir, voices, log);
+  assets = load_page_assets(config.three_dir);
   for (const EspeakLanguage& l : espeak_languages()) languages.push_back(l.code);
   for (const auto& [name, voice] : voices) {
     SpeakerSettings settings;
@@ -244,10 +244,11 @@ void Server::State::on_request(HttpConnection& conn, HttpRequest request) {
       }
       case Route::kFace: {
         if (!voices.contains(route.voice)) throw RequestError(404, "voice-unknown", "no voice '" + route.voice + "'");
-        const auto it = assets.face_glb.find(route.voice);
-        if (it == assets.face_glb.end())
+        auto it = assets.face_glb.find(route.voice);
+        if (it == assets.face_glb.end()) it = assets.face_glb.emplace(route.voice, face_glb(voices.at(route.voice), route.voice)).first;
+        if (!it->second)
           throw RequestError(404, "face-unavailable", "voice '" + route.voice + "' has no face on the ICT topology");
-        return conn.respond(make_response(http::status::ok, it->second, "model/gltf-binary", v));
+        return conn.respond(make_response(http::status::ok, *it->second, "model/gltf-binary", v));
       }
       case Route::kStats: return conn.respond(json_response(http::status::ok, stats_json(), v));
       case Route::kSession:
@@ -328,7 +329,7 @@ void Server::State::say(HttpConnection& conn, const HttpRequest& request) {
   const bool plain = r.lang == "en-us" && !r.ssml && !r.expression;
   std::shared_ptr<const Speaker> speaker = plain ? speakers.at(r.voice) : nullptr;
   std::weak_ptr<State> weak = weak_from_this();
-  SessionContext ctx{io, *worker, voices.at(r.voice), r.voice, config.rate, config.rtcp_interval, {}, {}, {}, {}, {}};
+  SessionContext ctx{io, *worker, voices.at(r.voice), r.voice, config.rate, config.rtcp_interval, config.sentence_bytes, {}, {}, {}, {}, {}};
   ctx.clients = [weak, channel_name]() -> const std::vector<std::shared_ptr<LiveClient>>& {
     auto s = weak.lock();
     if (!s) return no_clients();

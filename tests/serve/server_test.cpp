@@ -247,9 +247,13 @@ TEST(ServeRtp, SrtpWithTheServersKeyIsDecrypted) {
 // ---- live clients -----------------------------------------------------------------------------
 
 TEST(ServeLive, ClientGetsSessionSentenceFramesEndInOrderWithAudioInSync) {
+  ServeConfig c = test_config();
+  c.sentence_bytes = 16;  // "Hello there. " and "Bye now." are two pieces
+  TestServer server(c);
+  const auto port = [&] { return server.port(); };
   LiveTestClient client(port(), "/v1/live?channel=live1");
   ASSERT_TRUE(wait_for_stats(port(), [](const json& s) { return s["clients"].get<int>() >= 1; }));
-  const Answer a = post(port(), "/v1/say", R"({"text":"Hello there.","channel":"live1"})");
+  const Answer a = post(port(), "/v1/say", R"({"text":"Hello there. Bye now.","channel":"live1"})");
   ASSERT_EQ(a.status, 202) << a.body;
   beast::error_code ec;
   auto m = client.read(ec);
@@ -272,7 +276,10 @@ TEST(ServeLive, ClientGetsSessionSentenceFramesEndInOrderWithAudioInSync) {
         if (sentences > 0) {
           EXPECT_EQ(in_sentence, sentence_frames);
           EXPECT_EQ(audio_in_sentence, sentence_samples);
+          // The next piece starts where this one's audio ends, or later if it was late.
+          EXPECT_GE(j["sample"].get<std::int64_t>(), sentence_start + sentence_samples);
         }
+        EXPECT_EQ(j["index"].get<std::size_t>(), sentences);
         ++sentences;
         sentence_start = j["sample"];
         sentence_samples = j["samples"];
@@ -304,7 +311,8 @@ TEST(ServeLive, ClientGetsSessionSentenceFramesEndInOrderWithAudioInSync) {
     ++in_sentence;
   }
   EXPECT_EQ(end_reason, "done");
-  EXPECT_EQ(sentences, 1u);
+  EXPECT_EQ(sentences, 2u);
+  EXPECT_EQ(session["sentences"], 2);
   EXPECT_EQ(in_sentence, sentence_frames);
   EXPECT_EQ(audio_in_sentence, sentence_samples);
   EXPECT_GT(frames, 5u);

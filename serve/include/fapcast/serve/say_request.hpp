@@ -27,10 +27,11 @@ struct SayRequest {
   bool interrupt = false;                    // barge-in: stop what the channel is saying and drop its queue first
 };
 
-// The byte offsets where a session's text is cut into the sentences it speaks one at a time:
-// the front-end's chunk_offsets at kSentenceBytes (sentence ends first); SSML is one piece.
-inline constexpr std::size_t kSentenceBytes = 160;
-std::vector<std::size_t> sentence_offsets(const SayRequest& request);
+// The byte offsets where a session's text is cut into the pieces it speaks one at a time: the
+// front-end's chunk_offsets at `max_bytes` (cut after sentence ends first, short sentences
+// packed, a longer one cut at a space); SSML is one piece; white space only gives none.
+inline constexpr std::size_t kDefaultSentenceBytes = 120;
+std::vector<std::size_t> sentence_offsets(const SayRequest& request, std::size_t max_bytes = kDefaultSentenceBytes);
 
 struct SayLimits {
   std::size_t max_text_bytes = 4 * 1024;

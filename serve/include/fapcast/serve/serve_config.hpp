@@ -45,6 +45,7 @@ struct ServeConfig {
   std::chrono::milliseconds rtcp_interval{1000};
   std::filesystem::path three_dir = "/usr/share/javascript/three";  // Debian libjs-three
   std::size_t synthesis_threads = 1;
+  std::size_t sentence_bytes = 120;            // the longest piece of text synthesised at once (sentence_offsets)
   ServeLimits limits;
 };
 

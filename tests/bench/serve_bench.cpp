@@ -58,11 +58,10 @@ using Clock = std::chrono::steady_clock;
 
 constexpr const char* kToken = "c2VjcmV0LXRva2VuLWZvci10ZXN0cw";
 constexpr const char* kFirstSentence = "Hello there.";
-// One sentence under the server's 160-byte cut, about eight seconds of speech: one synthesis
-// job per session, so that the sessions overlap once started.
+// One sentence under the server's sentence cut (120 bytes by default), about six seconds of
+// speech: one synthesis job per session, so that the sessions overlap once started.
 constexpr const char* kLongSentence =
-    "The quick brown fox jumps over the lazy dog while seven bright lanterns glow along the quiet harbour, "
-    "and everybody waits for the boat";
+    "The quick brown fox jumps over the lazy dog while seven bright lanterns glow along the quiet harbour at night";
 
 std::filesystem::path voice_path() {
   if (const char* v = std::getenv("FAPCAST_BENCH_VOICE")) return v;

@@ -96,6 +96,9 @@ std::optional<ListenAddress> parse_listen_address(std::string_view text) {
   const auto [end, ec] = std::from_chars(port.data(), port.data() + port.size(), value);
   if (port.empty() || ec != std::errc() || end != port.data() + port.size() || value > 65535 || out.host.empty())
     return std::nullopt;
+  // A host is a name or an address: no brackets (but around IPv6), blanks or control characters.
+  for (const char ch : out.host)
+    if (ch == '[' || ch == ']' || static_cast<unsigned char>(ch) <= ' ' || ch == '\x7f') return std::nullopt;
   out.port = static_cast<std::uint16_t>(value);
   return out;
 }

@@ -118,6 +118,23 @@ TEST(BadRequest, BadTokenFileStopsTheServerAtStart) {
   const std::string message = startup_error(c);
   EXPECT_NE(message.find("short.token"), std::string::npos) << message;
   EXPECT_NE(message.find("serve-token"), std::string::npos) << message;
+  // Longer than any token: the same rule at the byte where the token must end (serve_bearer_token_fuzz's
+  // finding: it was a read failure without a rule).
+  write_file_atomically(dir / "long.token", std::string(600, 'a') + "\n");
+  c.token_file = dir / "long.token";
+  const std::string long_message = startup_error(c);
+  EXPECT_NE(long_message.find("long.token: byte 512: serve-token: 601 bytes"), std::string::npos) << long_message;
+}
+
+// serve_config_fuzz's finding: a host with a bracket inside did not print back to itself.
+TEST(BadRequest, ListenAddressRefusesBracketsAndBlanksInTheHost) {
+  EXPECT_FALSE(parse_listen_address("[[x]:4"));
+  EXPECT_FALSE(parse_listen_address("a]b:80"));
+  EXPECT_FALSE(parse_listen_address("local host:80"));
+  EXPECT_FALSE(parse_listen_address(std::string("a\0b:80", 6)));
+  ASSERT_TRUE(parse_listen_address("[::1]:8080"));
+  EXPECT_EQ(parse_listen_address("[::1]:8080")->host, "::1");
+  EXPECT_EQ(parse_listen_address("localhost:80")->host, "localhost");
 }
 
 }  // namespace

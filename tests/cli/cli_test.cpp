@@ -49,7 +49,7 @@ TEST(Cli, HelpListsTheCommandsInPipelineOrder) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(listed_commands(r.out),
             (std::vector<std::string>{"corpus", "align", "voice", "say", "animate", "eval", "adapt", "expressions", "fap",
-                                      "encode", "decode", "export", "render", "stream", "recv"}))
+                                      "encode", "decode", "export", "render", "stream", "recv", "serve"}))
       << r.out;
   EXPECT_EQ(listed_commands(run_command(fapcast("corpus --help")).out),
             (std::vector<std::string>{"script", "record-reference"}));

@@ -1,0 +1,315 @@
+#include "live_session.hpp"
+
+#include "live_client.hpp"
+#include "synthesis_worker.hpp"
+
+#include "fapcast/core/frame_rate.hpp"
+#include "fapcast/face/facial_expression.hpp"
+#include "fapcast/phonetics/phone.hpp"
+#include "fapcast/serve/live_message.hpp"
+#include "fapcast/transport/timeline.hpp"
+
+#include <algorithm>
+
+namespace fapcast {
+namespace {
+using Clock = std::chrono::steady_clock;
+using nlohmann::json;
+
+std::string dump(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+}  // namespace
+
+std::string_view session_state_name(SessionState state) {
+  switch (state) {
+    case SessionState::kQueued: return "queued";
+    case SessionState::kStarting: return "starting";
+    case SessionState::kSpeaking: return "speaking";
+    case SessionState::kDone: return "done";
+    case SessionState::kStopped: return "stopped";
+    case SessionState::kFailed: return "failed";
+  }
+  return "unknown";
+}
+
+LiveSession::LiveSession(SessionContext context, std::string id, std::uint32_t number, SayRequest request,
+                         std::vector<std::unique_ptr<RtpSender>> rtp, std::shared_ptr<const Speaker> speaker)
+    : ctx_(std::move(context)),
+      id_(std::move(id)),
+      number_(number),
+      request_(std::move(request)),
+      sentences_(sentence_offsets(request_, ctx_.sentence_bytes)),
+      rtp_(std::move(rtp)),
+      speaker_(std::move(speaker)),
+      encoder_(std::make_shared<FbaFrameEncoder>(FbaEncoderOptions{}, ctx_.rate)),
+      timer_(ctx_.io) {}
+
+void LiveSession::start() {
+  if (state_ != SessionState::kQueued) return;
+  state_ = SessionState::kStarting;
+  started_at_ = Clock::now();
+  submit(0);
+}
+
+void LiveSession::submit(std::size_t index) {
+  if (index >= sentences_.size()) return;
+  job_in_flight_ = true;
+  const std::size_t from = sentences_[index];
+  const std::size_t to = index + 1 < sentences_.size() ? sentences_[index + 1] : request_.text.size();
+  SpeakerSettings settings;
+  settings.speech.language = request_.lang;
+  settings.speech.ssml = request_.ssml;
+  settings.speech.source = "session " + id_ + " text";
+  settings.rate = ctx_.rate;
+  settings.expression = request_.expression;
+  settings.name = "fapcast serve";
+  ctx_.worker.submit(index == 0, [weak = weak_from_this(), io = &ctx_.io, voice = &ctx_.voice, speaker = speaker_,
+                                  encoder = encoder_, settings = std::move(settings),
+                                  source = "voice '" + ctx_.voice_name + "'", index,
+                                  text = request_.text.substr(from, to - from)]() mutable {
+    PreparedSentence p;
+    p.index = index;
+    p.text = std::move(text);
+    try {
+      if (!speaker) speaker = std::make_shared<const Speaker>(*voice, settings, source);
+      p.speaker = speaker;
+      p.spoken = speaker->speak(p.text);
+      const SampleRate rate_hz = p.spoken.audio.sample_rate;
+      FbaAccessUnit au;
+      p.units.reserve(p.spoken.faps.frames.size());
+      for (std::size_t k = 0; k < p.spoken.faps.frames.size(); ++k) {
+        if (encoder->encode(p.spoken.faps.frames[k], au))
+          throw std::runtime_error("fba-encode: " + encoder->error_detail());
+        p.units.push_back({frame_to_sample(static_cast<std::int64_t>(k), settings.rate, rate_hz), std::move(au.bytes),
+                           au.intra});
+        au = {};
+      }
+    } catch (const std::exception& e) {
+      p.error = e.what();
+    }
+    asio::post(*io, [weak, p = std::move(p)]() mutable {
+      if (auto self = weak.lock()) self->on_prepared(std::move(p));
+    });
+  });
+}
+
+void LiveSession::on_prepared(PreparedSentence p) {
+  job_in_flight_ = false;
+  if (!active()) return;  // stopped while it was being synthesised
+  if (p.error.empty() && !p.spoken.audio.sample_rate.valid()) p.error = "the front-end gave no audio";
+  if (p.error.empty() && sample_rate_.valid() && p.spoken.audio.sample_rate != sample_rate_)
+    p.error = "sentence " + std::to_string(p.index + 1) + " came at another audio rate";
+  if (!p.error.empty()) {
+    const std::string why = "synthesis-failed: sentence " + std::to_string(p.index + 1) + ": " + p.error;
+    if (state_ == SessionState::kStarting && ctx_.on_start_failed) ctx_.on_start_failed(why);
+    end(SessionState::kFailed, why);
+    return;
+  }
+  if (!speaker_) speaker_ = p.speaker;
+  if (state_ == SessionState::kStarting) {
+    sample_rate_ = p.spoken.audio.sample_rate;
+    first_speech_time_ = p.spoken.speech_time;
+    first_animation_time_ = p.spoken.animation_time;
+    state_ = SessionState::kSpeaking;
+    start_ = Clock::now();
+    wall_start_ = std::chrono::system_clock::now();
+    broadcast(session_message());
+    begin_sentence(std::move(p));
+    deadline_ = start_;
+    tick();  // the first frame leaves now
+    return;
+  }
+  if (waiting_for_next_) {
+    waiting_for_next_ = false;
+    begin_sentence(std::move(p));
+    schedule();
+  } else {
+    next_ = std::move(p);
+  }
+}
+
+std::int64_t LiveSession::now_sample() const { return duration_to_samples(Clock::now() - start_, sample_rate_); }
+
+void LiveSession::begin_sentence(PreparedSentence p) {
+  // Sentence i + 1 starts where sentence i's audio ends, or now when it was not ready in time.
+  offset_ = current_ ? std::max(offset_ + current_->spoken.audio.instants(), now_sample()) : 0;
+  current_ = std::move(p);
+  frame_ = 0;
+  audio_sent_ = 0;
+  for (MediaUnit& u : current_->units) u.sample += offset_;
+  broadcast(sentence_message(*current_));
+  if (!job_in_flight_ && !next_ && current_->index + 1 < sentences_.size()) submit(current_->index + 1);
+}
+
+void LiveSession::schedule() {
+  deadline_ = start_ + samples_to_duration(offset_ + frame_to_sample(static_cast<std::int64_t>(frame_), ctx_.rate, sample_rate_),
+                                           sample_rate_);
+  timer_.expires_at(deadline_);
+  timer_.async_wait([self = shared_from_this()](const boost::system::error_code& ec) {
+    if (!ec && self->state_ == SessionState::kSpeaking) self->tick();
+  });
+}
+
+void LiveSession::tick() {
+  const Clock::time_point woke = Clock::now();
+  const PreparedSentence& s = *current_;
+  const std::size_t frames = s.spoken.faps.frames.size();
+  const std::int64_t instants = s.spoken.audio.instants();
+  const std::int64_t here = frame_to_sample(static_cast<std::int64_t>(frame_), ctx_.rate, sample_rate_);
+  const std::int64_t upto =
+      frame_ + 1 < frames ? frame_to_sample(static_cast<std::int64_t>(frame_ + 1), ctx_.rate, sample_rate_) : instants;
+  const std::int64_t sample = offset_ + here;
+
+  // RTP: the frame's access unit, then the audio until the next frame's sample, then a sender
+  // report when one is due.
+  std::size_t packets = 0;
+  std::error_code ec;
+  const std::int64_t rtcp_step = sample_rate_.hz * ctx_.rtcp_interval.count() / 1000;
+  const bool report = rtcp_step > 0 && sample >= next_report_;
+  const auto ntp = [&](std::int64_t at) {
+    return to_ntp(wall_start_ + std::chrono::duration_cast<std::chrono::system_clock::duration>(
+                                    samples_to_duration(at, sample_rate_)));
+  };
+  for (auto& r : rtp_) {
+    if (frame_ < s.units.size()) r->send_animation(s.units[frame_], ec), ++packets;
+    const auto step = static_cast<std::int64_t>(r->audio_instants_per_packet(sample_rate_, 1));
+    for (std::int64_t at = static_cast<std::int64_t>(audio_sent_); !ec && at < upto; at += step, ++packets) {
+      const std::int64_t count = std::min(step, upto - at);
+      r->send_audio(std::span(s.spoken.audio.samples).subspan(static_cast<std::size_t>(at), static_cast<std::size_t>(count)),
+                    1, offset_ + at, at == 0, ec);
+    }
+    if (!ec && report) r->send_reports(sample, ntp(sample), false, ec);
+    if (ec) break;
+  }
+  if (report) next_report_ = sample + rtcp_step;
+  audio_sent_ = static_cast<std::size_t>(upto);
+
+  // Live clients: one message with the frame's weights and the audio shown with it.
+  std::size_t messages = 0;
+  const auto& clients = ctx_.clients();
+  if (!clients.empty()) {
+    std::vector<float> weights(static_cast<std::size_t>(s.spoken.weights.cols()));
+    for (Eigen::Index c = 0; c < s.spoken.weights.cols(); ++c)
+      weights[static_cast<std::size_t>(c)] = s.spoken.weights(static_cast<Eigen::Index>(frame_), c);
+    auto message = std::make_shared<std::string>();
+    encode_live_frame(weights,
+                      std::span(s.spoken.audio.samples).subspan(static_cast<std::size_t>(here), static_cast<std::size_t>(upto - here)),
+                      number_, sample, frames_sent_, frame_ == 0, *message);
+    for (const auto& c : clients) c->send(message, true), ++messages;
+  }
+  ++frames_sent_;
+  ++frame_;
+  if (ctx_.on_frame) ctx_.on_frame(woke - deadline_, packets, messages);
+  if (frames_sent_ == 1) {
+    first_frame_latency_ = Clock::now() - started_at_;
+    if (ctx_.on_first_frame) ctx_.on_first_frame();
+  }
+  if (ec) return end(SessionState::kFailed, "rtp-send: " + ec.message());
+  if (frame_ < frames) return schedule();
+  ++sentences_spoken_;
+  if (current_->index + 1 >= sentences_.size()) return end(SessionState::kDone, "done");
+  if (next_) {
+    PreparedSentence n = std::move(*next_);
+    next_.reset();
+    begin_sentence(std::move(n));
+    return schedule();
+  }
+  waiting_for_next_ = true;  // the next sentence is still being synthesised: on_prepared resumes
+  if (!job_in_flight_) submit(current_->index + 1);
+}
+
+void LiveSession::stop(const std::string& reason) { end(SessionState::kStopped, reason); }
+
+void LiveSession::end(SessionState state, const std::string& reason) {
+  if (!active() && state_ != SessionState::kQueued) return;
+  timer_.cancel();
+  if (state_ == SessionState::kSpeaking) {
+    // A closing report so that receivers have counts for the whole session.
+    const std::int64_t last = current_ ? offset_ + std::min<std::int64_t>(static_cast<std::int64_t>(audio_sent_),
+                                                                         current_->spoken.audio.instants())
+                                       : 0;
+    std::error_code ignored;
+    const auto ntp = to_ntp(wall_start_ + std::chrono::duration_cast<std::chrono::system_clock::duration>(
+                                              samples_to_duration(last, sample_rate_)));
+    for (auto& r : rtp_) r->send_reports(last, ntp, true, ignored);
+    broadcast(dump({{"type", "end"}, {"session", number_}, {"id", id_}, {"reason", reason}}));
+  }
+  state_ = state;
+  reason_ = reason;
+  current_.reset();
+  next_.reset();
+  if (ctx_.on_end) {
+    auto on_end = std::move(ctx_.on_end);
+    ctx_.on_end = nullptr;
+    on_end();
+  }
+}
+
+void LiveSession::broadcast(const std::string& text) const {
+  const auto& clients = ctx_.clients();
+  if (clients.empty()) return;
+  const auto message = std::make_shared<const std::string>(text);
+  for (const auto& c : clients) c->send(message, false);
+}
+
+std::string LiveSession::session_message() const {
+  json expression = json::array();
+  for (const Expression e : all_expressions()) {
+    double w = 0;
+    if (request_.expression) {
+      if (request_.expression->first.expression == e) w += request_.expression->first.intensity / 63.0;
+      if (request_.expression->second && request_.expression->second->expression == e)
+        w += request_.expression->second->intensity / 63.0;
+    }
+    expression.push_back(std::min(w, 1.0));
+  }
+  return dump({{"type", "session"},
+               {"session", number_},
+               {"id", id_},
+               {"channel", request_.channel},
+               {"voice", request_.voice},
+               {"sample_rate", sample_rate_.hz},
+               {"fps", static_cast<double>(ctx_.rate.numerator) / ctx_.rate.denominator},
+               {"components", speaker_ ? speaker_->components() : 0},
+               {"expression_weights", expression},
+               {"sentences", sentences_.size()}});
+}
+
+std::string LiveSession::sentence_message(const PreparedSentence& s) const {
+  json phones = json::array();
+  for (const TimedPhone& p : s.spoken.phones)
+    phones.push_back({std::string(arpabet(p.phone)), offset_ + p.start_sample, offset_ + p.end_sample});
+  return dump({{"type", "sentence"},
+               {"session", number_},
+               {"index", s.index},
+               {"sample", offset_},
+               {"samples", s.spoken.audio.instants()},
+               {"frames", s.spoken.faps.frames.size()},
+               {"text", s.text},
+               {"phones", phones}});
+}
+
+void LiveSession::greet(LiveClient& client) const {
+  if (state_ != SessionState::kSpeaking || !current_) return;
+  client.send(std::make_shared<const std::string>(session_message()), false);
+  client.send(std::make_shared<const std::string>(sentence_message(*current_)), false);
+}
+
+nlohmann::json LiveSession::status() const {
+  json j = {{"session", id_},
+            {"state", session_state_name(state_)},
+            {"channel", request_.channel},
+            {"voice", request_.voice},
+            {"sentences", sentences_.size()},
+            {"sentences_spoken", sentences_spoken_},
+            {"frames_sent", frames_sent_},
+            {"rtp_destinations", rtp_.size()}};
+  if (!reason_.empty()) j["reason"] = reason_;
+  if (frames_sent_ > 0) {
+    j["first_frame_ms"] = std::chrono::duration<double, std::milli>(first_frame_latency_).count();
+    j["first_sentence_speech_ms"] = std::chrono::duration<double, std::milli>(first_speech_time_).count();
+    j["first_sentence_animation_ms"] = std::chrono::duration<double, std::milli>(first_animation_time_).count();
+  }
+  return j;
+}
+
+}  // namespace fapcast

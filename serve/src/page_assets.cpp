@@ -1,0 +1,53 @@
+#include "page_assets.hpp"
+
+#include "fapcast/codec/gltf_export.hpp"
+#include "fapcast/core/file_io.hpp"
+#include "fapcast/face/face_model.hpp"
+#include "fapcast/face/facial_expression.hpp"
+#include "fapcast/render/mesh_export.hpp"
+#include "fapcast/synthesis/speech_expression.hpp"
+
+#include <stdexcept>
+
+namespace fapcast {
+
+std::optional<std::string> face_glb(const Voice& voice, const std::string& name) {
+  const FaceModel& face = ict_face_model();
+  if (voice.dimension() != 3 * face.vertex_count()) return std::nullopt;
+  SpeechBasis basis = speech_basis(voice);
+  const Eigen::Index k = basis.components.rows();
+  basis.components.conservativeResize(k + static_cast<Eigen::Index>(kExpressionCount), Eigen::NoChange);
+  Eigen::Index row = k;
+  for (const Expression e : all_expressions()) {
+    basis.components.row(row++) = expression_direction_m(voice, face, {{e, kMaxExpressionIntensity}, std::nullopt});
+    basis.names.emplace_back(expression_name(e));
+  }
+  const MorphAnimation animation = morph_animation_from_speech(
+      basis, face.faces, Eigen::MatrixXf(0, basis.components.rows()), {25, 1}, "fapcast serve: " + name);
+  return write_glb(animation);
+}
+
+PageAssets load_page_assets(const std::filesystem::path& three_dir) {
+  PageAssets a;
+  a.page_html = std::string(embedded_page_html());
+  a.page_script = std::string(embedded_page_script());
+  const std::string hint = " (the avatar page's three.js: Debian package libjs-three, or --three-dir)";
+  std::error_code ec;
+  if (!std::filesystem::is_directory(three_dir, ec))
+    throw std::runtime_error(three_dir.string() + ": not a folder" + hint);
+  std::size_t total = 0;
+  for (auto it = std::filesystem::recursive_directory_iterator(three_dir, ec); !ec && it != std::filesystem::end(it);
+       it.increment(ec)) {
+    if (!it->is_regular_file(ec)) continue;
+    const std::string rel = std::filesystem::relative(it->path(), three_dir).generic_string();
+    std::string bytes = read_file(it->path(), kMaxThreeBytes);
+    total += bytes.size();
+    if (total > kMaxThreeBytes)
+      throw std::runtime_error(three_dir.string() + ": more than " + std::to_string(kMaxThreeBytes) + " bytes" + hint);
+    a.three.emplace(rel, std::move(bytes));
+  }
+  if (ec) throw std::runtime_error(three_dir.string() + ": " + ec.message() + hint);
+  return a;
+}
+
+}  // namespace fapcast

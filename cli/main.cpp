@@ -20,7 +20,7 @@ namespace {
 
 // The commands in pipeline order, as --help lists them: recording and aligning speech, making a
 // voice, speaking with it, measuring it, faces, the file formats, looking at a mesh, the network.
-constexpr std::array<std::string_view, 22> kCommandOrder{
+constexpr std::array<std::string_view, 23> kCommandOrder{
     "corpus script", "corpus record-reference",                       // the recording (paper 3.2)
     "align",                                                          // recorded speech's phones
     "voice build",   "voice info", "voice default", "voice adapt",    // the voice (3.3-3.6, 3.9)
@@ -29,7 +29,7 @@ constexpr std::array<std::string_view, 22> kCommandOrder{
     "adapt",         "expressions",                                   // faces (3.9)
     "fap",           "encode",      "decode",        "export",        // the file formats
     "render",                                                         // looking at a .glb
-    "stream",        "recv"};                                         // the network
+    "stream",        "recv",        "serve"};                         // the network
 
 std::map<std::string, AddCommand, std::less<>>& registry() {
   static std::map<std::string, AddCommand, std::less<>> commands;

@@ -6,6 +6,16 @@
 
 namespace fapcast {
 
+std::string redacted_target(std::string_view target) {
+  std::string out(target);
+  for (std::size_t at = out.find("token="); at != std::string::npos; at = out.find("token=", at + 1)) {
+    if (at != 0 && out[at - 1] != '?' && out[at - 1] != '&') continue;
+    const std::size_t end = out.find('&', at);
+    out.replace(at + 6, (end == std::string::npos ? out.size() : end) - at - 6, "-");
+  }
+  return out;
+}
+
 HttpResponse make_response(http::status status, std::string body, std::string_view content_type, unsigned version) {
   HttpResponse res{status, version};
   res.set(http::field::server, "fapcast");
@@ -61,7 +71,7 @@ void HttpConnection::on_head(beast::error_code ec) {
                   "Content-Length exceeds the limit of " + std::to_string(max_body_) + " bytes");
   if (ec) return refuse(http::status::bad_request, "http-malformed", ec.message());
   const auto& head = parser_->get();
-  request_line_ = std::string(head.method_string()) + " " + std::string(head.target().substr(0, 200));
+  request_line_ = std::string(head.method_string()) + " " + redacted_target(std::string_view(head.target().data(), head.target().size()).substr(0, 200));
   stream_.expires_after(request_timeout_);
   bool upgrade = false;
   if (auto refusal = handler_.on_head(*this, head, upgrade)) {

@@ -66,6 +66,9 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
   bool keep_alive_ = false, close_after_ = false, released_ = false, closed_ = false, first_ = true;
 };
 
+// The target as logged: the value of a ?token= parameter replaced by "-" (a secret stays out of logs).
+std::string redacted_target(std::string_view target);
+
 // A response with a JSON (or other) body and the headers every answer carries.
 HttpResponse make_response(http::status status, std::string body, std::string_view content_type, unsigned version);
 

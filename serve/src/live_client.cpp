@@ -102,6 +102,11 @@ void LiveClient::close(websocket::close_code code, const std::string& reason) {
   write_next();
 }
 
+void LiveClient::abort() {
+  beast::error_code ignored;
+  beast::get_lowest_layer(ws_).socket().close(ignored);
+}
+
 void LiveClient::finish(const std::string& why) {
   if (finished_) return;
   finished_ = true;

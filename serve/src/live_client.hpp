@@ -29,6 +29,8 @@ class LiveClient : public std::enable_shared_from_this<LiveClient> {
   void send(std::shared_ptr<const std::string> message, bool binary);
   // Closes with `code` and `reason` (after the write in progress).
   void close(websocket::close_code code, const std::string& reason);
+  // Closes the socket now (the end of a shutdown that waited long enough).
+  void abort();
 
   const std::string& channel() const { return channel_; }
   const std::string& peer() const { return peer_; }

@@ -38,9 +38,11 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   State(asio::io_context& io, ServeConfig config, ServeVoices voices, std::function<void(std::string_view)> log);
   ~State();
 
+  void bind();  // after construction (needs weak_from_this for nothing; binds and starts accepting)
   void accept();
   void stop();
   ServeStats snapshot() const;
+  void refresh_gauges();
 
   // HTTP
   std::optional<HttpResponse> on_head(HttpConnection& conn, const http::request_header<>& head, bool& upgrade);
@@ -49,6 +51,7 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   HttpResponse json_response(http::status status, const nlohmann::json& body, unsigned version) const;
   HttpResponse refusal(const RequestError& e, unsigned version);
   void open_live(HttpConnection& conn, const http::request_header<>& head, const std::string& channel);
+  void answer_say(const std::string& id, http::status status, const nlohmann::json& body);
 
   // Sessions and channels
   void session_ended(const std::shared_ptr<LiveSession>& session);
@@ -71,7 +74,7 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   ServeVoices voices;  // before the worker: jobs read them until it is joined
   std::function<void(std::string_view)> log;
   BearerToken token;
-  OriginPolicy origins;
+  std::optional<OriginPolicy> origins;  // once the port is known
   NetworkPolicy rtp_networks;
   std::optional<SrtpMasterKey> default_srtp_key;
   PageAssets assets;
@@ -82,6 +85,8 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
 
   std::map<std::string, Channel> channels;
   std::map<std::string, std::shared_ptr<LiveSession>> sessions;  // queued and active
+  std::map<std::string, std::pair<std::shared_ptr<HttpConnection>, unsigned>> awaiting;  // say answers not yet sent (holds the connection)
+  std::vector<std::string> languages;                            // espeak-ng's installed language codes
   std::deque<nlohmann::json> finished;                           // the last 256 ended sessions
   std::unordered_map<HttpConnection*, std::weak_ptr<HttpConnection>> connections;
   std::size_t clients_open = 0;  // accepted upgrades not yet closed
@@ -89,6 +94,7 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   std::uint32_t session_numbers = 0;
   std::mt19937_64 ids{std::random_device{}()};
   bool stopping = false;
+  asio::steady_timer stop_timer;  // closes the sockets of live clients that do not finish closing
 
   mutable std::mutex stats_mutex;
   ServeStats stats;

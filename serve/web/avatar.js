@@ -3,7 +3,7 @@
 // weights and the audio played while it is shown; the audio is scheduled on the AudioContext's
 // clock a jitter buffer ahead, and at every animation frame the page shows the frame whose audio
 // is playing then. The page measures how far apart the two are (window.fapcastStats).
-import * as THREE from '/three/build/three.module.js';
+import * as THREE from '/three/three.module.js';
 import {GLTFLoader} from '/three/examples/jsm/loaders/GLTFLoader.js';
 
 const JITTER_FRAMES = 3;  // the audio starts this many frames after the first frame arrives
@@ -192,25 +192,24 @@ function render(now) {
   ++stats.animation_frames;
   if (session && !holding) {
     const t = audioTimeAt(now), frames = session.frames, half = 0.5 / session.fps;
-    if (holds.length) {
-      const f = frameAt(frames, holds[0]);
-      if (f && f.when <= t) {
-        holding = f;
-        show(f);
-        stats.held = {sample: holds[0], frame: f.index, frame_sample: f.sample};
+    const held = holds.length && frameAt(frames, holds[0]);
+    if (held && held.when <= t) {
+      holding = held;
+      show(held);
+      stats.held = {sample: holds[0], frame: held.index, frame_sample: held.sample};
+    } else if (!session.played) {
+      while (frames.length > 1 && frames[0].end < t - KEEP_SECONDS) frames.shift();
+      let shown = null;  // the frame whose start is nearest: offsets within half a frame when all is well
+      for (const f of frames) if (f.when <= t + half) shown = f;
+      if (shown && t <= shown.end + half) {
+        show(shown);
+        record(1000 * (t - shown.when));
+      } else if (session.ended && frames.length && t > frames[frames.length - 1].end) {
+        applyWeights(new Float32Array(face ? face.targets.length : 0));
+        session.played = true;  // kept for the test hook until the next session
+        ++stats.sessions_ended;
+        lastShown = null;
       }
-    }
-    while (frames.length > 1 && frames[0].end < t - KEEP_SECONDS) frames.shift();
-    let shown = null;  // the frame whose start is nearest: offsets within half a frame when all is well
-    for (const f of frames) if (f.when <= t + half) shown = f;
-    if (!holding && shown && t <= shown.end + half) {
-      show(shown);
-      record(1000 * (t - shown.when));
-    } else if (!holding && session.ended && frames.length && t > frames[frames.length - 1].end) {
-      applyWeights(new Float32Array(face ? face.targets.length : 0));
-      session = null;
-      ++stats.sessions_ended;
-      stats.state = 'ready';
     }
   }
   renderer.render(scene, camera);
@@ -220,12 +219,17 @@ let lastShown = null;
 function show(frame) {
   if (frame === lastShown) return;
   lastShown = frame;
-  const w = new Float32Array(face ? face.targets.length : 0);
-  w.set(frame.weights.subarray(0, Math.min(session.components || frame.weights.length, w.length)));
-  session.expression.forEach((e, i) => { if (session.components + i < w.length) w[session.components + i] = e; });
   const t0 = performance.now();
-  applyWeights(w);
+  applyWeights(targetWeights(frame));
   stats.morph_ms = performance.now() - t0;
+}
+
+// All targets' weights for a frame: its k PCA weights, then the session's expression weights.
+function targetWeights(frame) {
+  const w = new Float32Array(face ? face.targets.length : 0);
+  w.set(frame.weights.subarray(0, Math.min(session.components, w.length)));
+  session.expression.forEach((e, i) => { if (session.components + i < w.length) w[session.components + i] = e; });
+  return w;
 }
 
 function record(ms) {
@@ -259,7 +263,20 @@ document.getElementById('say').addEventListener('submit', async (e) => {
 // Test hooks: freeze the face at the frames holding these samples (in order), read the mouth box.
 window.fapcastTest = {
   hold(samples) { holds = samples.slice(); },
-  release() { holding = null; holds.shift(); stats.held = null; },
+  release() {
+    holding = null;
+    holds.shift();
+    stats.held = null;
+    if (session && session.played) applyWeights(new Float32Array(face.targets.length));
+    lastShown = null;
+  },
+  // Per frame kept: the distance (m) between two vertices, e.g. the inner lip midpoints.
+  distances(a, b) {
+    return session ? session.frames.map((f) => {
+      const w = targetWeights(f), at = (v, c) => w.reduce((sum, x, t) => sum + x * face.targets[t][3 * v + c], face.base[3 * v + c]);
+      return {index: f.index, sample: f.sample, distance: Math.hypot(...[0, 1, 2].map((c) => at(a, c) - at(b, c)))};
+    }) : [];
+  },
   // Screen box (CSS pixels) of these vertices at rest (the voice's mean face) or as now shown.
   box(vertices, atRest) {
     const p = atRest ? new THREE.BufferAttribute(face.base, 3) : face.mesh.geometry.attributes.position;

@@ -69,7 +69,7 @@ const ICT_PARTS = [  // [first vertex, colour]
   [23021, [0.90, 0.90, 0.88]],   // right sclera
   [23791, [0.20, 0.20, 0.20]],   // right iris
   [24591, [0.85, 0.62, 0.52]],   // lacrimal fluid, eye blend and occlusion (hidden)
-  [25351, [0.00, 0.00, 0.00]],   // eyelashes
+  [25351, [0.10, 0.07, 0.05]],   // eyelashes
 ];
 function colours(count) {
   const c = new Float32Array(3 * count);

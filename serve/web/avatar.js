@@ -31,7 +31,7 @@ const key = new THREE.DirectionalLight(0xffffff, 0.8);
 key.position.set(0.3, 0.5, 1);
 scene.add(key);
 const camera = new THREE.PerspectiveCamera(20, 1, 0.01, 10);
-let face = null;  // {mesh, base: Float32Array, targets: [Float32Array], weights: Float32Array}
+let face = null;  // {mesh, base: Float32Array, targets: [Float32Array]}
 
 async function loadFace() {
   const res = await fetch('/v1/face.glb', {headers: {Authorization: 'Bearer ' + token}});
@@ -49,7 +49,7 @@ async function loadFace() {
   if (geometry.attributes.position.count === ICT_VERTICES) hideOverlays(geometry);
   geometry.computeVertexNormals();
   scene.add(gltf.scene);
-  face = {mesh, base: geometry.attributes.position.array.slice(), targets, weights: new Float32Array(targets.length)};
+  face = {mesh, base: geometry.attributes.position.array.slice(), targets};
   frameTheFace();
 }
 

@@ -181,16 +181,16 @@ const [v, c] = ['vowel', 'closure'].map((n) => shots.find((s) => s.name === n));
 for (const s of [v, c])
   console.log(`${s.name}: frame ${s.index} (sample ${s.sample}, /${s.phone}/), inner lips ${(1000 * s.distance).toFixed(1)} mm ` +
               `apart; mouth box ${s.width} x ${s.height} px, ${s.dark} dark pixels (${(100 * s.dark / s.pixels).toFixed(1)} %)`);
-console.log(`offset (face shown - audio played): mean ${stats.offset_ms.mean.toFixed(1)} ms, ` +
-            `min ${stats.offset_ms.min.toFixed(1)}, max ${stats.offset_ms.max.toFixed(1)} over ${stats.offset_ms.count} displays; ` +
-            `frames received ${stats.frames_received}, late ${stats.late_frames}, jitter buffer ${stats.jitter_frames} frames`);
+const o = stats.offset_ms, ms = (x) => (x === null ? 'none' : x.toFixed(1));  // JSON has no Infinity
+console.log(`offset (face shown - audio played): mean ${ms(o.mean)} ms, min ${ms(o.min)}, max ${ms(o.max)} over ${o.count} ` +
+            `displays; frames received ${stats.frames_received}, late ${stats.late_frames}, jitter buffer ${stats.jitter_frames} frames`);
 check(v.pixels >= 100, `the mouth box is at least 100 pixels (${v.pixels})`);
 check(v.dark >= 0.05 * v.pixels, `the mouth is open at the vowel: >= 5 % of its box dark (${v.dark} of ${v.pixels})`);
 check(c.dark <= 0.4 * v.dark, `the lips are closed at the closure: <= 40 % of the vowel's dark pixels (${c.dark} vs ${v.dark})`);
 const frameMs = 1000 / stats.fps;
-check(stats.offset_ms.count >= 10, `the face was shown with its audio at least 10 times (${stats.offset_ms.count})`);
-check(stats.offset_ms.min >= -frameMs && stats.offset_ms.max <= frameMs,
-      `the audio/face offset stays within one frame (±${frameMs} ms): ${stats.offset_ms.min.toFixed(1)}..${stats.offset_ms.max.toFixed(1)} ms`);
+check(o.count >= 10, `the face was shown with its audio at least 10 times (${o.count})`);
+check(o.count > 0 && o.min >= -frameMs && o.max <= frameMs,
+      `the audio/face offset stays within one frame (±${frameMs} ms): ${ms(o.min)}..${ms(o.max)} ms`);
 check(stats.frames_received === sentence.frames, `every frame arrived (${stats.frames_received} of ${sentence.frames})`);
 if (args.picture) fs.copyFileSync(path.join(args.out, 'vowel.png'), args.picture);
 fs.writeFileSync(path.join(args.out, 'result.json'), JSON.stringify({shots, stats, sentence}, null, 1));

@@ -257,7 +257,7 @@ document.getElementById('say').addEventListener('submit', async (e) => {
     'Content-Type': 'application/json'}, body: JSON.stringify({text: document.getElementById('text').value, channel})});
   const answer = await res.json().catch(() => ({}));
   statusLine.textContent = res.ok ? 'session ' + answer.session + ' started' :
-    'POST /v1/say: HTTP ' + res.status + ' ' + (answer.error || answer.message || '');
+    'POST /v1/say: HTTP ' + res.status + ' ' + (answer.error || answer.reason || '') + (answer.detail ? ': ' + answer.detail : '');
 });
 
 // Test hooks: freeze the face at the frames holding these samples (in order), read the mouth box.

@@ -1,10 +1,11 @@
 // The avatar page of `fapcast serve` in headless Chromium (spec/serve.md, "The avatar page"):
-// starts the server on port 0, opens the page, speaks a sentence through the page's own text box,
-// freezes the face at the middle of its longest vowel and of its longest bilabial closure (the
-// page's test hook), screenshots both and counts the dark pixels (the open mouth's cavity) in the
-// mouth's box, projected from the lip landmarks of spec/markers.tsv. Asserts the mouth is open at
-// the vowel and closed at the closure, and that the page's measured audio/face offset stays within
-// one frame. Chromium is driven over the DevTools protocol on a pipe (no port, no npm package).
+// builds a small SYNTHETIC voice, starts the server on port 0, opens the page, speaks a sentence
+// through the page's own form, holds the face (the page's test hook) on the longest vowel's most
+// open frame and on the bilabials' most closed one, screenshots both and counts the dark pixels
+// (the open mouth's cavity) in the mouth's box, projected from the lip landmarks of
+// spec/markers.tsv. Asserts the mouth is open at the vowel and closed at the closure, and that the
+// page's measured audio/face offset stays within one frame. Chromium is driven over the DevTools
+// protocol on a pipe (no port, no npm package).
 //
 // node avatar_page_test.mjs --fapcast EXE --chromium EXE --markers spec/markers.tsv --out DIR
 //                           [--picture FILE]   (also write the vowel's screenshot there)
@@ -30,6 +31,7 @@ fs.rmSync(args.out, {recursive: true, force: true});
 fs.mkdirSync(args.out, {recursive: true});
 
 const children = [];
+let stopping = false;  // set when the test stops the server and Chromium itself
 const failures = [];
 const elapsed = () => ((Date.now() - started) / 1000).toFixed(1) + ' s';
 function check(ok, what) {
@@ -73,7 +75,6 @@ children.push(server);
 const serverLog = fs.createWriteStream(path.join(args.out, 'serve.log'));
 server.stderr.pipe(serverLog);
 server.on('exit', (code, signal) => { if (!stopping) abort(`fapcast serve exited (${code ?? signal}): see ${args.out}/serve.log`); });
-let stopping = false;
 const base = await new Promise((resolve) => {
   readline.createInterface({input: server.stdout}).once('line', (line) => resolve(line.trim()));
 });

@@ -17,7 +17,7 @@ const statsLine = document.getElementById('stats');
 const stats = window.fapcastStats = {
   state: 'loading', error: null, jitter_frames: JITTER_FRAMES, session: null, sample_rate: 0, fps: 0,
   sentences: [], frames_received: 0, late_frames: 0, sessions_ended: 0, animation_frames: 0, morph_ms: 0,
-  offset_ms: {count: 0, mean: 0, min: Infinity, max: -Infinity}, held: null,
+  offset_ms: {count: 0, mean: 0, min: Infinity, max: -Infinity}, offsets: [], held: null,
 };
 const fail = (what) => { stats.error = String(what); statusLine.textContent = 'error: ' + stats.error; };
 
@@ -190,6 +190,7 @@ function render(now) {
   requestAnimationFrame(render);
   resize();
   ++stats.animation_frames;
+  let measured = null;
   if (session && !holding) {
     const t = audioTimeAt(now), frames = session.frames, half = 0.5 / session.fps;
     const held = holds.length && frameAt(frames, holds[0]);
@@ -203,7 +204,7 @@ function render(now) {
       for (const f of frames) if (f.when <= t + half) shown = f;
       if (shown && t <= shown.end + half) {
         show(shown);
-        record(1000 * (t - shown.when));
+        measured = shown;
       } else if (session.ended && frames.length && t > frames[frames.length - 1].end) {
         applyWeights(new Float32Array(face ? face.targets.length : 0));
         session.played = true;  // kept for the test hook until the next session
@@ -213,6 +214,7 @@ function render(now) {
     }
   }
   renderer.render(scene, camera);
+  if (measured) record(measured, now);
 }
 
 let lastShown = null;
@@ -232,7 +234,14 @@ function targetWeights(frame) {
   return w;
 }
 
-function record(ms) {
+// The audio/face offset of a shown frame, measured apart from the choice of the frame: with the
+// output timestamp read afresh, the instant of the audio leaving the output at the time the frame
+// was drawn for (the animation frame's time), minus the instant of the frame's first sample.
+function record(frame, drawnFor) {
+  const ts = audio.getOutputTimestamp();
+  if (!ts.performanceTime) return;  // no output yet: nothing to measure against
+  const ms = 1000 * (ts.contextTime + (drawnFor - ts.performanceTime) / 1000 - frame.when);
+  if (stats.offsets.length < 10000) stats.offsets.push(+ms.toFixed(2));
   const o = stats.offset_ms;
   o.mean += (ms - o.mean) / ++o.count;
   o.min = Math.min(o.min, ms);

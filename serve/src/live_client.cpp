@@ -5,13 +5,16 @@
 namespace fapcast {
 
 LiveClient::LiveClient(beast::tcp_stream stream, std::string channel, std::string peer, std::size_t queue_limit,
-                       Hooks hooks)
+                       std::size_t send_buffer, Hooks hooks)
     : ws_(std::move(stream)),
       channel_(std::move(channel)),
       peer_(std::move(peer)),
       limit_(queue_limit),
       hooks_(std::move(hooks)),
-      close_timer_(ws_.get_executor()) {}
+      close_timer_(ws_.get_executor()) {
+  beast::error_code ignored;
+  beast::get_lowest_layer(ws_).socket().set_option(asio::socket_base::send_buffer_size(static_cast<int>(send_buffer)), ignored);
+}
 
 void LiveClient::accept(http::request<http::empty_body> request) {
   beast::get_lowest_layer(ws_).expires_never();  // the WebSocket's own timeouts from here on
@@ -90,8 +93,8 @@ void LiveClient::close(websocket::close_code code, const std::string& reason) {
   close_reason_ = websocket::close_reason(code, reason.substr(0, 120));  // a close reason is at most 123 bytes
   if (!open_) return finish(reason);
   if (writing_) {
-    // The write in progress may be stuck on a peer that does not read: give it 2 s.
-    close_timer_.expires_after(std::chrono::seconds(2));
+    // The write in progress may be stuck on a peer that does not read: give it 1 s.
+    close_timer_.expires_after(std::chrono::seconds(1));
     close_timer_.async_wait([self = shared_from_this()](beast::error_code ec) {
       if (ec) return;
       beast::error_code ignored;

@@ -3,7 +3,7 @@
 // outgoing messages wait in a queue of at most ServeLimits::client_queue_frames; a client that
 // lets it fill (a slow network, a stalled tab) is dropped with the close reason
 // "slow-client: ..." rather than buffered for. Writes are one at a time (Beast's rule); a
-// close waits for the write in progress, and a write that does not finish in 2 s closes the
+// close waits for the write in progress, and a write that does not finish in 1 s closes the
 // socket under it.
 #include "beast.hpp"
 
@@ -20,7 +20,10 @@ class LiveClient : public std::enable_shared_from_this<LiveClient> {
     std::function<void(LiveClient&)> on_open;   // accepted: greet it, add it to its channel
     std::function<void(LiveClient&, const std::string& why)> on_close;  // gone (once)
   };
-  LiveClient(beast::tcp_stream stream, std::string channel, std::string peer, std::size_t queue_limit, Hooks hooks);
+  // `send_buffer`: the socket's SO_SNDBUF (fixed, so that the kernel cannot grow what it holds
+  // for a client that does not read).
+  LiveClient(beast::tcp_stream stream, std::string channel, std::string peer, std::size_t queue_limit,
+             std::size_t send_buffer, Hooks hooks);
 
   // Completes the upgrade of `request` (already authenticated): answers "fapcast.v1" when the
   // client offers it.

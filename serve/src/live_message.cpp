@@ -4,7 +4,6 @@
 #include <cstring>
 
 namespace fapcast {
-static_assert(std::endian::native == std::endian::little, "live frames are written as the host lays them out: little-endian");
 namespace {
 static_assert(std::endian::native == std::endian::little, "the live frame is written in host order");
 

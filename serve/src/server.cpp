@@ -473,7 +473,7 @@ void Server::State::open_live(HttpConnection& conn, const http::request_header<>
     });
   };
   auto client = std::make_shared<LiveClient>(std::move(stream), channel, peer, config.limits.client_queue_frames,
-                                             std::move(hooks));
+                                             config.limits.client_send_buffer_bytes, std::move(hooks));
   log_line(peer + " \"" + line + "\" 101 live client of channel '" + channel + "'");
   client->accept(std::move(request));
 }

@@ -25,6 +25,7 @@ struct ServeLimits {
   std::size_t max_connections = 512;          // open TCP connections, HTTP and WebSocket (503)
   std::size_t max_rtp_destinations = 4;       // udp:// destinations of one request
   std::size_t client_queue_frames = 25;       // frames waiting for one live client before it is dropped
+  std::size_t client_send_buffer_bytes = 64 * 1024;  // SO_SNDBUF of a live client's socket: what the kernel holds for it
   std::chrono::milliseconds request_timeout{10'000};  // to read one request, headers and body
   std::chrono::milliseconds idle_timeout{30'000};     // a kept-alive connection with nothing to do
 };

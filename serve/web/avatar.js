@@ -112,13 +112,14 @@ function applyWeights(weights) {
 
 // --- The live stream: frames scheduled on the audio clock.
 const audio = new AudioContext({latencyHint: 'interactive'});
-let session = null;  // {number, rate, fps, components, expression, frames: [], anchor: {time, sample}}
+let session = null;  // the latest: {number, rate, fps, components, expression, anchor: {time, sample}, ended}
+let frames = [];     // every session's frames, in playing order: {session, index, sample, samples, when, end, weights}
 
 function onText(message) {
   const m = JSON.parse(message);
   if (m.type === 'session') {
     session = {number: m.session, rate: m.sample_rate, fps: m.fps, components: m.components,
-               expression: m.expression_weights || [], frames: [], anchor: null, ended: false};
+               expression: m.expression_weights || [], anchor: null, ended: false, played: false};
     Object.assign(stats, {state: 'speaking', session: m.session, sample_rate: m.sample_rate, fps: m.fps});
     statusLine.textContent = 'speaking (session ' + m.id + ')';
   } else if (m.type === 'sentence' && session && m.session === session.number) {
@@ -141,7 +142,8 @@ function onFrame(bytes) {
   let when = session.anchor && session.anchor.time + (sample - session.anchor.sample) / session.rate;
   if (!session.anchor || when < audio.currentTime + 0.005) {  // first frame, or too late: start again
     if (session.anchor) ++stats.late_frames;
-    session.anchor = {time: audio.currentTime + lead, sample};
+    const previous = frames.length ? frames[frames.length - 1].end : 0;  // after the last session's sound
+    session.anchor = {time: Math.max(audio.currentTime + lead, previous), sample};
     when = session.anchor.time;
   }
   if (n > 0) {
@@ -152,7 +154,8 @@ function onFrame(bytes) {
     source.connect(audio.destination);
     source.start(when);
   }
-  session.frames.push({index: v.getUint32(20, true), sample, samples: n, when, end: when + n / session.rate, weights});
+  frames.push({session: session.number, index: v.getUint32(20, true), sample, samples: n, when,
+               end: when + Math.max(n, 1) / session.rate, weights: targetWeights(weights)});
 }
 
 function connect() {
@@ -182,8 +185,8 @@ const KEEP_SECONDS = 5;  // frames kept after their audio played (for the test h
 let holds = [];  // samples to freeze at (test hook)
 let holding = null;
 
-function frameAt(frames, sample) {
-  return frames.find((f) => f.sample <= sample && sample < f.sample + Math.max(f.samples, 1));
+function frameAt(sample) {
+  return frames.find((f) => f.session === session.number && f.sample <= sample && sample < f.sample + Math.max(f.samples, 1));
 }
 
 function render(now) {
@@ -191,30 +194,34 @@ function render(now) {
   resize();
   ++stats.animation_frames;
   let measured = null;
-  if (session && !holding) {
-    const t = audioTimeAt(now), frames = session.frames, half = 0.5 / session.fps;
-    const held = holds.length && frameAt(frames, holds[0]);
+  if (frames.length && !holding) {
+    const t = audioTimeAt(now), last = frames[frames.length - 1];
+    const held = holds.length && frameAt(holds[0]);
     if (held && held.when <= t) {
       holding = held;
       show(held);
       stats.held = {sample: holds[0], frame: held.index, frame_sample: held.sample};
-    } else if (!session.played) {
+    } else if (t <= last.end + 0.5 * (last.end - last.when)) {
       while (frames.length > 1 && frames[0].end < t - KEEP_SECONDS) frames.shift();
       let shown = null;  // the frame whose start is nearest: offsets within half a frame when all is well
-      for (const f of frames) if (f.when <= t + half) shown = f;
-      if (shown && t <= shown.end + half) {
+      for (const f of frames) if (f.when <= t + 0.5 * (f.end - f.when)) shown = f;
+      if (shown && t <= shown.end + 0.5 * (shown.end - shown.when)) {
         show(shown);
         measured = shown;
-      } else if (session.ended && frames.length && t > frames[frames.length - 1].end) {
-        applyWeights(new Float32Array(face ? face.targets.length : 0));
-        session.played = true;  // kept for the test hook until the next session
-        ++stats.sessions_ended;
-        lastShown = null;
       }
+    } else if (session.ended && !session.played && last.session === session.number) {
+      rest();
+      session.played = true;  // its frames are kept for the test hook until the next session
+      ++stats.sessions_ended;
     }
   }
   renderer.render(scene, camera);
   if (measured) record(measured, now);
+}
+
+function rest() {
+  applyWeights(new Float32Array(face ? face.targets.length : 0));
+  lastShown = null;
 }
 
 let lastShown = null;
@@ -222,14 +229,14 @@ function show(frame) {
   if (frame === lastShown) return;
   lastShown = frame;
   const t0 = performance.now();
-  applyWeights(targetWeights(frame));
+  applyWeights(frame.weights);
   stats.morph_ms = performance.now() - t0;
 }
 
 // All targets' weights for a frame: its k PCA weights, then the session's expression weights.
-function targetWeights(frame) {
+function targetWeights(weights) {
   const w = new Float32Array(face ? face.targets.length : 0);
-  w.set(frame.weights.subarray(0, Math.min(session.components, w.length)));
+  w.set(weights.subarray(0, Math.min(session.components, w.length)));
   session.expression.forEach((e, i) => { if (session.components + i < w.length) w[session.components + i] = e; });
   return w;
 }
@@ -276,15 +283,15 @@ window.fapcastTest = {
     holding = null;
     holds.shift();
     stats.held = null;
-    if (session && session.played) applyWeights(new Float32Array(face.targets.length));
+    if (session && session.played) rest();
     lastShown = null;
   },
   // Per frame kept: the distance (m) between two vertices, e.g. the inner lip midpoints.
   distances(a, b) {
-    return session ? session.frames.map((f) => {
-      const w = targetWeights(f), at = (v, c) => w.reduce((sum, x, t) => sum + x * face.targets[t][3 * v + c], face.base[3 * v + c]);
+    return frames.filter((f) => session && f.session === session.number).map((f) => {
+      const w = f.weights, at = (v, c) => w.reduce((sum, x, t) => sum + x * face.targets[t][3 * v + c], face.base[3 * v + c]);
       return {index: f.index, sample: f.sample, distance: Math.hypot(...[0, 1, 2].map((c) => at(a, c) - at(b, c)))};
-    }) : [];
+    });
   },
   // Screen box (CSS pixels) of these vertices at rest (the voice's mean face) or as now shown.
   box(vertices, atRest) {

@@ -16,7 +16,7 @@ const statsLine = document.getElementById('stats');
 // What the page measured; tests read it (tests/browser/avatar_page_test.mjs).
 const stats = window.fapcastStats = {
   state: 'loading', error: null, jitter_frames: JITTER_FRAMES, session: null, sample_rate: 0, fps: 0,
-  sentences: [], frames_received: 0, late_frames: 0, sessions_ended: 0, animation_frames: 0, morph_ms: 0,
+  sentences: [], frames_received: 0, late_frames: 0, sessions_played: 0, animation_frames: 0, morph_ms: 0,
   offset_ms: {count: 0, mean: 0, min: Infinity, max: -Infinity}, offsets: [], held: null,
 };
 const fail = (what) => { stats.error = String(what); statusLine.textContent = 'error: ' + stats.error; };
@@ -119,13 +119,14 @@ function onText(message) {
   const m = JSON.parse(message);
   if (m.type === 'session') {
     session = {number: m.session, rate: m.sample_rate, fps: m.fps, components: m.components,
-               expression: m.expression_weights || [], anchor: null, ended: false, played: false};
+               expression: m.expression_weights || [], anchor: null};
     Object.assign(stats, {state: 'speaking', session: m.session, sample_rate: m.sample_rate, fps: m.fps});
     statusLine.textContent = 'speaking (session ' + m.id + ')';
   } else if (m.type === 'sentence' && session && m.session === session.number) {
     stats.sentences.push({index: m.index, text: m.text, sample: m.sample, samples: m.samples, frames: m.frames, phones: m.phones});
   } else if (m.type === 'end' && session && m.session === session.number) {
-    session.ended = true;
+    const last = frames[frames.length - 1];
+    if (last && last.session === m.session) last.final = true;  // the session's sound ends with it
     statusLine.textContent = 'session ' + m.id + ': ' + m.reason;
   }
 }
@@ -207,13 +208,13 @@ function render(now) {
       for (const f of frames) if (f.when <= t + 0.5 * (f.end - f.when)) shown = f;
       if (shown && t <= shown.end + 0.5 * (shown.end - shown.when)) {
         show(shown);
-        measured = shown;
+        if (t < shown.end) measured = shown;  // past its end it is only the last one, kept up
       }
-    } else if (session.ended && !session.played && last.session === session.number) {
-      rest();
-      session.played = true;  // its frames are kept for the test hook until the next session
-      ++stats.sessions_ended;
+    } else if (last.final && lastShown) {
+      rest();  // the frames are kept for the test hook until they are 5 s old
+      stats.state = 'ready';
     }
+    for (const f of frames) if (f.final && !f.played && t > f.end) f.played = ++stats.sessions_played;
   }
   renderer.render(scene, camera);
   if (measured) record(measured, now);
@@ -283,7 +284,8 @@ window.fapcastTest = {
     holding = null;
     holds.shift();
     stats.held = null;
-    if (session && session.played) rest();
+    const last = frames[frames.length - 1];
+    if (last && last.final && audioTimeAt(performance.now()) > last.end) rest();
     lastShown = null;
   },
   // Per frame kept: the distance (m) between two vertices, e.g. the inner lip midpoints.

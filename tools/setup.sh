@@ -67,7 +67,8 @@ test_packages=(
   sox                   # writes WAV variants the reader must accept (tests/core/wav_audio_test)
   xz-utils              # xz -9, the size baseline of the FBA benchmark (tests/bench/fba_bench)
   gzip                  # gzip -9, the other baseline there (Essential in Debian; listed for clarity)
-  chromium              # headless Chromium renders an avatar the rig outputs drive (tests/cli/rig_cli_test)
+  chromium              # headless Chromium renders an avatar the rig outputs drive (tests/cli/rig_cli_test), and
+                        # plays `fapcast serve`'s avatar page over the DevTools pipe (tests/browser)
   liblo-tools           # liblo's oscdump decodes the live VMC stream (tests/cli/rig_cli_test)
 )
 

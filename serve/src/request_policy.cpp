@@ -92,6 +92,7 @@ RouteMatch match_route(http::verb method, std::string_view target) {
       m.token = std::string(value);
       return true;
     }
+    if (m.route == Route::kPage) return true;  // the page's own parameters (channel): the script reads them
     if (m.route == Route::kLive && name == "channel" && valid_name(value)) {
       m.channel = std::string(value);
       return true;

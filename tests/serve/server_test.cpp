@@ -62,6 +62,10 @@ TEST(ServeAuth, TokenAsQueryParameterOnGetAndRedactedInTheLog) {
   const Answer js = http_request(port(), http::verb::get, std::string("/three/examples/loader.js?token=") + kToken, {}, {});
   EXPECT_EQ(js.status, 200);
   EXPECT_EQ(js.body, "// a loader\n");
+  // A symbolic link is served under its own path too (GLTFLoader imports build/three.module.js).
+  const Answer linked = http_request(port(), http::verb::get, std::string("/three/build/three.module.js?token=") + kToken, {}, {});
+  EXPECT_EQ(linked.status, 200);
+  EXPECT_EQ(linked.body, "export const REVISION = 'test';\n");
   for (const std::string& line : shared_server().log_lines()) EXPECT_EQ(line.find(kToken), std::string::npos) << line;
   // Not on a POST: a form could carry it there.
   const Answer p = http_request(port(), http::verb::post, std::string("/v1/say?token=") + kToken, "{\"text\":\"hi\"}", {});

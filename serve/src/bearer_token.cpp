@@ -51,6 +51,12 @@ BearerToken::BearerToken(std::string_view text, const std::string& source) {
 }
 
 BearerToken BearerToken::from_file(const std::filesystem::path& path) {
+  // A file longer than a token and its line end breaks the token rule (not a read failure).
+  std::error_code ec;
+  if (const auto size = std::filesystem::file_size(path, ec); !ec && size > kMaxTokenLength + 2)
+    throw InputError({path.string(), std::nullopt, kMaxTokenLength}, "serve-token",
+                     std::to_string(size) + " bytes; a token file holds one token of " + std::to_string(kMinTokenLength) +
+                         ".." + std::to_string(kMaxTokenLength) + " characters and its line end");
   std::string text = read_file(path, kMaxTokenLength + 3);
   if (!text.empty() && text.back() == '\n') text.pop_back();
   if (!text.empty() && text.back() == '\r') text.pop_back();

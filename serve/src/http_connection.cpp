@@ -147,6 +147,7 @@ void HttpConnection::read_body() {
 
 void HttpConnection::refuse(http::status status, const std::string& rule, const std::string& detail) {
   close_after_ = true;
+  if (handler_.on_refused) handler_.on_refused(static_cast<int>(status));
   respond(make_response(status, request_error_body(RequestError(static_cast<int>(status), rule, detail)),
                         "application/json", 11),
           rule);

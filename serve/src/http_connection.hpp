@@ -26,6 +26,8 @@ struct HttpHandler {
   // After the body: the handler answers through respond(), now or later.
   std::function<void(HttpConnection&, HttpRequest request)> on_request;
   std::function<void(const std::string& line)> log;
+  // A request the connection refuses itself (431, 413, 400 http-malformed): its status, to count.
+  std::function<void(int status)> on_refused;
   std::function<void(HttpConnection&)> on_closed;
 };
 

@@ -68,6 +68,9 @@ SayRequest parse_say_request(std::string_view body, const SayLimits& limits) {
   } catch (const json::parse_error& e) {
     throw bad("json-malformed", "byte " + std::to_string(e.byte == 0 ? 0 : e.byte - 1) + ": " +
                                     std::string(e.what()).substr(std::string(e.what()).find(':') + 2));
+  } catch (const json::out_of_range& e) {
+    // A number beyond double's range ("1e999"): nlohmann reports it without a position.
+    throw bad("json-malformed", std::string(e.what()).substr(std::string(e.what()).find(']') + 2));
   }
   if (!j.is_object()) throw bad("json-not-object", "the body must be a JSON object");
   SayRequest r;

@@ -96,6 +96,9 @@ std::optional<ListenAddress> parse_listen_address(std::string_view text) {
   const auto [end, ec] = std::from_chars(port.data(), port.data() + port.size(), value);
   if (port.empty() || ec != std::errc() || end != port.data() + port.size() || value > 65535 || out.host.empty())
     return std::nullopt;
+  // A host is a name or an address: no brackets (but around IPv6), blanks or control characters.
+  for (const char ch : out.host)
+    if (ch == '[' || ch == ']' || static_cast<unsigned char>(ch) <= ' ' || ch == '\x7f') return std::nullopt;
   out.port = static_cast<std::uint16_t>(value);
   return out;
 }
@@ -108,6 +111,9 @@ void apply_serve_config(std::string_view json_text, const std::string& source, c
   } catch (const json::parse_error& e) {
     throw InputError({source, line_of(json_text, e.byte == 0 ? 0 : e.byte - 1), std::nullopt}, "serve-config-json",
                      e.what());
+  } catch (const json::out_of_range& e) {
+    // A number beyond double's range ("1e999"): nlohmann reports it without a position.
+    throw InputError({source, std::nullopt, std::nullopt}, "serve-config-json", e.what());
   }
   const Reader r{source, base_dir};
   if (!j.is_object()) r.fail("the file", "a JSON object");

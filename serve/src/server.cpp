@@ -131,6 +131,9 @@ void Server::State::accept() {
       handler.log = [weak](const std::string& line) {
         if (auto s = weak.lock()) s->log_line(line);
       };
+      handler.on_refused = [weak](int status) {
+        if (auto s = weak.lock()) s->count([status](ServeStats& st) { ++(status == 400 ? st.bad_requests : st.over_limits); });
+      };
       handler.on_closed = [weak](HttpConnection& c) {
         if (auto s = weak.lock()) {
           s->connections.erase(&c);

@@ -36,6 +36,7 @@ run_packages=(
   pocketsphinx-en-us    # its US English acoustic model and pronouncing dictionary
   libsamplerate0-dev    # recorded speech resampled to the model's 16 kHz
   libsrtp2-dev          # SRTP/SRTCP of the RTP transport (stream/recv --srtp-key-file)
+  libjs-three           # three.js and its GLTFLoader: the avatar page `fapcast serve` serves (and tests/viewer)
 )
 
 # tests/viewer's npm packages (three.js, @pixiv/three-vrm, three-vrm-animation, node-osc), exactly as
@@ -61,7 +62,6 @@ test_packages=(
   libexpat1-dev         # reads back the mouth cues' XML (tests/cues)
   python3               # the layer check (tools/check-layers.py, CTest layers.check)
   nodejs                # runs three.js's GLTFLoader on fapcast's .glb (tests/viewer)
-  libjs-three           # three.js r111 and its GLTFLoader (tests/viewer)
   blender               # the BVH export's cross-check by Blender's importer (tests/codec/bvh_blender_test)
   tshark                # dissects captured RTP/RTCP on loopback (tests/transport/loopback_test)
   sox                   # writes WAV variants the reader must accept (tests/core/wav_audio_test)

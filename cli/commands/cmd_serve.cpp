@@ -38,7 +38,11 @@ void run_serve(const ServeArgs& a, const CLI::App& cmd) {
   if (!a.config.empty()) read_serve_config(a.config, config);
   if (!a.listen.empty()) {
     const auto address = parse_listen_address(a.listen);
-    if (!address) throw cli::UsageError("serve: --listen '" + a.listen + "': expected HOST:PORT, [IPv6]:PORT or :PORT");
+    boost::system::error_code numeric;
+    if (address) (void)asio::ip::make_address(address->host, numeric);
+    if (!address || numeric)
+      throw cli::UsageError("serve: --listen '" + a.listen +
+                            "': expected ADDRESS:PORT, [IPv6]:PORT or :PORT with a numeric IP address (names are not resolved)");
     config.host = address->host;
     config.port = address->port;
   }
@@ -70,6 +74,11 @@ void run_serve(const ServeArgs& a, const CLI::App& cmd) {
 
   asio::io_context io;
   std::unique_ptr<Server> server;
+  // Before the server exists: a SIGTERM right after the URL is read ends it cleanly, not by signal.
+  boost::asio::signal_set signals(io, SIGINT, SIGTERM);
+  signals.async_wait([&](const boost::system::error_code& ec, int) {
+    if (!ec && server) server->stop();
+  });
   try {
     server = std::make_unique<Server>(io, std::move(config), std::move(voices), [](std::string_view line) {
       std::cerr << line << '\n';
@@ -78,10 +87,6 @@ void run_serve(const ServeArgs& a, const CLI::App& cmd) {
     throw cli::UsageError(std::string("serve: ") + e.what());
   }
   std::cout << server->url() << std::endl;  // the first line: tests and scripts read it
-  boost::asio::signal_set signals(io, SIGINT, SIGTERM);
-  signals.async_wait([&](const boost::system::error_code& ec, int) {
-    if (!ec) server->stop();
-  });
   io.run();
   signals.cancel();
   server.reset();

@@ -2,9 +2,50 @@
 
 #include "fapcast/serve/request_error.hpp"
 
+#include <array>
 #include <sstream>
 
 namespace fapcast {
+namespace {
+
+constexpr std::size_t kLingerBytes = 1024 * 1024;
+constexpr std::chrono::seconds kLingerTime{1};
+
+struct Lingering : std::enable_shared_from_this<Lingering> {
+  explicit Lingering(tcp::socket s) : socket(std::move(s)), timer(socket.get_executor()) {}
+  void start() {
+    beast::error_code ignored;
+    socket.shutdown(tcp::socket::shutdown_send, ignored);
+    timer.expires_after(kLingerTime);
+    timer.async_wait([self = shared_from_this()](beast::error_code ec) {
+      if (!ec) self->finish();
+    });
+    read();
+  }
+  void read() {
+    socket.async_read_some(asio::buffer(scratch), [self = shared_from_this()](beast::error_code ec, std::size_t n) {
+      self->discarded += n;
+      if (ec || self->discarded >= kLingerBytes) return self->finish();
+      self->read();
+    });
+  }
+  void finish() {
+    beast::error_code ignored;
+    timer.cancel();
+    socket.close(ignored);
+  }
+  tcp::socket socket;
+  asio::steady_timer timer;
+  std::array<char, 16 * 1024> scratch{};
+  std::size_t discarded = 0;
+};
+
+}  // namespace
+
+void linger_close(tcp::socket socket) {
+  if (!socket.is_open()) return;
+  std::make_shared<Lingering>(std::move(socket))->start();
+}
 
 std::string redacted_target(std::string_view target) {
   std::string out(target);
@@ -116,6 +157,9 @@ void HttpConnection::respond(HttpResponse response, const std::string& note) {
   if (closed_ || released_) return;
   response.keep_alive(keep_alive_ && !close_after_);
   response_ = std::make_shared<HttpResponse>(std::move(response));
+  // A deferred answer (202 once speaking has started) comes after the head's deadline: the
+  // answer gets a deadline of its own.
+  stream_.expires_after(request_timeout_);
   if (handler_.log) {
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - request_start_).count();
     std::ostringstream line;
@@ -128,9 +172,11 @@ void HttpConnection::respond(HttpResponse response, const std::string& note) {
   }
   http::async_write(stream_, *response_, [self = shared_from_this()](beast::error_code ec, std::size_t) {
     self->response_.reset();
-    if (ec || self->close_after_ || !self->keep_alive_) {
-      beast::error_code ignored;
-      self->stream_.socket().shutdown(tcp::socket::shutdown_send, ignored);
+    if (ec) return self->done();
+    if (self->close_after_ || !self->keep_alive_) {
+      // The peer may still be sending a body that was not read (a refusal on the head).
+      self->stream_.expires_never();
+      linger_close(self->stream_.release_socket());
       return self->done();
     }
     self->read_head();

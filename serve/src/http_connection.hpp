@@ -68,6 +68,12 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
   bool keep_alive_ = false, close_after_ = false, released_ = false, closed_ = false, first_ = true;
 };
 
+// Closes a socket whose peer may still be sending (a refusal before the body was read): shuts
+// down the sending side, then reads and discards what arrives until the peer closes, 1 MiB or
+// 1 s, whichever comes first, and only then closes. Closing with unread data would make the
+// kernel reset the connection, and a client then reports "connection reset" instead of the answer.
+void linger_close(tcp::socket socket);
+
 // The target as logged: the value of a ?token= parameter replaced by "-" (a secret stays out of logs).
 std::string redacted_target(std::string_view target);
 

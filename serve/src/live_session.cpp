@@ -10,6 +10,7 @@
 #include "fapcast/transport/timeline.hpp"
 
 #include <algorithm>
+#include <sstream>
 
 namespace fapcast {
 namespace {
@@ -32,13 +33,13 @@ std::string_view session_state_name(SessionState state) {
 }
 
 LiveSession::LiveSession(SessionContext context, std::string id, std::uint32_t number, SayRequest request,
-                         std::vector<std::unique_ptr<RtpSender>> rtp, std::shared_ptr<const Speaker> speaker)
+                         std::vector<RtpDestination> rtp, std::shared_ptr<const Speaker> speaker)
     : ctx_(std::move(context)),
       id_(std::move(id)),
       number_(number),
       request_(std::move(request)),
       sentences_(sentence_offsets(request_, ctx_.sentence_bytes)),
-      rtp_(std::move(rtp)),
+      destinations_(std::move(rtp)),
       speaker_(std::move(speaker)),
       encoder_(std::make_shared<FbaFrameEncoder>(FbaEncoderOptions{}, ctx_.rate)),
       timer_(ctx_.io) {}
@@ -47,6 +48,18 @@ void LiveSession::start() {
   if (state_ != SessionState::kQueued) return;
   state_ = SessionState::kStarting;
   started_at_ = Clock::now();
+  try {
+    for (RtpDestination& d : destinations_) rtp_.push_back(std::make_unique<RtpSender>(ctx_.io, d.endpoint, std::move(d.options), true));
+  } catch (const std::exception& e) {
+    // Not from inside start(): the server's caller may be iterating over the channel.
+    rtp_.clear();
+    asio::post(ctx_.io, [self = shared_from_this(), why = std::string(e.what())]() {
+      if (self->state_ != SessionState::kStarting) return;
+      if (self->ctx_.on_start_failed) self->ctx_.on_start_failed(500, "rtp-socket", why);
+      self->end(SessionState::kFailed, "rtp-socket: " + why);
+    });
+    return;
+  }
   submit(0);
 }
 
@@ -62,10 +75,11 @@ void LiveSession::submit(std::size_t index) {
   settings.rate = ctx_.rate;
   settings.expression = request_.expression;
   settings.name = "fapcast serve";
-  ctx_.worker.submit(index == 0, [weak = weak_from_this(), io = &ctx_.io, voice = &ctx_.voice, speaker = speaker_,
+  ctx_.worker.submit(index == 0, [weak = weak_from_this(), cancelled = cancelled_, counted = ctx_.on_synthesised, io = &ctx_.io, voice = &ctx_.voice, speaker = speaker_,
                                   encoder = encoder_, settings = std::move(settings),
                                   source = "voice '" + ctx_.voice_name + "'", index,
                                   text = request_.text.substr(from, to - from)]() mutable {
+    if (cancelled->load() || weak.expired()) return;  // the session ended while the job waited
     PreparedSentence p;
     p.index = index;
     p.text = std::move(text);
@@ -73,6 +87,7 @@ void LiveSession::submit(std::size_t index) {
       if (!speaker) speaker = std::make_shared<const Speaker>(*voice, settings, source);
       p.speaker = speaker;
       p.spoken = speaker->speak(p.text);
+      if (counted) counted();
       const SampleRate rate_hz = p.spoken.audio.sample_rate;
       FbaAccessUnit au;
       p.units.reserve(p.spoken.faps.frames.size());
@@ -100,7 +115,7 @@ void LiveSession::on_prepared(PreparedSentence p) {
     p.error = "sentence " + std::to_string(p.index + 1) + " came at another audio rate";
   if (!p.error.empty()) {
     const std::string why = "synthesis-failed: sentence " + std::to_string(p.index + 1) + ": " + p.error;
-    if (state_ == SessionState::kStarting && ctx_.on_start_failed) ctx_.on_start_failed(why);
+    if (state_ == SessionState::kStarting && ctx_.on_start_failed) ctx_.on_start_failed(422, "synthesis-failed", why);
     end(SessionState::kFailed, why);
     return;
   }
@@ -162,7 +177,6 @@ void LiveSession::tick() {
   // RTP: the frame's access unit, then the audio until the next frame's sample, then a sender
   // report when one is due.
   std::size_t packets = 0;
-  std::error_code ec;
   const std::int64_t rtcp_step = sample_rate_.hz * ctx_.rtcp_interval.count() / 1000;
   const bool report = rtcp_step > 0 && sample >= next_report_;
   const auto ntp = [&](std::int64_t at) {
@@ -170,6 +184,7 @@ void LiveSession::tick() {
                                     samples_to_duration(at, sample_rate_)));
   };
   for (auto& r : rtp_) {
+    std::error_code ec;
     if (frame_ < s.units.size()) r->send_animation(s.units[frame_], ec), ++packets;
     const auto step = static_cast<std::int64_t>(r->audio_instants_per_packet(sample_rate_, 1));
     for (std::int64_t at = static_cast<std::int64_t>(audio_sent_); !ec && at < upto; at += step, ++packets) {
@@ -178,8 +193,16 @@ void LiveSession::tick() {
                     1, offset_ + at, at == 0, ec);
     }
     if (!ec && report) r->send_reports(sample, ntp(sample), false, ec);
-    if (ec) break;
+    if (ec) {
+      // One destination that cannot be reached does not end the session for the others.
+      std::ostringstream where;
+      where << r->destination() << ": " << ec.message();
+      rtp_dropped_.push_back(where.str());
+      r.reset();
+    }
   }
+  if (const std::size_t dropped = static_cast<std::size_t>(std::erase(rtp_, nullptr)); dropped > 0 && ctx_.on_rtp_dropped)
+    ctx_.on_rtp_dropped(dropped);
   if (report) next_report_ = sample + rtcp_step;
   audio_sent_ = static_cast<std::size_t>(upto);
 
@@ -203,7 +226,6 @@ void LiveSession::tick() {
     first_frame_latency_ = Clock::now() - started_at_;
     if (ctx_.on_first_frame) ctx_.on_first_frame();
   }
-  if (ec) return end(SessionState::kFailed, "rtp-send: " + ec.message());
   if (frame_ < frames) return schedule();
   ++sentences_spoken_;
   if (current_->index + 1 >= sentences_.size()) return end(SessionState::kDone, "done");
@@ -221,6 +243,7 @@ void LiveSession::stop(const std::string& reason) { end(SessionState::kStopped, 
 
 void LiveSession::end(SessionState state, const std::string& reason) {
   if (!active() && state_ != SessionState::kQueued) return;
+  cancelled_->store(true);
   timer_.cancel();
   if (state_ == SessionState::kSpeaking) {
     // A closing report so that receivers have counts for the whole session.
@@ -235,6 +258,7 @@ void LiveSession::end(SessionState state, const std::string& reason) {
   }
   state_ = state;
   reason_ = reason;
+  rtp_.clear();  // its sockets close now, not when the record of the session goes
   current_.reset();
   next_.reset();
   if (ctx_.on_end) {
@@ -302,7 +326,8 @@ nlohmann::json LiveSession::status() const {
             {"sentences", sentences_.size()},
             {"sentences_spoken", sentences_spoken_},
             {"frames_sent", frames_sent_},
-            {"rtp_destinations", rtp_.size()}};
+            {"rtp_destinations", destinations_.size()}};
+  if (!rtp_dropped_.empty()) j["rtp_dropped"] = rtp_dropped_;
   if (!reason_.empty()) j["reason"] = reason_;
   if (frames_sent_ > 0) {
     j["first_frame_ms"] = std::chrono::duration<double, std::milli>(first_frame_latency_).count();

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <functional>
 #include <memory>
@@ -39,6 +40,13 @@ struct PreparedSentence {
   std::string error;  // non-empty: synthesis refused the sentence
 };
 
+// Where a session sends RTP: its sockets are opened when it starts speaking, not while it waits
+// in a queue (a full queue would otherwise hold thousands of descriptors).
+struct RtpDestination {
+  udp::endpoint endpoint;
+  RtpSenderOptions options;
+};
+
 // What a session needs from the server, and tells it.
 struct SessionContext {
   asio::io_context& io;
@@ -51,16 +59,20 @@ struct SessionContext {
   // The channel's live clients, now.
   std::function<const std::vector<std::shared_ptr<LiveClient>>&()> clients;
   std::function<void(std::chrono::nanoseconds late, std::size_t rtp_packets, std::size_t messages)> on_frame;
-  std::function<void(const std::string& error)> on_start_failed;  // before the first frame
+  // Before the first frame: the answer's status, rule and detail.
+  std::function<void(int status, const std::string& rule, const std::string& detail)> on_start_failed;
   std::function<void()> on_first_frame;
   std::function<void()> on_end;  // done, stopped or failed: once
+  // To count: a sentence synthesised (called on the synthesis thread), RTP destinations dropped.
+  std::function<void()> on_synthesised;
+  std::function<void(std::size_t count)> on_rtp_dropped;
 };
 
 class LiveSession : public std::enable_shared_from_this<LiveSession> {
  public:
   // `speaker` null: one is made for the request's expression on the first synthesis job.
   LiveSession(SessionContext context, std::string id, std::uint32_t number, SayRequest request,
-              std::vector<std::unique_ptr<RtpSender>> rtp, std::shared_ptr<const Speaker> speaker);
+              std::vector<RtpDestination> rtp, std::shared_ptr<const Speaker> speaker);
 
   // Queued -> starting: the first sentence goes to the synthesis threads.
   void start();
@@ -97,7 +109,12 @@ class LiveSession : public std::enable_shared_from_this<LiveSession> {
   std::uint32_t number_;
   SayRequest request_;
   std::vector<std::size_t> sentences_;  // byte offsets of the sentences in request_.text (sentence_offsets)
-  std::vector<std::unique_ptr<RtpSender>> rtp_;
+  std::vector<RtpDestination> destinations_;
+  std::vector<std::unique_ptr<RtpSender>> rtp_;  // opened by start(); a sender that fails to send is dropped
+  std::vector<std::string> rtp_dropped_;          // "ADDRESS:PORT: why" of each dropped sender
+  // Set when the session ends: a synthesis job not yet begun is skipped (a barge-in storm
+  // leaves no work behind it).
+  std::shared_ptr<std::atomic<bool>> cancelled_ = std::make_shared<std::atomic<bool>>(false);
   std::shared_ptr<const Speaker> speaker_;
   std::shared_ptr<FbaFrameEncoder> encoder_;  // used by one synthesis job at a time
   SessionState state_ = SessionState::kQueued;

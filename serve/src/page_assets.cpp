@@ -7,6 +7,7 @@
 #include "fapcast/render/mesh_export.hpp"
 #include "fapcast/synthesis/speech_expression.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace fapcast {
@@ -36,10 +37,22 @@ PageAssets load_page_assets(const std::filesystem::path& three_dir) {
   if (!std::filesystem::is_directory(three_dir, ec))
     throw std::runtime_error(three_dir.string() + ": not a folder" + hint);
   std::size_t total = 0;
+  const std::filesystem::path root = std::filesystem::weakly_canonical(three_dir, ec);
+  const auto inside = [&](const std::filesystem::path& p) {
+    std::error_code e;
+    const std::filesystem::path target = std::filesystem::canonical(p, e);
+    if (e) return false;
+    const auto [r, t] = std::mismatch(root.begin(), root.end(), target.begin(), target.end());
+    return r == root.end();
+  };
   for (auto it = std::filesystem::recursive_directory_iterator(three_dir, ec); !ec && it != std::filesystem::end(it);
        it.increment(ec)) {
+    // A symbolic link to a file inside the folder is served under its own path too: Debian's
+    // build/three.module.js (what GLTFLoader imports) is a link to ../three.module.js.
     if (!it->is_regular_file(ec)) continue;
-    const std::string rel = std::filesystem::relative(it->path(), three_dir).generic_string();
+    if (it->is_symlink(ec) && !inside(it->path())) continue;
+    // Lexically: relative() would resolve the link and name the file it points to.
+    const std::string rel = it->path().lexically_relative(three_dir).generic_string();
     std::string bytes = read_file(it->path(), kMaxThreeBytes);
     total += bytes.size();
     if (total > kMaxThreeBytes)

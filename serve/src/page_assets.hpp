@@ -24,7 +24,8 @@ struct PageAssets {
   std::map<std::string, std::optional<std::string>> face_glb;
 };
 
-// Reads every regular file under `three_dir` (at most kMaxThreeBytes in all). Throws
+// Reads every regular file under `three_dir` (at most kMaxThreeBytes in all), and every symbolic
+// link to a file inside it under the link's own path. Throws
 // std::runtime_error naming the folder when it is missing or too big, or a file that cannot be read.
 inline constexpr std::size_t kMaxThreeBytes = 64u << 20;
 PageAssets load_page_assets(const std::filesystem::path& three_dir);

@@ -37,7 +37,16 @@ bool valid_language_code(std::string_view code) {
 std::vector<std::size_t> sentence_offsets(const SayRequest& request, std::size_t max_bytes) {
   if (request.text.find_first_not_of(" \t\r\n") == std::string::npos) return {};
   if (request.ssml) return {0};
-  return chunk_offsets(request.text, max_bytes);
+  // A piece that is only white space (a run of it longer than the piece size) would give the
+  // synthesiser nothing to say: it is dropped, its white space left on the piece before it.
+  const std::vector<std::size_t> all = chunk_offsets(request.text, max_bytes);
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const std::size_t end = i + 1 < all.size() ? all[i + 1] : request.text.size();
+    const std::string_view piece = std::string_view(request.text).substr(all[i], end - all[i]);
+    if (piece.find_first_not_of(" \t\r\n") != std::string_view::npos) kept.push_back(all[i]);
+  }
+  return kept;
 }
 
 bool valid_name(std::string_view name) {

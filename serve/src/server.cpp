@@ -46,6 +46,7 @@ Server::State::State(asio::io_context& io_, ServeConfig config_, ServeVoices voi
       token(BearerToken::from_file(config.token_file)),
       rtp_networks(config.rtp_networks),
       acceptor(io),
+      accept_timer(io),
       stop_timer(io) {
   if (voices.empty()) throw std::invalid_argument("fapcast serve: no voice to speak with");
   if (!voices.contains("default")) throw std::invalid_argument("fapcast serve: no voice named 'default'");
@@ -88,7 +89,37 @@ void Server::State::accept() {
   acceptor.async_accept([weak = weak_from_this()](boost::system::error_code ec, tcp::socket socket) {
     auto self = weak.lock();
     if (!self || self->stopping) return;
-    if (!ec) {
+    if (ec == asio::error::operation_aborted) return;
+    if (ec) {
+      // Out of descriptors (EMFILE) and the like: try again shortly rather than at once, which
+      // would spin the network thread while the condition lasts.
+      self->log_line(std::string("fapcast serve: accept: ") + ec.message());
+      self->accept_timer.expires_after(std::chrono::milliseconds(100));
+      self->accept_timer.async_wait([weak](boost::system::error_code e) {
+        auto s = weak.lock();
+        if (s && !e && !s->stopping) s->accept();
+      });
+      return;
+    }
+    if (self->connections.size() + self->clients_open >= self->config.limits.max_connections) {
+      // Over the cap: a canned answer, no connection state.
+      const RequestError e(503, "too-many-connections",
+                           "more than " + std::to_string(self->config.limits.max_connections) + " open connections");
+      HttpResponse res = self->refusal(e, 11);
+      res.keep_alive(false);
+      const std::string wire = [&] {
+        std::ostringstream out;
+        out << res;
+        return out.str();
+      }();
+      boost::system::error_code ignored;
+      socket.non_blocking(true, ignored);
+      asio::write(socket, asio::buffer(wire), ignored);  // a few hundred bytes into an empty send buffer
+      self->log_line("? \"-\" 503 too-many-connections");
+      linger_close(std::move(socket));
+      return self->accept();
+    }
+    {
       HttpHandler handler;
       handler.on_head = [weak](HttpConnection& c, const http::request_header<>& head, bool& upgrade) -> std::optional<HttpResponse> {
         if (auto s = weak.lock()) return s->on_head(c, head, upgrade);
@@ -115,8 +146,6 @@ void Server::State::accept() {
       self->connections.emplace(conn.get(), conn);
       self->refresh_gauges();
       conn->start();
-    } else if (ec == asio::error::operation_aborted) {
-      return;
     }
     self->accept();
   });
@@ -156,6 +185,8 @@ json Server::State::stats_json() const {
           {"sessions_done", s.sessions_done},
           {"sessions_stopped", s.sessions_stopped},
           {"sessions_failed", s.sessions_failed},
+          {"sentences_synthesised", s.sentences_synthesised},
+          {"rtp_destinations_dropped", s.rtp_destinations_dropped},
           {"sessions_speaking", s.sessions_speaking},
           {"sessions_queued", s.sessions_queued},
           {"clients", s.clients},
@@ -193,9 +224,6 @@ std::optional<HttpResponse> Server::State::on_head(HttpConnection& conn, const h
   const unsigned v = head.version();
   try {
     if (stopping) throw RequestError(503, "shutting-down", "the server is stopping");
-    if (connections.size() + clients_open > config.limits.max_connections)
-      throw RequestError(503, "too-many-connections",
-                         "more than " + std::to_string(config.limits.max_connections) + " open connections");
     const std::string_view target(head.target().data(), head.target().size());
     const RouteMatch route = match_route(head.method(), target);
     // The token first: nothing about the server (not even which paths exist) is told to a
@@ -223,6 +251,8 @@ std::optional<HttpResponse> Server::State::on_head(HttpConnection& conn, const h
     return std::nullopt;
   } catch (const RequestError& e) {
     return refusal(e, v);
+  } catch (const std::exception& e) {
+    return internal_error(conn, e, v);
   }
 }
 
@@ -269,6 +299,24 @@ void Server::State::on_request(HttpConnection& conn, HttpRequest request) {
     throw RequestError(404, "not-found", "no such resource");
   } catch (const RequestError& e) {
     conn.respond(refusal(e, v), e.rule());
+  } catch (const std::exception& e) {
+    conn.respond(internal_error(conn, e, v), "internal");
+  }
+}
+
+HttpResponse Server::State::internal_error(HttpConnection& conn, const std::exception& e, unsigned version) {
+  // A bug or an exhausted resource while handling one request: that request gets a 500, the
+  // server goes on (an exception escaping io.run() would end it).
+  log_line(conn.peer() + " \"" + conn.request_line() + "\" internal error: " + e.what());
+  return refusal(RequestError(500, "internal", "the server could not handle this request (its log says why)"), version);
+}
+
+RtpStreamIds Server::State::unique_srtp_ids() {
+  // RFC 3711 section 9.1: under one master key every SSRC must be distinct (the keystream
+  // depends on the SSRC and the packet index only).
+  for (;;) {
+    RtpStreamIds ids = RtpStreamIds::random();
+    if (srtp_ssrcs.insert(ids.ssrc).second) return ids;
   }
 }
 
@@ -301,27 +349,30 @@ void Server::State::say(HttpConnection& conn, const HttpRequest& request) {
     throw RequestError(403, "srtp-required", "this server sends RTP as SRTP only");
   if (sessions.size() >= config.limits.max_sessions)
     throw RequestError(503, "too-many-sessions", "at most " + std::to_string(config.limits.max_sessions) + " sessions");
-  Channel& channel = channels[r.channel];
-  if (!r.interrupt && channel.speaking && channel.queue.size() >= config.limits.max_queue)
-    throw RequestError(429, "queue-full", "channel '" + r.channel + "' has " + std::to_string(channel.queue.size()) +
+  const auto found = channels.find(r.channel);
+  Channel* const existing = found == channels.end() ? nullptr : &found->second;
+  if (!r.interrupt && existing && existing->speaking && existing->queue.size() >= config.limits.max_queue)
+    throw RequestError(429, "queue-full", "channel '" + r.channel + "' has " + std::to_string(existing->queue.size()) +
                                               " sessions waiting (limit " + std::to_string(config.limits.max_queue) + ")");
-  std::vector<std::unique_ptr<RtpSender>> senders;
+  std::vector<RtpDestination> planned;
   for (const udp::endpoint& d : destinations) {
-    RtpSenderOptions options;
-    if (srtp) options.srtp = default_srtp_key;
-    if (d.address().is_multicast()) options.socket.ttl = config.multicast_ttl;
-    try {
-      senders.push_back(std::make_unique<RtpSender>(io, d, options, true));
-    } catch (const std::system_error& e) {
-      throw RequestError(500, "rtp-socket", e.what());
+    RtpDestination p{d, {}};
+    if (srtp) {
+      p.options.srtp = default_srtp_key;
+      p.options.animation_ids = unique_srtp_ids();
+      p.options.audio_ids = unique_srtp_ids();
     }
+    if (d.address().is_multicast()) p.options.socket.ttl = config.multicast_ttl;
+    planned.push_back(std::move(p));
   }
-  if (r.interrupt) {
+  if (r.interrupt && existing) {
+    Channel& channel = *existing;
     // Barge-in: what the channel is saying stops, and what waits is dropped.
     auto queue = std::move(channel.queue);
     channel.queue.clear();
+    const std::shared_ptr<LiveSession> speaking = channel.speaking;  // the stops may forget the channel
     for (auto& q : queue) q->stop("interrupted");
-    if (channel.speaking) channel.speaking->stop("interrupted");
+    if (speaking) speaking->stop("interrupted");
   }
   Channel& ready = channels[r.channel];  // the stops may have forgotten the channel
   const std::string id = new_session_id();
@@ -329,7 +380,7 @@ void Server::State::say(HttpConnection& conn, const HttpRequest& request) {
   const bool plain = r.lang == "en-us" && !r.ssml && !r.expression;
   std::shared_ptr<const Speaker> speaker = plain ? speakers.at(r.voice) : nullptr;
   std::weak_ptr<State> weak = weak_from_this();
-  SessionContext ctx{io, *worker, voices.at(r.voice), r.voice, config.rate, config.rtcp_interval, config.sentence_bytes, {}, {}, {}, {}, {}};
+  SessionContext ctx{io, *worker, voices.at(r.voice), r.voice, config.rate, config.rtcp_interval, config.sentence_bytes, {}, {}, {}, {}, {}, {}, {}};
   ctx.clients = [weak, channel_name]() -> const std::vector<std::shared_ptr<LiveClient>>& {
     auto s = weak.lock();
     if (!s) return no_clients();
@@ -345,8 +396,14 @@ void Server::State::say(HttpConnection& conn, const HttpRequest& request) {
       s->lateness.add(late);
     }
   };
-  ctx.on_start_failed = [weak, id](const std::string& why) {
-    if (auto s = weak.lock()) s->answer_say(id, http::status::unprocessable_entity, {{"error", "synthesis-failed"}, {"detail", why}});
+  ctx.on_synthesised = [weak]() {  // on a synthesis thread: count() takes the stats mutex
+    if (auto s = weak.lock()) s->count([](ServeStats& st) { ++st.sentences_synthesised; });
+  };
+  ctx.on_rtp_dropped = [weak](std::size_t n) {
+    if (auto s = weak.lock()) s->count([n](ServeStats& st) { st.rtp_destinations_dropped += n; });
+  };
+  ctx.on_start_failed = [weak, id](int status, const std::string& rule, const std::string& why) {
+    if (auto s = weak.lock()) s->answer_say(id, static_cast<http::status>(status), {{"error", rule}, {"detail", why}});
   };
   ctx.on_first_frame = [weak, id]() {
     auto s = weak.lock();
@@ -363,7 +420,7 @@ void Server::State::say(HttpConnection& conn, const HttpRequest& request) {
     const std::shared_ptr<LiveSession> keep = it->second;  // session_ended erases the map's
     s->session_ended(keep);
   };
-  auto session = std::make_shared<LiveSession>(std::move(ctx), id, ++session_numbers, std::move(r), std::move(senders),
+  auto session = std::make_shared<LiveSession>(std::move(ctx), id, ++session_numbers, std::move(r), std::move(planned),
                                                std::move(speaker));
   sessions.emplace(id, session);
   awaiting.emplace(id, std::make_pair(conn.shared_from_this(), v));
@@ -424,9 +481,10 @@ void Server::State::start_next(const std::string& name) {
   if (it == channels.end() || stopping) return;
   Channel& ch = it->second;
   if (ch.speaking || ch.queue.empty()) return;
-  ch.speaking = ch.queue.front();
+  const std::shared_ptr<LiveSession> next = ch.queue.front();
   ch.queue.pop_front();
-  ch.speaking->start();
+  ch.speaking = next;
+  next->start();
 }
 
 void Server::State::forget_channel_if_empty(const std::string& name) {
@@ -487,6 +545,7 @@ void Server::State::stop() {
   stopping = true;
   boost::system::error_code ignored;
   acceptor.close(ignored);
+  accept_timer.cancel();
   // Sessions end first, so that live clients get their "end" before the close frame.
   std::vector<std::shared_ptr<LiveSession>> all;
   for (const auto& [id, s] : sessions) all.push_back(s);

@@ -24,6 +24,7 @@
 #include <mutex>
 #include <random>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace fapcast {
 
@@ -50,6 +51,10 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   void say(HttpConnection& conn, const HttpRequest& request);
   HttpResponse json_response(http::status status, const nlohmann::json& body, unsigned version) const;
   HttpResponse refusal(const RequestError& e, unsigned version);
+  // 500 "internal" for an exception other than a RequestError, logged.
+  HttpResponse internal_error(HttpConnection& conn, const std::exception& e, unsigned version);
+  // Stream ids for SRTP whose SSRC no earlier stream under the key had.
+  RtpStreamIds unique_srtp_ids();
   void open_live(HttpConnection& conn, const http::request_header<>& head, const std::string& channel);
   void answer_say(const std::string& id, http::status status, const nlohmann::json& body);
 
@@ -77,10 +82,12 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   std::optional<OriginPolicy> origins;  // once the port is known
   NetworkPolicy rtp_networks;
   std::optional<SrtpMasterKey> default_srtp_key;
+  std::unordered_set<std::uint32_t> srtp_ssrcs;  // every SSRC sent under default_srtp_key
   PageAssets assets;
   std::map<std::string, std::shared_ptr<const Speaker>> speakers;  // per voice, no expression
   std::unique_ptr<SynthesisWorker> worker;
   tcp::acceptor acceptor;
+  asio::steady_timer accept_timer;  // re-arms accept after an error
   std::uint16_t bound_port = 0;
 
   std::map<std::string, Channel> channels;

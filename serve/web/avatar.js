@@ -164,13 +164,37 @@ function connect() {
               '/v1/live?channel=' + encodeURIComponent(channel);
   const ws = new WebSocket(url, ['fapcast.v1', 'bearer.' + token]);
   ws.binaryType = 'arraybuffer';
-  ws.onopen = () => { stats.state = 'ready'; statusLine.textContent = 'connected to channel ' + channel; };
+  let opened = false;
+  ws.onopen = () => { opened = true; stats.state = 'ready'; statusLine.textContent = 'connected to channel ' + channel; };
   ws.onmessage = (e) => (typeof e.data === 'string' ? onText(e.data) : onFrame(e.data));
-  ws.onclose = (e) => {
+  ws.onclose = async (e) => {
     stats.state = 'disconnected';
-    statusLine.textContent = 'disconnected (' + e.code + (e.reason ? ': ' + e.reason : '') + '); reconnecting';
+    const why = 'disconnected (' + e.code + (e.reason ? ': ' + e.reason : '') + ')';
+    // A refused handshake hides its status from the page: the same request without the upgrade
+    // tells it. A wrong token or a forbidden origin will not change by retrying.
+    if (!opened) {
+      const refusal = await handshakeRefusal();
+      if (refusal) {
+        stats.state = 'refused';
+        statusLine.textContent = 'refused: ' + refusal + '; not retrying (reload the page with the right ?token=)';
+        return;
+      }
+    }
+    statusLine.textContent = why + '; reconnecting';
     setTimeout(connect, 1000);
   };
+}
+
+// "HTTP 401 token-wrong: ..." when /v1/live refuses this page's token or origin; else null.
+async function handshakeRefusal() {
+  try {
+    const res = await fetch('/v1/live?channel=' + encodeURIComponent(channel), {headers: {Authorization: 'Bearer ' + token}});
+    if (res.status !== 401 && res.status !== 403) return null;
+    const answer = await res.json().catch(() => ({}));
+    return 'HTTP ' + res.status + ' ' + (answer.error || '') + (answer.detail ? ': ' + answer.detail : '');
+  } catch (err) {
+    return null;  // the server is away: retrying is right
+  }
 }
 
 // --- Display: at each animation frame, the frame whose audio plays now.

@@ -109,6 +109,10 @@ TEST(ServeCli, UsageAndBadInput) {
   EXPECT_NE(no_token.err.find("--token-file"), std::string::npos);
   const auto bad_listen = run_command(fapcast("serve --listen nowhere --token-file x"));
   EXPECT_EQ(bad_listen.exit_code, 2) << bad_listen.err;
+  // Names are not resolved: a name where the address goes is usage too.
+  const auto name = run_command(fapcast("serve --listen localhost:0 --token-file x"));
+  EXPECT_EQ(name.exit_code, 2) << name.err;
+  EXPECT_NE(name.err.find("numeric"), std::string::npos) << name.err;
   write_file_atomically(dir + "/short", "abc\n");
   const auto short_token =
       run_command(fapcast("serve --listen 127.0.0.1:0 --voice " + q(spoken_voice_file().string()) + " --token-file " +

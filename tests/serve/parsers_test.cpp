@@ -111,6 +111,15 @@ TEST(SayRequestTest, PiecesFollowTheFrontEndsCuts) {
   // "One two. " | "Three four five " (no sentence end within 16 bytes: cut after a space) | "six. Seven."
   EXPECT_EQ(sentence_offsets(r, 16), (std::vector<std::size_t>{0, 9, 25}));
   EXPECT_EQ(sentence_offsets(r), (std::vector<std::size_t>{0}));  // short sentences packed
+  // A run of white space longer than a piece gives no blank piece (the synthesiser would refuse it).
+  r = parse_say_request(R"({"text":"One two.)" + std::string(40, ' ') + R"(Three."})", {});
+  const std::vector<std::size_t> pieces = sentence_offsets(r, 16);
+  ASSERT_FALSE(pieces.empty());
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const std::size_t end = i + 1 < pieces.size() ? pieces[i + 1] : r.text.size();
+    EXPECT_NE(r.text.substr(pieces[i], end - pieces[i]).find_first_not_of(' '), std::string::npos) << "piece " << i;
+  }
+  EXPECT_NE(r.text.substr(pieces.back()).find("Three."), std::string::npos);
   r = parse_say_request(R"({"ssml":"<speak>One. Two.</speak>","interrupt":true,"srtp":false,"rtp":"udp://127.0.0.1:5004"})", {});
   EXPECT_TRUE(r.ssml);
   EXPECT_TRUE(r.interrupt);

@@ -42,6 +42,9 @@ inline const std::filesystem::path& serve_test_dir() {
     std::filesystem::create_directories(d / "three" / "examples");
     write_file_atomically(d / "three" / "three.module.js", "export const REVISION = 'test';\n");
     write_file_atomically(d / "three" / "examples" / "loader.js", "// a loader\n");
+    // As Debian's libjs-three has it: build/three.module.js a link to ../three.module.js.
+    std::filesystem::create_directories(d / "three" / "build");
+    std::filesystem::create_symlink("../three.module.js", d / "three" / "build" / "three.module.js");
     return d;
   }();
   return dir;

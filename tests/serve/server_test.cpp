@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <set>
 
 namespace fapcast::test {
 namespace {
@@ -61,10 +62,24 @@ TEST(ServeAuth, TokenAsQueryParameterOnGetAndRedactedInTheLog) {
   const Answer js = http_request(port(), http::verb::get, std::string("/three/examples/loader.js?token=") + kToken, {}, {});
   EXPECT_EQ(js.status, 200);
   EXPECT_EQ(js.body, "// a loader\n");
+  // A symbolic link is served under its own path too (GLTFLoader imports build/three.module.js).
+  const Answer linked = http_request(port(), http::verb::get, std::string("/three/build/three.module.js?token=") + kToken, {}, {});
+  EXPECT_EQ(linked.status, 200);
+  EXPECT_EQ(linked.body, "export const REVISION = 'test';\n");
   for (const std::string& line : shared_server().log_lines()) EXPECT_EQ(line.find(kToken), std::string::npos) << line;
   // Not on a POST: a form could carry it there.
   const Answer p = http_request(port(), http::verb::post, std::string("/v1/say?token=") + kToken, "{\"text\":\"hi\"}", {});
   EXPECT_EQ(p.status, 401);
+}
+
+// The answer to a WebSocket handshake as a plain HTTP exchange (Boost 1.74's handshake does not
+// hand out the answer of a declined upgrade).
+Answer websocket_handshake(std::uint16_t port, const std::string& target, Headers headers) {
+  headers.emplace_back("Upgrade", "websocket");
+  headers.emplace_back("Connection", "Upgrade");
+  headers.emplace_back("Sec-WebSocket-Key", "dGhlIHNhbXBsZSBub25jZQ==");
+  headers.emplace_back("Sec-WebSocket-Version", "13");
+  return http_request(port, http::verb::get, target, {}, headers);
 }
 
 TEST(ServeAuth, WrongOriginIs403ForPostAndWebSocket) {
@@ -75,6 +90,10 @@ TEST(ServeAuth, WrongOriginIs403ForPostAndWebSocket) {
   EXPECT_THROW(LiveTestClient(port(), "/v1/live?channel=origin",
                               {{"Authorization", std::string("Bearer ") + kToken}, {"Origin", "http://evil.example"}}),
                beast::system_error);
+  const Answer ws = websocket_handshake(port(), "/v1/live?channel=origin",
+                                        {{"Authorization", std::string("Bearer ") + kToken}, {"Origin", "http://evil.example"}});
+  EXPECT_EQ(ws.status, 403);
+  EXPECT_EQ(ws.json()["error"], "origin-forbidden");
   // The server's own Origin passes (the page on it).
   const Answer own = http_request(port(), http::verb::get, "/v1/stats", {},
                                   {{"Authorization", std::string("Bearer ") + kToken},
@@ -84,6 +103,11 @@ TEST(ServeAuth, WrongOriginIs403ForPostAndWebSocket) {
 
 TEST(ServeAuth, WebSocketWithoutTokenRefused) {
   EXPECT_THROW(LiveTestClient(port(), "/v1/live", {}), beast::system_error);
+  const Answer ws = websocket_handshake(port(), "/v1/live", {});
+  EXPECT_EQ(ws.status, 401);
+  EXPECT_EQ(ws.json()["error"], "token-missing");
+  // The same handshake with the token is an upgrade: the refusal above was the token's.
+  EXPECT_EQ(websocket_handshake(port(), "/v1/live?channel=handshake", {{"Authorization", std::string("Bearer ") + kToken}}).status, 101);
   // The browser's way: the token as a subprotocol beside fapcast.v1.
   LiveTestClient c(port(), "/v1/live?channel=subproto",
                    {{"Sec-WebSocket-Protocol", std::string("fapcast.v1, bearer.") + kToken}});
@@ -189,9 +213,9 @@ struct RtpPair {
     }
   }
   std::uint16_t port() const { return animation->local_endpoint().port(); }
-  void start() {
+  void start(std::chrono::milliseconds idle = std::chrono::milliseconds(3000)) {
     ReceiveLimits l;
-    l.idle_timeout = std::chrono::milliseconds(3000);
+    l.idle_timeout = idle;
     l.max_duration = std::chrono::seconds(10);
     a_thread = std::thread([this, l] { animation->run(animation_stream, l, [this](ReceivedUnit&& u) { animation_units.push_back(std::move(u)); }); });
     b_thread = std::thread([this, l] { audio->run(audio_stream, l, [this](ReceivedUnit&& u) { audio_units.push_back(std::move(u)); }); });
@@ -239,9 +263,47 @@ TEST(ServeRtp, SrtpWithTheServersKeyIsDecrypted) {
   c.srtp_key_file = serve_test_dir() / "srtp.key";
   TestServer server(c);
   RtpPair rtp(key);
-  expect_rtp_session(server, rtp, json{{"text", "Hello."}, {"rtp", "udp://127.0.0.1:" + std::to_string(rtp.port())}}.dump());
+  // A second destination whose receiver has no key: it sees the datagrams but no unit.
+  RtpPair keyless(std::nullopt);
+  ASSERT_TRUE(keyless.audio);
+  keyless.start(std::chrono::milliseconds(1500));
+  expect_rtp_session(server, rtp,
+                     json{{"text", "Hello."},
+                          {"rtp", {"udp://127.0.0.1:" + std::to_string(rtp.port()), "udp://127.0.0.1:" + std::to_string(keyless.port())}}}
+                         .dump());
   ASSERT_NE(rtp.animation->srtp_stats(), nullptr);
-  // A receiver without the key gets nothing it can use: plain RTP was refused above by design.
+  const SrtpStats& srtp = *rtp.animation->srtp_stats();
+  // Every RTP datagram was authenticated before the parser saw it (SRTCP counts there too).
+  EXPECT_GE(srtp.unprotected_packets, rtp.animation_stream.stats().datagrams);
+  EXPECT_GT(srtp.unprotected_packets, 5u);
+  EXPECT_EQ(srtp.auth_failed, 0u);
+  EXPECT_EQ(srtp.malformed, 0u);
+  keyless.join();
+  // Without the key the headers parse (SRTP leaves them in the clear) but no payload is the
+  // session's: every one is ciphertext.
+  EXPECT_GT(keyless.animation_stream.stats().datagrams, 5u);
+  std::set<std::vector<std::uint8_t>> clear;
+  for (const ReceivedUnit& u : rtp.animation_units) clear.insert(u.bytes);
+  for (const ReceivedUnit& u : rtp.audio_units) clear.insert(u.bytes);
+  std::size_t readable = 0;
+  for (const ReceivedUnit& u : keyless.animation_units) readable += clear.contains(u.bytes);
+  for (const ReceivedUnit& u : keyless.audio_units) readable += clear.contains(u.bytes);
+  EXPECT_EQ(readable, 0u);
+}
+
+TEST(ServeRtp, ADestinationThatCannotBeSentToIsDroppedAndTheOthersGoOn) {
+  ServeConfig c = test_config();
+  c.rtp_networks = {"127.0.0.0/8", "255.255.255.255/32"};
+  TestServer server(c);
+  RtpPair rtp(std::nullopt);
+  // A datagram to the limited broadcast address without SO_BROADCAST fails (EACCES).
+  expect_rtp_session(server, rtp,
+                     json{{"text", "Hello."},
+                          {"rtp", {"udp://255.255.255.255:5004", "udp://127.0.0.1:" + std::to_string(rtp.port())}}}
+                         .dump());
+  const json stats = get(server.port(), "/v1/stats").json();
+  EXPECT_EQ(stats["rtp_destinations_dropped"], 1);
+  EXPECT_EQ(stats["sessions_failed"], 0);
 }
 
 // ---- live clients -----------------------------------------------------------------------------

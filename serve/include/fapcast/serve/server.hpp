@@ -31,7 +31,9 @@ struct ServeStats {
   std::uint64_t sessions_started = 0;    // sessions that sent their first frame
   std::uint64_t sessions_done = 0;       // ... and spoke to the end
   std::uint64_t sessions_stopped = 0;    // stopped: barge-in, the stop call, shutdown
-  std::uint64_t sessions_failed = 0;     // synthesis refused the text or a destination failed
+  std::uint64_t sessions_failed = 0;     // synthesis refused the text or the RTP sockets did not open
+  std::uint64_t sentences_synthesised = 0;  // synthesis jobs done (a stopped session's waiting ones are skipped)
+  std::uint64_t rtp_destinations_dropped = 0;  // destinations a send failed to (the session went on)
   std::size_t sessions_speaking = 0;
   std::size_t sessions_queued = 0;
   std::size_t clients = 0;               // live WebSocket clients now

@@ -31,8 +31,9 @@ void encode_live_frame(std::span<const float> weights, std::span<const std::int1
   put<std::int64_t>(out, sample);
   put<std::uint32_t>(out, static_cast<std::uint32_t>(audio.size()));
   put<std::uint32_t>(out, index);
-  out.append(reinterpret_cast<const char*>(weights.data()), 4 * weights.size());
-  out.append(reinterpret_cast<const char*>(audio.data()), 2 * audio.size());
+  // An empty span's data() may be null, which memcpy must not see even for 0 bytes.
+  if (!weights.empty()) out.append(reinterpret_cast<const char*>(weights.data()), 4 * weights.size());
+  if (!audio.empty()) out.append(reinterpret_cast<const char*>(audio.data()), 2 * audio.size());
 }
 
 std::error_code decode_live_frame(std::span<const std::uint8_t> in, LiveFrame& out) {
@@ -47,8 +48,8 @@ std::error_code decode_live_frame(std::span<const std::uint8_t> in, LiveFrame& o
   out.index = get<std::uint32_t>(in, 20);
   out.weights.resize(k);
   out.audio.resize(n);
-  std::memcpy(out.weights.data(), in.data() + kLiveFrameHeaderBytes, 4 * k);
-  std::memcpy(out.audio.data(), in.data() + kLiveFrameHeaderBytes + 4 * k, 2 * n);
+  if (k != 0) std::memcpy(out.weights.data(), in.data() + kLiveFrameHeaderBytes, 4 * k);
+  if (n != 0) std::memcpy(out.audio.data(), in.data() + kLiveFrameHeaderBytes + 4 * k, 2 * n);
   return {};
 }
 

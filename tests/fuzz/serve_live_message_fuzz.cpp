@@ -43,8 +43,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::size_t n = std::min<std::size_t>((rest - 4 * k) / 2, kLiveMaxAudio);
   std::vector<float> weights(k);
   std::vector<std::int16_t> audio(n);
-  std::memcpy(weights.data(), data + 17, 4 * k);
-  std::memcpy(audio.data(), data + 17 + 4 * k, 2 * n);
+  if (k != 0) std::memcpy(weights.data(), data + 17, 4 * k);  // an empty vector's data() may be null
+  if (n != 0) std::memcpy(audio.data(), data + 17 + 4 * k, 2 * n);
   std::string message;
   encode_live_frame(weights, audio, session, sample, index, first, message);
   LiveFrame back;

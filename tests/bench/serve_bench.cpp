@@ -23,6 +23,7 @@
 #include <sched.h>
 #include <sys/socket.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -105,6 +106,30 @@ double thread_cpu_seconds(pthread_t t) {
   return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
+// What the kernel's scheduler saw of one thread (/proc/self/task/TID/schedstat and status): time
+// on a CPU, time runnable but waiting for one (run_delay), and how often it was preempted while
+// runnable (nonvoluntary context switches).
+struct ThreadSched {
+  double cpu_s = 0, run_delay_s = 0;
+  long preempted = 0;
+};
+ThreadSched thread_sched(pid_t tid) {
+  ThreadSched t;
+  const std::string dir = "/proc/self/task/" + std::to_string(tid);
+  std::ifstream stat(dir + "/schedstat");
+  long long cpu = 0, delay = 0;
+  stat >> cpu >> delay;
+  t.cpu_s = 1e-9 * static_cast<double>(cpu);
+  t.run_delay_s = 1e-9 * static_cast<double>(delay);
+  std::ifstream status(dir + "/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.starts_with("nonvoluntary_ctxt_switches:")) t.preempted = std::stol(line.substr(27));
+  return t;
+}
+ThreadSched operator-(ThreadSched a, const ThreadSched& b) {
+  return {a.cpu_s - b.cpu_s, a.run_delay_s - b.run_delay_s, a.preempted - b.preempted};
+}
+
 std::size_t heap_bytes() { return mallinfo2().uordblks; }
 std::size_t rss_bytes() {
   std::ifstream statm("/proc/self/statm");
@@ -133,8 +158,10 @@ class BenchServer {
     server_ = std::make_unique<Server>(io_, std::move(c), std::move(voices));
     thread_ = std::thread([this] {
       pin_to(0);
+      io_tid_ = gettid();
       io_.run();
     });
+    while (io_tid_ == 0) std::this_thread::yield();
   }
   ~BenchServer() {
     asio::post(io_, [this] { server_->stop(); });
@@ -143,8 +170,10 @@ class BenchServer {
   std::uint16_t port() const { return server_->port(); }
   ServeStats stats() const { return server_->stats(); }
   double io_cpu_seconds() { return thread_cpu_seconds(thread_.native_handle()); }
+  ThreadSched io_sched() const { return thread_sched(io_tid_); }
 
  private:
+  std::atomic<pid_t> io_tid_{0};
   asio::io_context io_;
   std::unique_ptr<Server> server_;
   std::thread thread_;
@@ -178,7 +207,9 @@ class LatenessProbe {
   // Lateness (ns, sorted) of every packet over all streams: arrival minus the packet's media
   // time (its RTP timestamp from the stream's first, unwrapped, at `rtp_clock_hz`), less the
   // stream's smallest such offset (its most punctual packet is on time).
-  std::vector<double> lateness(double rtp_clock_hz) const {
+  std::vector<double> lateness(double rtp_clock_hz) const { return lateness(rtp_clock_hz, 0, INT64_MAX); }
+  // The same, of the packets that arrived in [from_ns, to_ns) (CLOCK_REALTIME).
+  std::vector<double> lateness(double rtp_clock_hz, std::int64_t from_ns, std::int64_t to_ns) const {
     std::map<std::uint32_t, std::uint32_t> first;   // ssrc -> first timestamp
     std::map<std::uint32_t, double> earliest;       // ssrc -> min(arrival - media time)
     const auto offset = [&](const Packet& p) {
@@ -192,7 +223,8 @@ class LatenessProbe {
     }
     std::vector<double> late;
     late.reserve(packets_.size());
-    for (const Packet& p : packets_) late.push_back(offset(p) - earliest.at(p.ssrc));
+    for (const Packet& p : packets_)
+      if (p.arrival_ns >= from_ns && p.arrival_ns < to_ns) late.push_back(offset(p) - earliest.at(p.ssrc));
     std::sort(late.begin(), late.end());
     return late;
   }
@@ -331,7 +363,9 @@ void BM_LiveSessions(benchmark::State& state) {
     const std::size_t heap1 = heap_bytes(), rss1 = rss_bytes();  // the server alone
     LatenessProbe probe(sink.fd(0));
     const double cpu0 = server.io_cpu_seconds();
+    const ThreadSched sched0 = server.io_sched();
     const auto t0 = Clock::now();
+    std::atomic<std::int64_t> ramp_end_ns{0};  // the last request answered (CLOCK_REALTIME, as the probe's)
     // Requests from 8 client threads (each answer waits for its session's first frame).
     std::atomic<std::size_t> next{0}, ok{0};
     std::vector<std::thread> clients;
@@ -344,6 +378,9 @@ void BM_LiveSessions(benchmark::State& state) {
               test::json_request("POST", "/v1/say", kToken, say_body(kLongSentence, sink.url(), "s" + std::to_string(i), false)));
           if (!a.empty() && a[0].status == 202) ++ok;
         }
+        const std::int64_t now = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                                     std::chrono::system_clock::now().time_since_epoch()).count();
+        for (std::int64_t e = ramp_end_ns; e < now && !ramp_end_ns.compare_exchange_weak(e, now);) {}
       });
     // The peak of sessions speaking at once, and the memory then.
     std::size_t peak = 0, heap_peak = heap1, rss_peak = rss1;
@@ -363,6 +400,7 @@ void BM_LiveSessions(benchmark::State& state) {
     const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
     const ServeStats s = server.stats();
     const double cpu = server.io_cpu_seconds() - cpu0;
+    const ThreadSched sched = server.io_sched() - sched0;
     probe.stop();
     state.counters["sessions_ok"] = static_cast<double>(ok);
     state.counters["peak_speaking"] = static_cast<double>(peak);
@@ -371,8 +409,16 @@ void BM_LiveSessions(benchmark::State& state) {
     state.counters["server_late_p99_ms"] = 1e-6 * static_cast<double>(s.late_p99.count());
     state.counters["server_late_max_ms"] = 1e-6 * static_cast<double>(s.late_max.count());
     report_lateness(state, probe.lateness(static_cast<double>(rtp_clock_hz)), "rx_late_");
+    // The ramp (until the last request was answered) and the steady state after it, apart.
+    report_lateness(state, probe.lateness(static_cast<double>(rtp_clock_hz), 0, ramp_end_ns), "rx_ramp_late_");
+    report_lateness(state, probe.lateness(static_cast<double>(rtp_clock_hz), ramp_end_ns, INT64_MAX), "rx_steady_late_");
     state.counters["rx_streams"] = static_cast<double>(probe.streams());
     state.counters["io_cpu_share"] = cpu / wall;
+    // The network thread as the scheduler saw it: runnable but not running, per frame, and
+    // preemptions per second.
+    state.counters["io_run_delay_us_per_frame"] = s.frames ? 1e6 * sched.run_delay_s / static_cast<double>(s.frames) : 0.0;
+    state.counters["io_run_delay_share"] = sched.run_delay_s / wall;
+    state.counters["io_preempted_per_s"] = static_cast<double>(sched.preempted) / wall;
     state.counters["server_heap_MiB"] = static_cast<double>(heap1 - std::min(heap1, heap0)) / (1 << 20);
     state.counters["heap_per_session_KiB"] =
         peak ? static_cast<double>(heap_peak - std::min(heap_peak, heap1)) / 1024.0 / static_cast<double>(peak) : 0.0;

@@ -138,8 +138,19 @@ std::size_t rss_bytes() {
   return resident * static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
 }
 
-// A server on loopback (port 0), its network thread pinned to CPU 0; made on a thread pinned
-// to CPU 1, so that its synthesis threads run there.
+// The id of this process's thread named `name` (/proc/self/task/*/comm); 0 when there is none.
+pid_t thread_named(const std::string& name) {
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it("/proc/self/task", ec), end; !ec && it != end; it.increment(ec)) {
+    std::ifstream comm(it->path() / "comm");
+    std::string n;
+    if (std::getline(comm, n) && n == name) return static_cast<pid_t>(std::stol(it->path().filename().string()));
+  }
+  return 0;
+}
+
+// A server on loopback (port 0), its network thread and its frame pacer pinned to CPU 0; made
+// on a thread pinned to CPU 1, so that its synthesis threads run there.
 class BenchServer {
  public:
   explicit BenchServer(std::size_t sessions) {
@@ -162,6 +173,12 @@ class BenchServer {
       io_.run();
     });
     while (io_tid_ == 0) std::this_thread::yield();
+    if ((pacer_tid_ = thread_named("fapcast-pacer")) != 0) {
+      cpu_set_t set;
+      CPU_ZERO(&set);
+      CPU_SET(0, &set);
+      sched_setaffinity(pacer_tid_, sizeof set, &set);
+    }
   }
   ~BenchServer() {
     asio::post(io_, [this] { server_->stop(); });
@@ -171,9 +188,12 @@ class BenchServer {
   ServeStats stats() const { return server_->stats(); }
   double io_cpu_seconds() { return thread_cpu_seconds(thread_.native_handle()); }
   ThreadSched io_sched() const { return thread_sched(io_tid_); }
+  // The frame pacer's thread (none before it had one: the network thread sent the frames).
+  ThreadSched pacer_sched() const { return pacer_tid_ ? thread_sched(pacer_tid_) : ThreadSched{}; }
 
  private:
   std::atomic<pid_t> io_tid_{0};
+  pid_t pacer_tid_ = 0;
   asio::io_context io_;
   std::unique_ptr<Server> server_;
   std::thread thread_;
@@ -363,7 +383,7 @@ void BM_LiveSessions(benchmark::State& state) {
     const std::size_t heap1 = heap_bytes(), rss1 = rss_bytes();  // the server alone
     LatenessProbe probe(sink.fd(0));
     const double cpu0 = server.io_cpu_seconds();
-    const ThreadSched sched0 = server.io_sched();
+    const ThreadSched sched0 = server.io_sched(), pacer0 = server.pacer_sched();
     const auto t0 = Clock::now();
     std::atomic<std::int64_t> ramp_end_ns{0};  // the last request answered (CLOCK_REALTIME, as the probe's)
     // Requests from 8 client threads (each answer waits for its session's first frame).
@@ -400,7 +420,7 @@ void BM_LiveSessions(benchmark::State& state) {
     const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
     const ServeStats s = server.stats();
     const double cpu = server.io_cpu_seconds() - cpu0;
-    const ThreadSched sched = server.io_sched() - sched0;
+    const ThreadSched sched = server.io_sched() - sched0, pacer = server.pacer_sched() - pacer0;
     probe.stop();
     state.counters["sessions_ok"] = static_cast<double>(ok);
     state.counters["peak_speaking"] = static_cast<double>(peak);
@@ -419,6 +439,9 @@ void BM_LiveSessions(benchmark::State& state) {
     state.counters["io_run_delay_us_per_frame"] = s.frames ? 1e6 * sched.run_delay_s / static_cast<double>(s.frames) : 0.0;
     state.counters["io_run_delay_share"] = sched.run_delay_s / wall;
     state.counters["io_preempted_per_s"] = static_cast<double>(sched.preempted) / wall;
+    state.counters["pacer_cpu_share"] = pacer.cpu_s / wall;
+    state.counters["pacer_run_delay_us_per_frame"] = s.frames ? 1e6 * pacer.run_delay_s / static_cast<double>(s.frames) : 0.0;
+    state.counters["pacer_preempted_per_s"] = static_cast<double>(pacer.preempted) / wall;
     state.counters["server_heap_MiB"] = static_cast<double>(heap1 - std::min(heap1, heap0)) / (1 << 20);
     state.counters["heap_per_session_KiB"] =
         peak ? static_cast<double>(heap_peak - std::min(heap_peak, heap1)) / 1024.0 / static_cast<double>(peak) : 0.0;

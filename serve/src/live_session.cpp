@@ -41,15 +41,14 @@ LiveSession::LiveSession(SessionContext context, std::string id, std::uint32_t n
       sentences_(sentence_offsets(request_, ctx_.sentence_bytes)),
       destinations_(std::move(rtp)),
       speaker_(std::move(speaker)),
-      encoder_(std::make_shared<FbaFrameEncoder>(FbaEncoderOptions{}, ctx_.rate)),
-      timer_(ctx_.io) {}
+      encoder_(std::make_shared<FbaFrameEncoder>(FbaEncoderOptions{}, ctx_.rate)) {}
 
 void LiveSession::start() {
   if (state_ != SessionState::kQueued) return;
   state_ = SessionState::kStarting;
   started_at_ = Clock::now();
   try {
-    for (RtpDestination& d : destinations_) rtp_.push_back(std::make_unique<RtpSender>(ctx_.io, d.endpoint, std::move(d.options), true));
+    for (RtpDestination& d : destinations_) rtp_.push_back(std::make_unique<RtpSender>(ctx_.pacer.io(), d.endpoint, std::move(d.options), true));
   } catch (const std::exception& e) {
     // Not from inside start(): the server's caller may be iterating over the channel.
     rtp_.clear();
@@ -120,123 +119,70 @@ void LiveSession::on_prepared(PreparedSentence p) {
     return;
   }
   if (!speaker_) speaker_ = p.speaker;
+  PacedSentence paced{nullptr, std::move(p.units)};
+  paced.sentence = std::make_shared<const PreparedSentence>(std::move(p));
+  ++handed_;
   if (state_ == SessionState::kStarting) {
-    sample_rate_ = p.spoken.audio.sample_rate;
-    first_speech_time_ = p.spoken.speech_time;
-    first_animation_time_ = p.spoken.animation_time;
+    sample_rate_ = paced.sentence->spoken.audio.sample_rate;
+    first_speech_time_ = paced.sentence->spoken.speech_time;
+    first_animation_time_ = paced.sentence->spoken.animation_time;
     state_ = SessionState::kSpeaking;
-    start_ = Clock::now();
-    wall_start_ = std::chrono::system_clock::now();
     broadcast(session_message());
-    begin_sentence(std::move(p));
-    deadline_ = start_;
-    tick();  // the first frame leaves now
+    // The first frame leaves now.
+    stream_ = ctx_.pacer.open({weak_from_this(), std::move(rtp_), sample_rate_, ctx_.rate, ctx_.rtcp_interval, sentences_.size(),
+                               Clock::now(), std::chrono::system_clock::now()},
+                              std::move(paced));
+    rtp_.clear();
     return;
   }
-  if (waiting_for_next_) {
-    waiting_for_next_ = false;
-    begin_sentence(std::move(p));
-    schedule();
-  } else {
-    next_ = std::move(p);
-  }
+  ctx_.pacer.add(stream_, std::move(paced));
 }
 
-std::int64_t LiveSession::now_sample() const { return duration_to_samples(Clock::now() - start_, sample_rate_); }
-
-void LiveSession::begin_sentence(PreparedSentence p) {
-  // Sentence i + 1 starts where sentence i's audio ends, or now when it was not ready in time.
-  offset_ = current_ ? std::max(offset_ + current_->spoken.audio.instants(), now_sample()) : 0;
-  current_ = std::move(p);
-  frame_ = 0;
-  audio_sent_ = 0;
-  for (MediaUnit& u : current_->units) u.sample += offset_;
-  broadcast(sentence_message(*current_));
-  if (!job_in_flight_ && !next_ && current_->index + 1 < sentences_.size()) submit(current_->index + 1);
+void LiveSession::on_sentence_begun(std::shared_ptr<const PreparedSentence> sentence, std::int64_t offset) {
+  if (state_ != SessionState::kSpeaking) return;
+  playing_ = std::move(sentence);
+  playing_offset_ = offset;
+  if (!ctx_.clients().empty()) broadcast(sentence_message(*playing_, offset));
+  // One sentence ahead of the one being sent.
+  if (!job_in_flight_ && handed_ == playing_->index + 1 && handed_ < sentences_.size()) submit(handed_);
 }
 
-void LiveSession::schedule() {
-  deadline_ = start_ + samples_to_duration(offset_ + frame_to_sample(static_cast<std::int64_t>(frame_), ctx_.rate, sample_rate_),
-                                           sample_rate_);
-  timer_.expires_at(deadline_);
-  timer_.async_wait([self = shared_from_this()](const boost::system::error_code& ec) {
-    if (!ec && self->state_ == SessionState::kSpeaking) self->tick();
-  });
-}
-
-void LiveSession::tick() {
-  const Clock::time_point woke = Clock::now();
-  const PreparedSentence& s = *current_;
-  const std::size_t frames = s.spoken.faps.frames.size();
-  const std::int64_t instants = s.spoken.audio.instants();
-  const std::int64_t here = frame_to_sample(static_cast<std::int64_t>(frame_), ctx_.rate, sample_rate_);
-  const std::int64_t upto =
-      frame_ + 1 < frames ? frame_to_sample(static_cast<std::int64_t>(frame_ + 1), ctx_.rate, sample_rate_) : instants;
-  const std::int64_t sample = offset_ + here;
-
-  // RTP: the frame's access unit, then the audio until the next frame's sample, then a sender
-  // report when one is due.
-  std::size_t packets = 0;
-  const std::int64_t rtcp_step = sample_rate_.hz * ctx_.rtcp_interval.count() / 1000;
-  const bool report = rtcp_step > 0 && sample >= next_report_;
-  const auto ntp = [&](std::int64_t at) {
-    return to_ntp(wall_start_ + std::chrono::duration_cast<std::chrono::system_clock::duration>(
-                                    samples_to_duration(at, sample_rate_)));
-  };
-  for (auto& r : rtp_) {
-    std::error_code ec;
-    if (frame_ < s.units.size()) r->send_animation(s.units[frame_], ec), ++packets;
-    const auto step = static_cast<std::int64_t>(r->audio_instants_per_packet(sample_rate_, 1));
-    for (std::int64_t at = static_cast<std::int64_t>(audio_sent_); !ec && at < upto; at += step, ++packets) {
-      const std::int64_t count = std::min(step, upto - at);
-      r->send_audio(std::span(s.spoken.audio.samples).subspan(static_cast<std::size_t>(at), static_cast<std::size_t>(count)),
-                    1, offset_ + at, at == 0, ec);
-    }
-    if (!ec && report) r->send_reports(sample, ntp(sample), false, ec);
-    if (ec) {
-      // One destination that cannot be reached does not end the session for the others.
-      std::ostringstream where;
-      where << r->destination() << ": " << ec.message();
-      rtp_dropped_.push_back(where.str());
-      r.reset();
-    }
-  }
-  if (const std::size_t dropped = static_cast<std::size_t>(std::erase(rtp_, nullptr)); dropped > 0 && ctx_.on_rtp_dropped)
-    ctx_.on_rtp_dropped(dropped);
-  if (report) next_report_ = sample + rtcp_step;
-  audio_sent_ = static_cast<std::size_t>(upto);
-
+void LiveSession::on_frame_sent(const PacedFrame& f) {
+  if (state_ != SessionState::kSpeaking) return;  // its "end" went to the clients before this
+  const PreparedSentence& s = *f.sentence;
   // Live clients: one message with the frame's weights and the audio shown with it.
   std::size_t messages = 0;
   const auto& clients = ctx_.clients();
   if (!clients.empty()) {
     std::vector<float> weights(static_cast<std::size_t>(s.spoken.weights.cols()));
     for (Eigen::Index c = 0; c < s.spoken.weights.cols(); ++c)
-      weights[static_cast<std::size_t>(c)] = s.spoken.weights(static_cast<Eigen::Index>(frame_), c);
+      weights[static_cast<std::size_t>(c)] = s.spoken.weights(static_cast<Eigen::Index>(f.frame), c);
     auto message = std::make_shared<std::string>();
     encode_live_frame(weights,
-                      std::span(s.spoken.audio.samples).subspan(static_cast<std::size_t>(here), static_cast<std::size_t>(upto - here)),
-                      number_, sample, frames_sent_, frame_ == 0, *message);
+                      std::span(s.spoken.audio.samples).subspan(static_cast<std::size_t>(f.first), static_cast<std::size_t>(f.end - f.first)),
+                      number_, f.sample, f.sequence, f.frame == 0, *message);
     for (const auto& c : clients) c->send(message, true), ++messages;
   }
   ++frames_sent_;
-  ++frame_;
-  if (ctx_.on_frame) ctx_.on_frame(woke - deadline_, packets, messages);
+  if (messages > 0 && ctx_.on_live_messages) ctx_.on_live_messages(messages);
   if (frames_sent_ == 1) {
-    first_frame_latency_ = Clock::now() - started_at_;
+    first_frame_latency_ = f.sent - started_at_;
     if (ctx_.on_first_frame) ctx_.on_first_frame();
   }
-  if (frame_ < frames) return schedule();
-  ++sentences_spoken_;
-  if (current_->index + 1 >= sentences_.size()) return end(SessionState::kDone, "done");
-  if (next_) {
-    PreparedSentence n = std::move(*next_);
-    next_.reset();
-    begin_sentence(std::move(n));
-    return schedule();
-  }
-  waiting_for_next_ = true;  // the next sentence is still being synthesised: on_prepared resumes
-  if (!job_in_flight_) submit(current_->index + 1);
+}
+
+void LiveSession::on_sentence_spoken(std::size_t) {
+  if (state_ == SessionState::kSpeaking) ++sentences_spoken_;
+}
+
+void LiveSession::on_rtp_dropped(std::vector<std::string> why) {
+  const std::size_t n = why.size();
+  for (std::string& w : why) rtp_dropped_.push_back(std::move(w));
+  if (ctx_.on_rtp_dropped) ctx_.on_rtp_dropped(n);
+}
+
+void LiveSession::on_stream_done() {
+  if (state_ == SessionState::kSpeaking) end(SessionState::kDone, "done");
 }
 
 void LiveSession::stop(const std::string& reason) { end(SessionState::kStopped, reason); }
@@ -244,23 +190,16 @@ void LiveSession::stop(const std::string& reason) { end(SessionState::kStopped, 
 void LiveSession::end(SessionState state, const std::string& reason) {
   if (!active() && state_ != SessionState::kQueued) return;
   cancelled_->store(true);
-  timer_.cancel();
   if (state_ == SessionState::kSpeaking) {
-    // A closing report so that receivers have counts for the whole session.
-    const std::int64_t last = current_ ? offset_ + std::min<std::int64_t>(static_cast<std::int64_t>(audio_sent_),
-                                                                         current_->spoken.audio.instants())
-                                       : 0;
-    std::error_code ignored;
-    const auto ntp = to_ntp(wall_start_ + std::chrono::duration_cast<std::chrono::system_clock::duration>(
-                                              samples_to_duration(last, sample_rate_)));
-    for (auto& r : rtp_) r->send_reports(last, ntp, true, ignored);
+    // The pacer sends the closing reports (unless it has, at the end) and closes the sockets.
+    ctx_.pacer.stop(stream_);
     broadcast(dump({{"type", "end"}, {"session", number_}, {"id", id_}, {"reason", reason}}));
   }
   state_ = state;
   reason_ = reason;
   rtp_.clear();  // its sockets close now, not when the record of the session goes
-  current_.reset();
-  next_.reset();
+  stream_.reset();
+  playing_.reset();
   if (ctx_.on_end) {
     auto on_end = std::move(ctx_.on_end);
     ctx_.on_end = nullptr;
@@ -298,14 +237,14 @@ std::string LiveSession::session_message() const {
                {"sentences", sentences_.size()}});
 }
 
-std::string LiveSession::sentence_message(const PreparedSentence& s) const {
+std::string LiveSession::sentence_message(const PreparedSentence& s, std::int64_t offset) const {
   json phones = json::array();
   for (const TimedPhone& p : s.spoken.phones)
-    phones.push_back({std::string(arpabet(p.phone)), offset_ + p.start_sample, offset_ + p.end_sample});
+    phones.push_back({std::string(arpabet(p.phone)), offset + p.start_sample, offset + p.end_sample});
   return dump({{"type", "sentence"},
                {"session", number_},
                {"index", s.index},
-               {"sample", offset_},
+               {"sample", offset},
                {"samples", s.spoken.audio.instants()},
                {"frames", s.spoken.faps.frames.size()},
                {"text", s.text},
@@ -313,9 +252,9 @@ std::string LiveSession::sentence_message(const PreparedSentence& s) const {
 }
 
 void LiveSession::greet(LiveClient& client) const {
-  if (state_ != SessionState::kSpeaking || !current_) return;
+  if (state_ != SessionState::kSpeaking || !playing_) return;
   client.send(std::make_shared<const std::string>(session_message()), false);
-  client.send(std::make_shared<const std::string>(sentence_message(*current_)), false);
+  client.send(std::make_shared<const std::string>(sentence_message(*playing_, playing_offset_)), false);
 }
 
 nlohmann::json LiveSession::status() const {

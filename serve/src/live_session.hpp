@@ -2,10 +2,15 @@
 // One session: a request's text spoken sentence by sentence on a channel, streamed in real time
 // to its RTP destinations and to the channel's live clients (spec/serve.md, "Sessions"). The
 // network thread owns it; its sentences are synthesised on the worker threads one ahead of the
-// one being sent, so that at most two are held. Frames leave at absolute deadlines on the
-// session's timeline (sample 0 at the start; sentence i + 1 starts where sentence i's audio
-// ends, or now if it was not ready in time), each with the audio played while it is shown.
+// one being sent, so that at most two are held. Its frames are sent by the frame pacer
+// (frame_pacer.hpp) at absolute deadlines on the session's timeline (sample 0 at the start;
+// sentence i + 1 starts where sentence i's audio ends, or now if it was not ready in time), each
+// with the audio played while it is shown; the pacer tells it each frame sent, and it sends the
+// frame's message to the channel's live clients.
 #include "beast.hpp"
+#include "frame_pacer.hpp"
+#include "prepared_sentence.hpp"
+
 #include "fapcast/fba/fba_stream.hpp"
 #include "fapcast/serve/say_request.hpp"
 #include "fapcast/transport/media_unit.hpp"
@@ -30,16 +35,6 @@ class SynthesisWorker;
 enum class SessionState { kQueued, kStarting, kSpeaking, kDone, kStopped, kFailed };
 std::string_view session_state_name(SessionState state);
 
-// A sentence ready to stream, made on a synthesis thread.
-struct PreparedSentence {
-  std::size_t index = 0;
-  std::string text;
-  SpokenSentence spoken;
-  std::vector<MediaUnit> units;  // one FBA access unit per frame; samples on the sentence's audio
-  std::shared_ptr<const Speaker> speaker;  // the speaker that spoke it
-  std::string error;  // non-empty: synthesis refused the sentence
-};
-
 // Where a session sends RTP: its sockets are opened when it starts speaking, not while it waits
 // in a queue (a full queue would otherwise hold thousands of descriptors).
 struct RtpDestination {
@@ -49,7 +44,8 @@ struct RtpDestination {
 
 // What a session needs from the server, and tells it.
 struct SessionContext {
-  asio::io_context& io;
+  asio::io_context& io;  // the network thread's
+  FramePacer& pacer;
   SynthesisWorker& worker;
   const Voice& voice;
   std::string voice_name;
@@ -58,7 +54,7 @@ struct SessionContext {
   std::size_t sentence_bytes;
   // The channel's live clients, now.
   std::function<const std::vector<std::shared_ptr<LiveClient>>&()> clients;
-  std::function<void(std::chrono::nanoseconds late, std::size_t rtp_packets, std::size_t messages)> on_frame;
+  std::function<void(std::size_t messages)> on_live_messages;  // queued to live clients
   // Before the first frame: the answer's status, rule and detail.
   std::function<void(int status, const std::string& rule, const std::string& detail)> on_start_failed;
   std::function<void()> on_first_frame;
@@ -68,7 +64,7 @@ struct SessionContext {
   std::function<void(std::size_t count)> on_rtp_dropped;
 };
 
-class LiveSession : public std::enable_shared_from_this<LiveSession> {
+class LiveSession : public PacedListener, public std::enable_shared_from_this<LiveSession> {
  public:
   // `speaker` null: one is made for the request's expression on the first synthesis job.
   LiveSession(SessionContext context, std::string id, std::uint32_t number, SayRequest request,
@@ -95,13 +91,15 @@ class LiveSession : public std::enable_shared_from_this<LiveSession> {
  private:
   void submit(std::size_t index);
   void on_prepared(PreparedSentence sentence);
-  void begin_sentence(PreparedSentence sentence);
-  void schedule();
-  void tick();
+  // PacedListener: what the pacer did.
+  void on_sentence_begun(std::shared_ptr<const PreparedSentence> sentence, std::int64_t offset) override;
+  void on_frame_sent(const PacedFrame& frame) override;
+  void on_sentence_spoken(std::size_t index) override;
+  void on_rtp_dropped(std::vector<std::string> why) override;
+  void on_stream_done() override;
   void end(SessionState state, const std::string& reason);
   void broadcast(const std::string& text) const;
-  std::int64_t now_sample() const;
-  std::string sentence_message(const PreparedSentence& s) const;
+  std::string sentence_message(const PreparedSentence& s, std::int64_t offset) const;
   std::string session_message() const;
 
   SessionContext ctx_;
@@ -110,7 +108,7 @@ class LiveSession : public std::enable_shared_from_this<LiveSession> {
   SayRequest request_;
   std::vector<std::size_t> sentences_;  // byte offsets of the sentences in request_.text (sentence_offsets)
   std::vector<RtpDestination> destinations_;
-  std::vector<std::unique_ptr<RtpSender>> rtp_;  // opened by start(); a sender that fails to send is dropped
+  std::vector<std::unique_ptr<RtpSender>> rtp_;  // opened by start(), handed to the pacer with the first sentence
   std::vector<std::string> rtp_dropped_;          // "ADDRESS:PORT: why" of each dropped sender
   // Set when the session ends: a synthesis job not yet begun is skipped (a barge-in storm
   // leaves no work behind it).
@@ -119,21 +117,16 @@ class LiveSession : public std::enable_shared_from_this<LiveSession> {
   std::shared_ptr<FbaFrameEncoder> encoder_;  // used by one synthesis job at a time
   SessionState state_ = SessionState::kQueued;
   std::string reason_;
-  asio::steady_timer timer_;
 
-  std::optional<PreparedSentence> current_, next_;
+  std::shared_ptr<PacedStream> stream_;              // at the pacer, while speaking
+  std::shared_ptr<const PreparedSentence> playing_;  // the sentence being sent (for a client that joins)
+  std::int64_t playing_offset_ = 0;                  // its first sample on the session's timeline
+  std::size_t handed_ = 0;                           // sentences handed to the pacer
   bool job_in_flight_ = false;
-  bool waiting_for_next_ = false;
   SampleRate sample_rate_{};
-  std::chrono::steady_clock::time_point started_at_{}, start_{};  // start(); sample 0
-  std::chrono::system_clock::time_point wall_start_{};
-  std::int64_t offset_ = 0;          // current sentence's first sample on the session's timeline
-  std::size_t frame_ = 0;            // next frame of the current sentence
-  std::size_t audio_sent_ = 0;       // RTP audio instants of the current sentence sent
+  std::chrono::steady_clock::time_point started_at_{};  // start()
   std::uint32_t frames_sent_ = 0;
   std::size_t sentences_spoken_ = 0;
-  std::int64_t next_report_ = 0;
-  std::chrono::steady_clock::time_point deadline_{};
   std::chrono::nanoseconds first_frame_latency_{0};
   std::chrono::nanoseconds first_speech_time_{0}, first_animation_time_{0};
 };

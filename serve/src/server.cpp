@@ -62,6 +62,7 @@ Server::State::State(asio::io_context& io_, ServeConfig config_, ServeVoices voi
     speakers.emplace(name, std::make_shared<const Speaker>(voice, settings, "voice '" + name + "'"));
   }
   worker = std::make_unique<SynthesisWorker>(config.synthesis_threads);
+  pacer = std::make_unique<FramePacer>(io);
 }
 
 Server::State::~State() {
@@ -168,9 +169,15 @@ void Server::State::refresh_gauges() {
 ServeStats Server::State::snapshot() const {
   std::lock_guard lock(stats_mutex);
   ServeStats s = stats;
-  s.late_p50 = lateness.quantile(0.5);
-  s.late_p99 = lateness.quantile(0.99);
-  s.late_max = lateness.max();
+  const FramePacer::Counts paced = pacer->counts();
+  s.frames = paced.frames;
+  s.rtp_packets = paced.rtp_packets;
+  s.late_p50 = paced.late_p50;
+  s.late_p99 = paced.late_p99;
+  s.late_max = paced.late_max;
+  s.wake_p50 = paced.wake_p50;
+  s.wake_p99 = paced.wake_p99;
+  s.wake_max = paced.wake_max;
   return s;
 }
 
@@ -198,7 +205,10 @@ json Server::State::stats_json() const {
           {"live_messages", s.live_messages},
           {"late_p50_ms", ms(s.late_p50)},
           {"late_p99_ms", ms(s.late_p99)},
-          {"late_max_ms", ms(s.late_max)}};
+          {"late_max_ms", ms(s.late_max)},
+          {"wake_p50_ms", ms(s.wake_p50)},
+          {"wake_p99_ms", ms(s.wake_p99)},
+          {"wake_max_ms", ms(s.wake_max)}};
 }
 
 HttpResponse Server::State::json_response(http::status status, const json& body, unsigned version) const {
@@ -380,21 +390,15 @@ void Server::State::say(HttpConnection& conn, const HttpRequest& request) {
   const bool plain = r.lang == "en-us" && !r.ssml && !r.expression;
   std::shared_ptr<const Speaker> speaker = plain ? speakers.at(r.voice) : nullptr;
   std::weak_ptr<State> weak = weak_from_this();
-  SessionContext ctx{io, *worker, voices.at(r.voice), r.voice, config.rate, config.rtcp_interval, config.sentence_bytes, {}, {}, {}, {}, {}, {}, {}};
+  SessionContext ctx{io, *pacer, *worker, voices.at(r.voice), r.voice, config.rate, config.rtcp_interval, config.sentence_bytes, {}, {}, {}, {}, {}, {}, {}};
   ctx.clients = [weak, channel_name]() -> const std::vector<std::shared_ptr<LiveClient>>& {
     auto s = weak.lock();
     if (!s) return no_clients();
     const auto it = s->channels.find(channel_name);
     return it == s->channels.end() ? no_clients() : it->second.clients;
   };
-  ctx.on_frame = [weak](std::chrono::nanoseconds late, std::size_t packets, std::size_t messages) {
-    if (auto s = weak.lock()) {
-      std::lock_guard lock(s->stats_mutex);
-      ++s->stats.frames;
-      s->stats.rtp_packets += packets;
-      s->stats.live_messages += messages;
-      s->lateness.add(late);
-    }
+  ctx.on_live_messages = [weak](std::size_t messages) {
+    if (auto s = weak.lock()) s->count([messages](ServeStats& st) { st.live_messages += messages; });
   };
   ctx.on_synthesised = [weak]() {  // on a synthesis thread: count() takes the stats mutex
     if (auto s = weak.lock()) s->count([](ServeStats& st) { ++st.sentences_synthesised; });
@@ -557,6 +561,7 @@ void Server::State::stop() {
     if (auto c = w.lock()) open.push_back(c);
   for (auto& c : open) c->close();
   worker->stop();
+  pacer->stop();  // after the sessions' closing reports, handed to it above
   stop_timer.expires_after(std::chrono::seconds(1));
   stop_timer.async_wait([weak = weak_from_this()](boost::system::error_code ec) {
     auto s = weak.lock();

@@ -3,8 +3,8 @@
 // and live clients; the sessions by id and a bounded record of finished ones; the open
 // connections; the counters (behind a mutex, for stats() from any thread).
 #include "beast.hpp"
+#include "frame_pacer.hpp"
 #include "http_connection.hpp"
-#include "lateness_histogram.hpp"
 #include "live_client.hpp"
 #include "live_session.hpp"
 #include "page_assets.hpp"
@@ -86,6 +86,8 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   PageAssets assets;
   std::map<std::string, std::shared_ptr<const Speaker>> speakers;  // per voice, no expression
   std::unique_ptr<SynthesisWorker> worker;
+  // Sends every session's frames; before the sessions: their RTP sockets are on its io_context.
+  std::unique_ptr<FramePacer> pacer;
   tcp::acceptor acceptor;
   asio::steady_timer accept_timer;  // re-arms accept after an error
   std::uint16_t bound_port = 0;
@@ -104,8 +106,7 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   asio::steady_timer stop_timer;  // closes the sockets of live clients that do not finish closing
 
   mutable std::mutex stats_mutex;
-  ServeStats stats;
-  LatenessHistogram lateness;
+  ServeStats stats;  // frames, RTP packets and lateness: the pacer's counts
 };
 
 }  // namespace fapcast

@@ -442,6 +442,8 @@ void BM_LiveSessions(benchmark::State& state) {
     state.counters["pacer_cpu_share"] = pacer.cpu_s / wall;
     state.counters["pacer_run_delay_us_per_frame"] = s.frames ? 1e6 * pacer.run_delay_s / static_cast<double>(s.frames) : 0.0;
     state.counters["pacer_preempted_per_s"] = static_cast<double>(pacer.preempted) / wall;
+    state.counters["server_wake_p99_ms"] = 1e-6 * static_cast<double>(s.wake_p99.count());
+    state.counters["server_wake_max_ms"] = 1e-6 * static_cast<double>(s.wake_max.count());
     state.counters["server_heap_MiB"] = static_cast<double>(heap1 - std::min(heap1, heap0)) / (1 << 20);
     state.counters["heap_per_session_KiB"] =
         peak ? static_cast<double>(heap_peak - std::min(heap_peak, heap1)) / 1024.0 / static_cast<double>(peak) : 0.0;

@@ -7,7 +7,8 @@
 // request is authenticated (bearer token, constant-time compare) and its Origin checked before
 // any work; everything a client can make the server hold is bounded (ServeLimits).
 // spec/serve.md is the API. One network thread: the io_context's; Server's methods are called
-// on it, except stats(), which any thread may call.
+// on it, except stats(), which any thread may call. The frames are sent by a thread of the
+// server's own (the frame pacer), so that requests and live clients do not delay them.
 #include "fapcast/serve/serve_config.hpp"
 #include "fapcast/transport/asio.hpp"
 #include "fapcast/voice/voice.hpp"
@@ -44,6 +45,8 @@ struct ServeStats {
   std::uint64_t rtp_packets = 0;         // animation + audio RTP packets sent
   std::uint64_t live_messages = 0;       // WebSocket messages queued to clients
   std::chrono::nanoseconds late_p50{0}, late_p99{0}, late_max{0};  // frame sends past their deadline
+  // The frame pacer's timer waking past the earliest deadline due (the scheduler's share of the lateness).
+  std::chrono::nanoseconds wake_p50{0}, wake_p99{0}, wake_max{0};
 };
 
 // The voices a server speaks with, by the name a request gives ("default" when it gives none).

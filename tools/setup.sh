@@ -26,7 +26,7 @@ run_packages=(
   nlohmann-json3-dev    # manifests, JSON export, glTF extras
   libcli11-dev          # the command line
   libsndfile1-dev       # WAV read/write
-  zlib1g-dev            # CRC-32 (the voice file's section checksums)
+  libdeflate-dev        # CRC-32 (the voice file's section checksums)
   libtinygltf-dev       # glTF binary export/import
   libespeak-ng-dev      # the text front-end (speech and phone timing of `say`)
   espeak-ng             # its voices and phoneme data (espeak-ng-data) and the espeak-ng command
@@ -59,6 +59,7 @@ test_packages=(
   libgtest-dev          # GoogleTest suites
   libgmock-dev          # GTest::gmock, which the suites link
   libbenchmark-dev      # Google Benchmark programs (tests/bench, FAPCAST_BENCH=ON)
+  zlib1g-dev            # zlib's crc32_z, the CRC-32 libdeflate's is measured against (tests/bench/crc32_bench)
   libexpat1-dev         # reads back the mouth cues' XML (tests/cues)
   python3               # the layer check (tools/check-layers.py, CTest layers.check)
   nodejs                # runs three.js's GLTFLoader on fapcast's .glb (tests/viewer)

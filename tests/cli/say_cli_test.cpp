@@ -118,7 +118,7 @@ void EveryFormatAndRate() {
   EXPECT_EQ(read_file(out("a.bvh")).rfind("HIERARCHY", 0), 0u);
 }
 
-// A text short enough to be one piece: the track made as the speech comes (the default) is the
+// A text short enough to be one piece: the track made as the speech comes (--piece-seconds 30) is the
 // file the whole-text path (--piece-seconds 0, everything at once) writes, byte for byte, in
 // every streamed format and option that shapes the frames or the players' notes.
 void OnePieceIsTheWholeTextToTheByte() {
@@ -127,7 +127,7 @@ void OnePieceIsTheWholeTextToTheByte() {
                                     " --fps 60 --beta 0", ""}) {
     for (const std::string ext : {".fap", ".fba", ".json", ".bvh"}) {
       if (ext != ".fap" && options.find("--player") != std::string::npos) continue;
-      const auto piece = run_command(fapcast("say " + text + options + " -o " + out("piece" + ext)));
+      const auto piece = run_command(fapcast("say " + text + options + " --piece-seconds 30 -o " + out("piece" + ext)));
       const auto whole = run_command(fapcast("say " + text + options + " --piece-seconds 0 -o " + out("whole" + ext)));
       ASSERT_EQ(piece.exit_code, 0) << options << ext << ": " << piece.err;
       ASSERT_EQ(whole.exit_code, 0) << options << ext << ": " << whole.err;

@@ -16,13 +16,17 @@ bool is_animation_output(const std::filesystem::path& path) {
 
 bool is_mesh_output(const std::filesystem::path& path) { return lower_extension(path) == ".glb"; }
 
+TrackFileBytes animation_bytes(const std::filesystem::path& path, const FapSequence& seq, const FapTextWriteOptions& fap,
+                               SampleRate sample_rate, const FeaturePointPositions& neutral) {
+  if (lower_extension(path) == ".bvh") return {write_bvh(fap_to_bvh(seq, fit_generic_face(neutral))), {}};
+  return track_file_bytes(path, seq, {.sample_rate = sample_rate, .fap = fap});
+}
+
 void write_animation(const std::filesystem::path& path, const FapSequence& seq, const FapTextWriteOptions& fap,
                      SampleRate sample_rate, const FeaturePointPositions& neutral) {
-  if (lower_extension(path) == ".bvh") {
-    write_file_atomically(path, write_bvh(fap_to_bvh(seq, fit_generic_face(neutral))));
-    return;
-  }
-  print_notes(path, write_track_file(path, seq, {.sample_rate = sample_rate, .fap = fap}));
+  TrackFileBytes out = animation_bytes(path, seq, fap, sample_rate, neutral);
+  write_file_atomically(path, out.bytes);
+  print_notes(path, out.notes);
 }
 
 }  // namespace fapcast::cli

@@ -34,6 +34,7 @@ struct SynthesisArgs {
   RigArgs rig;                     // --rig, --avatar, --vmc (spec/rigs.md)
   CueArgs cues;                    // --cues-out, --cues-format, --extended-shapes (spec/mouth-cues.md)
   std::vector<TimedWord> words;  // the words spoken and their spans (say), for the TalkingHead JSON
+  double piece_seconds = 30.0;  // say: a FAP track is made in pieces of this much speech (0: at once)
 };
 
 // The options that shape the synthesis, shared by `say`, `animate` and `eval synth`: --beta,

@@ -2,6 +2,7 @@
 // speaks the text with espeak-ng and animates it (spec/synthesis.md). Argument parsing only.
 #include "command.hpp"
 #include "output_check.hpp"
+#include "streamed_fap_track.hpp"
 #include "synthesis_cli.hpp"
 
 #include "fapcast/core/file_io.hpp"
@@ -71,39 +72,64 @@ const cli::Registration reg{"say", [](CLI::App& app) {
         }
         // The speech is made chunk by chunk (at sentence ends, kChunkBytes): each chunk's audio
         // goes straight into the WAV's temporary file and only the timing is kept, so memory
-        // does not grow with the sound (spec/phones.md, "Memory"). The track and its WAV appear
-        // together or not at all: the WAV is written first but committed only after the track
-        // was, and the track is removed again if that fails.
+        // does not grow with the sound (spec/phones.md, "Memory"). A FAP track is made piece by
+        // piece as the timing comes, cut in pauses, and written as it goes (streamed_fap_track.hpp,
+        // spec/synthesis.md "Long texts"); a mesh or a rig takes the whole timing at the end.
+        // The track and its WAV appear together or not at all.
         std::optional<AtomicFile> wav_file;
         std::optional<WavWriter> wav_writer;
         if (!wav.empty()) wav_file.emplace(wav);
+        cli::SynthesisArgs& synthesis = args->synthesis;
+        const bool streamed = cli::is_streamed_output(synthesis) && synthesis.piece_seconds > 0;
+        std::optional<cli::StreamedFapTrack> track;
+        std::vector<TimedPhone> cue_phones;  // every phone, for --cues-out (the pieces forget theirs)
         Speech speech;
         std::int64_t samples = 0;
         speak_chunks(text, options, [&](Speech&& part) {
           const std::vector<std::int16_t> audio = std::move(part.audio.samples);
           const SampleRate rate = part.audio.sample_rate;
+          const std::size_t before = speech.phones.size();
           if (!append_timing(speech, std::move(part), samples)) return;
           if (wav_file) {
             if (!wav_writer) wav_writer.emplace(*wav_file, rate);
             wav_writer->append(audio);
           }
           samples += static_cast<std::int64_t>(audio.size());
-        });
-        if (speech.phones.empty()) throw std::runtime_error("say: " + options.source + ": empty-text: nothing to say");
-        if (wav_writer) wav_writer->finish();
-        args->synthesis.cues.sound_file = wav;
-        args->synthesis.words = speech.words;
-        cli::synthesize_to_file(args->synthesis, speech.phones, speech.audio.sample_rate, samples, "say: text",
-                                "fapcast say");
-        if (wav_file) {
-          try {
-            wav_file->commit();
-          } catch (...) {
-            std::error_code ignored;
-            std::filesystem::remove(args->synthesis.output, ignored);
-            throw;
+          if (!streamed) return;
+          if (!synthesis.cues.output.empty()) {
+            if (before > 0) cue_phones.back() = speech.phones[before - 1];  // a silence the chunk continued
+            cue_phones.insert(cue_phones.end(), speech.phones.begin() + static_cast<std::ptrdiff_t>(before),
+                              speech.phones.end());
           }
+          speech.events.clear();  // neither is needed for a FAP track
+          speech.words.clear();
+          if (!track) track.emplace(synthesis, rate, "say: text", "fapcast say");
+          track->add(speech.phones);
+        });
+        if (!track && speech.phones.empty()) throw std::runtime_error("say: " + options.source + ": empty-text: nothing to say");
+        if (wav_writer) wav_writer->finish();
+        synthesis.cues.sound_file = wav;
+        if (!streamed) {
+          synthesis.words = speech.words;
+          cli::synthesize_to_file(synthesis, speech.phones, speech.audio.sample_rate, samples, "say: text", "fapcast say");
+          if (wav_file) {
+            try {
+              wav_file->commit();
+            } catch (...) {
+              std::error_code ignored;
+              std::filesystem::remove(synthesis.output, ignored);
+              throw;
+            }
+          }
+          return;
         }
+        const std::string cues = cli::write_cue_output(synthesis.cues, cue_phones, speech.audio.sample_rate, samples);
+        track->finish(speech.phones, samples);
+        if (wav_file)
+          commit_together({&track->output(), &*wav_file});
+        else
+          track->output().commit();
+        std::cout << track->summary() << cues << track->tail() << "\n";
       });
   cmd->add_option("TEXT", args->text, "The text (UTF-8); - reads it from standard input");
   cmd->add_option("--text-file", args->text_file, "Read the text from this file (UTF-8, or UTF-16 with a BOM; any length)");
@@ -113,6 +139,11 @@ const cli::Registration reg{"say", [](CLI::App& app) {
   cmd->add_option("--espeak-variant", args->variant,
                   "espeak-ng voice variant, as `espeak-ng --voices=variant` lists it by file (f2, m3, klatt, ...)");
   cmd->add_flag("--ssml", args->ssml, "The text is SSML: espeak-ng parses the markup (<break>, <prosody>, ...)");
+  cmd->add_option("--piece-seconds", args->synthesis.piece_seconds,
+                  "A FAP track is made and written in pieces of about this much speech, each ending in a pause "
+                  "(bounded memory for any length); 0: the whole text at once")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   cmd->add_option("--wav-out", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");
 }};
 

@@ -12,6 +12,7 @@
 #include <numeric>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace fapcast {
@@ -620,52 +621,80 @@ bool masks_fap12(const FapSequence& seq) {
                      [](const FapFrame& f) { return f.mask.test(kVisemeFap) || f.mask.test(kExpressionFap); });
 }
 
-// mask_tokens: 68 or 69; single: FAP 1 and FAP 2 as one integer each.
-std::string write_text(const FapSequence& seq, bool mask69, bool single) {
-  if (seq.frames.size() > kFapTextMaxFrames)  // the reader would refuse the file
-    throw std::invalid_argument(std::to_string(seq.frames.size()) + " frames: a .fap file holds at most " +
+// The two lines of frame number k. mask69: the 69-token mask; single: FAP 1 and FAP 2 as one
+// integer each.
+void append_frame(std::string& out, const FapFrame& f, std::uint64_t k, bool mask69, bool single) {
+  if (mask69) out += "0 ";
+  for (int n = 1; n <= kFapCount; ++n) {
+    out += f.mask.test(n) ? '1' : '0';
+    out += n == kFapCount ? '\n' : ' ';
+  }
+  append_int(out, static_cast<std::int64_t>(k));
+  auto put = [&](std::int64_t v) {
+    out += ' ';
+    append_int(out, v);
+  };
+  if (f.mask.test(kVisemeFap)) {
+    put(f.viseme.select1);
+    if (!single) {
+      put(f.viseme.select2);
+      put(f.viseme.blend);
+      put(f.viseme.def);
+    }
+  }
+  if (f.mask.test(kExpressionFap)) {
+    put(f.expression.select1);
+    if (!single) {
+      put(f.expression.intensity1);
+      put(f.expression.select2);
+      put(f.expression.intensity2);
+      put(f.expression.init_face);
+      put(f.expression.def);
+    }
+  }
+  for (int n = kFirstLowLevelFap; n <= kFapCount; ++n)
+    if (f.mask.test(n)) put(f.value(n));
+  out += '\n';
+}
+
+void check_frame_count(std::uint64_t frames) {
+  if (frames > kFapTextMaxFrames)  // the reader would refuse the file
+    throw std::invalid_argument(std::to_string(frames) + " frames: a .fap file holds at most " +
                                 std::to_string(kFapTextMaxFrames));
-  std::string out = "2.1 " + fap_text_name(seq.name) + " " + fap_text_fps(seq.rate) + " " +
-                    std::to_string(seq.frames.size()) + "\n";
+}
+
+std::string header_line(std::string_view name, FrameRate rate, std::uint64_t frames) {
+  return "2.1 " + fap_text_name(name) + " " + fap_text_fps(rate) + " " + std::to_string(frames) + "\n";
+}
+
+std::string write_text(const FapSequence& seq, bool mask69, bool single) {
+  check_frame_count(seq.frames.size());
+  std::string out = header_line(seq.name, seq.rate, seq.frames.size());
   std::size_t values = 0;
   for (const FapFrame& f : seq.frames) values += static_cast<std::size_t>(f.mask.count());
   // Our own counts, not a file's: 137 bytes of mask, a frame number, ~8 bytes per value.
   out.reserve(out.size() + seq.frames.size() * 145 + values * 8);
   std::uint64_t k = 0;
-  for (const FapFrame& f : seq.frames) {
-    if (mask69) out += "0 ";
-    for (int n = 1; n <= kFapCount; ++n) {
-      out += f.mask.test(n) ? '1' : '0';
-      out += n == kFapCount ? '\n' : ' ';
-    }
-    append_int(out, static_cast<std::int64_t>(k++));
-    auto put = [&](std::int64_t v) {
-      out += ' ';
-      append_int(out, v);
-    };
-    if (f.mask.test(kVisemeFap)) {
-      put(f.viseme.select1);
-      if (!single) {
-        put(f.viseme.select2);
-        put(f.viseme.blend);
-        put(f.viseme.def);
-      }
-    }
-    if (f.mask.test(kExpressionFap)) {
-      put(f.expression.select1);
-      if (!single) {
-        put(f.expression.intensity1);
-        put(f.expression.select2);
-        put(f.expression.intensity2);
-        put(f.expression.init_face);
-        put(f.expression.def);
-      }
-    }
-    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n)
-      if (f.mask.test(n)) put(f.value(n));
-    out += '\n';
-  }
+  for (const FapFrame& f : seq.frames) append_frame(out, f, k++, mask69, single);
   return out;
+}
+
+// The layout `o` asks for, for a track at `rate`: {mask69, single}. Throws as write_fap_text does.
+std::pair<bool, bool> layout(FrameRate rate, const FapTextWriteOptions& o) {
+  if (!o.player) {
+    const bool d69 = o.dialect == FapTextDialect::kMask69;
+    return {d69, d69};
+  }
+  if (o.dialect == FapTextDialect::kMask69)
+    throw std::invalid_argument("a player's file has 68 mask tokens: --dialect 69 and --player exclude each other");
+  if (*o.player == FapPlayer::kXface) {
+    if (!whole_fps(rate))
+      throw std::invalid_argument("player-fps: Xface reads the fps as a whole number: " + fap_text_fps(rate) +
+                                  " fps would play at " + std::to_string(rate.numerator / rate.denominator) +
+                                  "; resample the track to a whole rate first");
+    return {false, false};
+  }
+  return {false, true};  // Greta and VREng: FAP 1 and FAP 2 one integer each
 }
 
 }  // namespace
@@ -691,22 +720,31 @@ const char* fap_player_name(FapPlayer player) {
 }
 
 std::string write_fap_text(const FapSequence& seq, const FapTextWriteOptions& o) {
-  if (!o.player) return write_fap_text(seq, o.dialect);
-  if (o.dialect == FapTextDialect::kMask69)
-    throw std::invalid_argument("a player's file has 68 mask tokens: --dialect 69 and --player exclude each other");
-  if (*o.player == FapPlayer::kXface) {
-    if (!whole_fps(seq.rate))
-      throw std::invalid_argument("player-fps: Xface reads the fps as a whole number: " + fap_text_fps(seq.rate) +
-                                  " fps would play at " + std::to_string(seq.rate.numerator / seq.rate.denominator) +
-                                  "; resample the track to a whole rate first");
-    return write_text(seq, false, false);
-  }
-  return write_text(seq, false, true);  // Greta and VREng: FAP 1 and FAP 2 one integer each
+  const auto [mask69, single] = layout(seq.rate, o);
+  return write_text(seq, mask69, single);
 }
 
+FapTextFrameWriter::FapTextFrameWriter(FrameRate rate, const FapTextWriteOptions& options) {
+  std::tie(mask69_, single_) = layout(rate, options);
+  stats_.rate = rate;
+}
+
+void FapTextFrameWriter::append(std::string& out, const FapFrame& frame) {
+  check_frame_count(frames_ + 1);
+  append_frame(out, frame, frames_++, mask69_, single_);
+  stats_.fap12 = stats_.fap12 || frame.mask.test(kVisemeFap) || frame.mask.test(kExpressionFap);
+  stats_.mask69_lossy += as_mask69(frame) != frame;
+}
+
+std::string FapTextFrameWriter::header(std::string_view name) const { return header_line(name, stats_.rate, frames_); }
+
 std::vector<std::string> fap_text_player_notes(const FapSequence& seq, const FapTextWriteOptions& o) {
+  return fap_text_player_notes(FapTextStats{seq.rate, masks_fap12(seq), mask69_lossy_frames(seq)}, o);
+}
+
+std::vector<std::string> fap_text_player_notes(const FapTextStats& seq, const FapTextWriteOptions& o) {
   std::vector<std::string> notes;
-  const bool fap12 = masks_fap12(seq);
+  const bool fap12 = seq.fap12;
   if (o.dialect == FapTextDialect::kMask69) {
     notes.push_back("69 mask tokens: Greta's layout; Xface and VREng read 68 and would misread the file");
     return notes;
@@ -722,8 +760,7 @@ std::vector<std::string> fap_text_player_notes(const FapSequence& seq, const Fap
     return notes;
   }
   if (*o.player != FapPlayer::kXface && fap12) {
-    std::size_t lossy = 0;
-    for (const FapFrame& f : seq.frames) lossy += as_mask69(f) != f;
+    const std::size_t lossy = seq.mask69_lossy;
     if (lossy > 0)
       notes.push_back(std::string("FAP 1/2 one field each, as ") + (*o.player == FapPlayer::kGreta ? "Greta" : "VREng") +
                       " reads them: " + std::to_string(lossy) +

@@ -4,6 +4,7 @@
 #include "fapcast/synthesis/tongue.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 namespace fapcast {
 namespace {
@@ -61,8 +62,13 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& fram
                             std::span<const TimedPhone> phones, SampleRate sample_rate,
                             std::int64_t end_sample, const SynthesisOptions& options,
                             const std::string& source) {
+  return synthesize(graph, frame_coefficients, place_on_voice_grid(phones, sample_rate, end_sample, source), options);
+}
+
+SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
+                            TargetTimeline timeline, const SynthesisOptions& options) {
   SynthesizedTrack out;
-  out.timeline = place_on_voice_grid(phones, sample_rate, end_sample, source);
+  out.timeline = std::move(timeline);
   const auto& targets = out.timeline.phones;
   if (targets.empty()) {
     out.pca_frames.resize(0, frame_coefficients.cols());

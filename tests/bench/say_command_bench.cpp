@@ -38,6 +38,7 @@ namespace fs = std::filesystem;
 struct ChildCost {
   double cpu_s = 0.0;   // user + system
   double wall_s = 0.0;
+  double max_rss_mib = 0.0;  // peak resident set (ru_maxrss)
 };
 
 double seconds(const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); }
@@ -69,7 +70,7 @@ ChildCost run(const std::vector<std::string>& argv) {
   const double t1 = wall_now();
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error(argv[0] + " " + argv[1] + ": exited with status " + std::to_string(status));
-  return {seconds(usage.ru_utime) + seconds(usage.ru_stime), t1 - t0};
+  return {seconds(usage.ru_utime) + seconds(usage.ru_stime), t1 - t0, static_cast<double>(usage.ru_maxrss) / 1024.0};
 }
 
 struct Page {
@@ -79,14 +80,22 @@ struct Page {
 };
 
 // The page written once into a scratch folder (N copies when FAPCAST_PAGE_REPEAT=N).
-const Page& page() {
-  static const Page p = [] {
+// The page's text (FAPCAST_PAGE, else the declaration's page).
+const std::string& page_bytes() {
+  static const std::string text = [] {
     const char* named = std::getenv("FAPCAST_PAGE");
     const fs::path source = named != nullptr ? fs::path(named) : fs::path(FAPCAST_TEST_DATA) / "text/declaration-1776-page.txt";
     std::ifstream in(source, std::ios::binary);
     std::ostringstream bytes;
     bytes << in.rdbuf();
     if (!in || bytes.str().empty()) throw std::runtime_error(source.string() + ": cannot read the page");
+    return bytes.str();
+  }();
+  return text;
+}
+
+const Page& page() {
+  static const Page p = [] {
     const char* repeat_text = std::getenv("FAPCAST_PAGE_REPEAT");
     const int repeat = repeat_text != nullptr ? std::max(1, std::atoi(repeat_text)) : 1;
     Page made;
@@ -94,7 +103,7 @@ const Page& page() {
     fs::create_directories(made.dir);
     made.text = made.dir / "page.txt";
     std::ofstream out(made.text, std::ios::binary);
-    for (int i = 0; i < repeat; ++i) out << bytes.str() << "\n\n";
+    for (int i = 0; i < repeat; ++i) out << page_bytes() << "\n\n";
     out.close();
     return made;
   }();
@@ -177,6 +186,44 @@ void BM_SayCommandVsEspeak(benchmark::State& state) {
   state.counters["speech_s"] = wav_seconds(page().dir / "say.wav", 22050.0);
 }
 BENCHMARK(BM_SayCommandVsEspeak)->Unit(benchmark::kMillisecond)->UseManualTime();
+
+// Peak memory (the child's ru_maxrss) of `fapcast say` on range(0) pages (copies of the page,
+// as FAPCAST_PAGE_REPEAT makes them) to a .fap and its WAV: made in pieces as the speech comes
+// (the default) and at once (--piece-seconds 0, the whole-text path), both in every iteration.
+void BM_SayCommandMemory(benchmark::State& state) {
+  if (!warm(state)) return;
+  const auto pages = static_cast<int>(state.range(0));
+  const fs::path text = page().dir / ("pages-" + std::to_string(pages) + ".txt");
+  {
+    std::ofstream out(text, std::ios::binary);
+    for (int i = 0; i < pages; ++i) out << page_bytes() << "\n\n";
+  }
+  auto argv = [&](bool whole) {
+    std::vector<std::string> a{FAPCAST_EXE, "say", "--text-file", text.string(), "-o", (page().dir / "mem.fap").string(),
+                               "--wav-out", (page().dir / "mem.wav").string(), "-q"};
+    if (whole) a.insert(a.end(), {"--piece-seconds", "0"});
+    return a;
+  };
+  ChildCost pieces, whole;
+  for (auto _ : state) {
+    const ChildCost p = run(argv(false));
+    const ChildCost w = run(argv(true));
+    state.SetIterationTime(p.wall_s + w.wall_s);
+    pieces.max_rss_mib = std::max(pieces.max_rss_mib, p.max_rss_mib);
+    whole.max_rss_mib = std::max(whole.max_rss_mib, w.max_rss_mib);
+    pieces.cpu_s += p.cpu_s;
+    whole.cpu_s += w.cpu_s;
+  }
+  const auto n = static_cast<double>(state.iterations());
+  state.counters["pages"] = pages;
+  state.counters["speech_s"] = wav_seconds(page().dir / "mem.wav", 22050.0);
+  state.counters["pieces_rss_mib"] = pieces.max_rss_mib;
+  state.counters["whole_rss_mib"] = whole.max_rss_mib;
+  state.counters["pieces_cpu_ms"] = 1000.0 * pieces.cpu_s / n;
+  state.counters["whole_cpu_ms"] = 1000.0 * whole.cpu_s / n;
+  state.counters["pieces_over_whole_cpu"] = pieces.cpu_s / whole.cpu_s;
+}
+BENCHMARK(BM_SayCommandMemory)->Arg(1)->Arg(8)->Arg(32)->Iterations(1)->Unit(benchmark::kMillisecond)->UseManualTime();
 
 }  // namespace
 

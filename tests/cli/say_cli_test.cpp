@@ -24,6 +24,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdlib>
+#include <iostream>
 #include <filesystem>
 
 namespace fapcast::test {
@@ -114,6 +116,68 @@ void EveryFormatAndRate() {
   const auto j = nlohmann::json::parse(read_file(out("a.json")));
   EXPECT_EQ(j["frames"].size(), static_cast<std::size_t>(frames_for(audio, 25)));
   EXPECT_EQ(read_file(out("a.bvh")).rfind("HIERARCHY", 0), 0u);
+}
+
+// A text short enough to be one piece: the track made as the speech comes (--piece-seconds 30) is the
+// file the whole-text path (--piece-seconds 0, everything at once) writes, byte for byte, in
+// every streamed format and option that shapes the frames or the players' notes.
+void OnePieceIsTheWholeTextToTheByte() {
+  const std::string text = "\"Maybe the thin cat will go home.\" --voice " + voice();
+  for (const std::string options : {" --viseme", " --fps 30 --expression joy:40", " --player greta --viseme",
+                                    " --fps 60 --beta 0", ""}) {
+    for (const std::string ext : {".fap", ".fba", ".json", ".bvh"}) {
+      if (ext != ".fap" && options.find("--player") != std::string::npos) continue;
+      const auto piece = run_command(fapcast("say " + text + options + " --piece-seconds 30 -o " + out("piece" + ext)));
+      const auto whole = run_command(fapcast("say " + text + options + " --piece-seconds 0 -o " + out("whole" + ext)));
+      ASSERT_EQ(piece.exit_code, 0) << options << ext << ": " << piece.err;
+      ASSERT_EQ(whole.exit_code, 0) << options << ext << ": " << whole.err;
+      EXPECT_EQ(piece.out.find("pieces"), std::string::npos) << piece.out;
+      EXPECT_TRUE(read_file(out("piece" + ext)) == read_file(out("whole" + ext))) << options << ext;
+      auto notes = [](std::string err, const std::string& file) {  // the same notes, for another file name
+        for (std::size_t at; (at = err.find(file)) != std::string::npos;) err.replace(at, file.size(), "OUT");
+        return err;
+      };
+      EXPECT_EQ(notes(piece.err, out("piece" + ext)), notes(whole.err, out("whole" + ext))) << options << ext;
+    }
+  }
+}
+
+// A text cut into pieces in its pauses (--piece-seconds 1: at the first pause of 0.25 s after a
+// second of speech) against the same text synthesised at once, frame by frame: the WAV is the
+// same, the frames are as many, and they differ only where spec/synthesis.md ("Long texts")
+// says, by at most what it says.
+void PiecesAgainstTheWholeText() {
+  const std::string text =
+      "\"Maybe the thin cat will go home. The big dog sat by the fire, and the fish swam in the sea. "
+      "We will be home soon. Move the blue box to the van, please. She saw three ships far away. "
+      "Give me the map and the cup.\" --voice " + voice() + " --viseme";
+  const auto pieces = run_command(fapcast("say " + text + " --piece-seconds 1 -o " + out("pieces.fap") + " --wav-out " +
+                                          out("pieces.wav")));
+  const auto whole = run_command(fapcast("say " + text + " --piece-seconds 0 -o " + out("whole.fap") + " --wav-out " +
+                                         out("whole.wav")));
+  ASSERT_EQ(pieces.exit_code, 0) << pieces.err;
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  EXPECT_NE(pieces.out.find("pieces cut in pauses"), std::string::npos) << pieces.out;
+  EXPECT_TRUE(read_file(out("pieces.wav")) == read_file(out("whole.wav")));
+  const FapSequence a = read_track_file(out("pieces.fap"));
+  const FapSequence b = read_track_file(out("whole.fap"));
+  ASSERT_EQ(a.frames.size(), b.frames.size());
+  std::size_t differ = 0;
+  int largest = 0;
+  for (std::size_t n = 0; n < a.frames.size(); ++n) {
+    ASSERT_EQ(a.frames[n].mask, b.frames[n].mask) << "frame " << n;
+    EXPECT_EQ(a.frames[n].viseme, b.frames[n].viseme) << "frame " << n;  // FAP 1 follows the phones alone
+    int frame_largest = 0;
+    for (int fap = 3; fap <= kFapCount; ++fap)
+      if (a.frames[n].mask.test(fap)) frame_largest = std::max(frame_largest, std::abs(a.frames[n].value(fap) - b.frames[n].value(fap)));
+    differ += frame_largest > 0;
+    largest = std::max(largest, frame_largest);
+  }
+  std::cout << "pieces against the whole text: " << differ << " of " << a.frames.size()
+            << " frames differ, by at most " << largest << " FAP units\n";
+  // The same frames through the other streamed writers.
+  ASSERT_EQ(run_command(fapcast("say " + text + " --piece-seconds 1 -o " + out("pieces.fba"))).exit_code, 0);
+  EXPECT_EQ(read_track_file(out("pieces.fba")).frames, a.frames);
 }
 
 void AnimateFromTextGridAndLab() {
@@ -533,6 +597,14 @@ TEST_F(SayCli, SayAndAnimateEndToEnd) {
   {
     SCOPED_TRACE("EveryFormatAndRate");
     EveryFormatAndRate();
+  }
+  {
+    SCOPED_TRACE("OnePieceIsTheWholeTextToTheByte");
+    OnePieceIsTheWholeTextToTheByte();
+  }
+  {
+    SCOPED_TRACE("PiecesAgainstTheWholeText");
+    PiecesAgainstTheWholeText();
   }
   {
     SCOPED_TRACE("AnimateFromTextGridAndLab");

@@ -321,6 +321,34 @@ TEST(FapTextRandom, StrictAnd69RoundTrip) {
   }
 }
 
+// The frame-at-a-time writer gives write_fap_text's bytes and the same players' notes, for
+// every layout (strict, 69 tokens, each player).
+TEST(FapTextRandom, FrameWriterIsTheWholeWriter) {
+  const std::uint64_t seed = test::test_seed();
+  SCOPED_TRACE("reproduce with FAPCAST_SEED=" + std::to_string(seed));
+  std::mt19937_64 rng(seed);
+  std::vector<FapTextWriteOptions> layouts{{}, {FapTextDialect::kMask69, std::nullopt}};
+  for (const FapPlayer p : {FapPlayer::kXface, FapPlayer::kGreta, FapPlayer::kVreng}) layouts.push_back({FapTextDialect::kStrict, p});
+  for (int trial = 0; trial < 40; ++trial) {
+    FapSequence seq = test::random_fap_sequence(rng, static_cast<std::size_t>(trial % 12));
+    if (trial % 3 == 0) seq.rate = {30000, 1001};  // not a whole rate: Xface refuses, the others note it
+    for (const FapTextWriteOptions& o : layouts) {
+      std::string whole;
+      try {
+        whole = write_fap_text(seq, o);
+      } catch (const std::invalid_argument&) {
+        EXPECT_THROW(FapTextFrameWriter(seq.rate, o), std::invalid_argument);
+        continue;
+      }
+      FapTextFrameWriter writer(seq.rate, o);
+      std::string body;
+      for (const FapFrame& f : seq.frames) writer.append(body, f);
+      EXPECT_EQ(writer.header(seq.name) + body, whole);
+      EXPECT_EQ(fap_text_player_notes(writer.stats(), o), fap_text_player_notes(seq, o));
+    }
+  }
+}
+
 // ---- the header ------------------------------------------------------------------------------
 
 struct FpsCase {

@@ -8,6 +8,9 @@
 #include <algorithm>
 #include <limits>
 #include <random>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace fapcast {
 namespace {
@@ -31,6 +34,34 @@ TEST(Timeline, FramesCarryTheirFirstSample) {
   EXPECT_EQ(timed[4].sample, 6406);  // 6406.4
   for (const auto& t : timed)
     EXPECT_EQ(sample_to_frame(t.sample, {30000, 1001}, SampleRate{48000}), t.frame.value(3));
+}
+
+// Frame by frame, the resampler gives resample_track's frames to the bit, in both modes, at
+// rates up and down and between rates with no common grid.
+TEST(TrackResampler, IsResampleTrackFrameByFrame) {
+  std::mt19937_64 rng(7);
+  std::uniform_int_distribution<std::int32_t> value(-2000, 2000);
+  for (const auto& [from, to] : std::vector<std::pair<FrameRate, FrameRate>>{
+           {{60, 1}, {25, 1}}, {{60, 1}, {30000, 1001}}, {{60, 1}, {60, 1}}, {{60, 1}, {120, 1}}, {{25, 1}, {7, 1}}}) {
+    for (const std::int64_t n : {0, 1, 2, 13, 600}) {
+      FapSequence seq = numbered_track(from, n);
+      for (FapFrame& f : seq.frames) {
+        f.set(48, value(rng));
+        if (value(rng) > 0) f.set(19, value(rng));  // masked in some frames only: held, not interpolated
+      }
+      for (const ResampleMode mode : {ResampleMode::kHold, ResampleMode::kLinear}) {
+        std::vector<FapFrame> got;
+        TrackResampler resampler(from, to, mode, [&](std::int64_t j, const FapFrame& f) {
+          EXPECT_EQ(j, static_cast<std::int64_t>(got.size()));
+          got.push_back(f);
+        });
+        for (const FapFrame& f : seq.frames) resampler.push(f);
+        resampler.finish();
+        EXPECT_EQ(got, resample_track(seq, to, mode).frames) << from.fps() << " -> " << to.fps() << ", " << n << " frames";
+        EXPECT_THROW(resampler.push(FapFrame{}), std::logic_error);
+      }
+    }
+  }
 }
 
 TEST(Timeline, DurationSampleConversionIsExactOverDays) {

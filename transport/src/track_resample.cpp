@@ -6,6 +6,9 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <stdexcept>
+#include <utility>
+#include <algorithm>
 
 namespace fapcast {
 namespace {
@@ -86,6 +89,33 @@ std::int64_t resampled_frame_count(std::int64_t n, FrameRate from, FrameRate to)
   return static_cast<std::int64_t>((num + den - 1) / den);
 }
 
+namespace {
+
+// Output frame j at source position p: a copy of `frame` (source frame k), its low-level FAPs
+// interpolated towards `next` (source frame k + 1, null when there is none) in linear mode.
+void interpolate(FapFrame& frame, const FapFrame* next, const SourcePosition& p, ResampleMode mode,
+                 CommonFaps& common) {
+  if (mode != ResampleMode::kLinear || p.remainder == 0 || next == nullptr) return;
+  const std::span<const int> faps = common.of(frame.mask, next->mask);
+  auto lerp_all = [&](auto lerp) {
+    for (const int fap : faps) {
+      std::int32_t& v = frame.values[static_cast<std::size_t>(fap - 1)];
+      v = lerp(v, next->value(fap));
+    }
+  };
+  const std::int64_t num = p.remainder, den = p.denominator;
+  if (den <= kMaxDenominatorDouble) {
+    const auto den_d = static_cast<double>(den);
+    lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded_double(a, b, num, den, den_d); });
+  } else if (den <= kMaxDenominator64) {
+    lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded<std::int64_t>(a, b, num, den); });
+  } else {
+    lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded<Int128>(a, b, num, den); });
+  }
+}
+
+}  // namespace
+
 FapSequence resample_track(const FapSequence& seq, FrameRate to,
                                   ResampleMode mode) {
   FapSequence out;
@@ -99,27 +129,49 @@ FapSequence resample_track(const FapSequence& seq, FrameRate to,
     const SourcePosition p = source_position(j, seq.rate, to);
     const std::int64_t k = p.index < n ? p.index : n - 1;
     FapFrame& frame = out.frames.emplace_back(seq.frames[static_cast<std::size_t>(k)]);
-    if (mode == ResampleMode::kLinear && p.remainder != 0 && k + 1 < n) {
-      const FapFrame& next = seq.frames[static_cast<std::size_t>(k + 1)];
-      const std::span<const int> faps = common.of(frame.mask, next.mask);
-      auto lerp_all = [&](auto lerp) {
-        for (const int fap : faps) {
-          std::int32_t& v = frame.values[static_cast<std::size_t>(fap - 1)];
-          v = lerp(v, next.value(fap));
-        }
-      };
-      const std::int64_t num = p.remainder, den = p.denominator;
-      if (den <= kMaxDenominatorDouble) {
-        const auto den_d = static_cast<double>(den);
-        lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded_double(a, b, num, den, den_d); });
-      } else if (den <= kMaxDenominator64) {
-        lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded<std::int64_t>(a, b, num, den); });
-      } else {
-        lerp_all([&](std::int32_t a, std::int32_t b) { return lerp_rounded<Int128>(a, b, num, den); });
-      }
-    }
+    interpolate(frame, k + 1 < n ? &seq.frames[static_cast<std::size_t>(k + 1)] : nullptr, p, mode, common);
   }
   return out;
+}
+
+struct TrackResampler::Common : CommonFaps {};
+
+TrackResampler::TrackResampler(FrameRate from, FrameRate to, ResampleMode mode, Sink sink)
+    : from_(from), to_(to), mode_(mode), sink_(std::move(sink)), common_(std::make_unique<Common>()) {}
+
+TrackResampler::~TrackResampler() = default;
+
+void TrackResampler::emit(std::int64_t n) {
+  // Every output frame whose source frames k and k + 1 are both in (or, at the end, the rest).
+  for (;;) {
+    if (finished_ && next_ >= resampled_frame_count(n, from_, to_)) break;
+    const SourcePosition p = source_position(next_, from_, to_);
+    const std::int64_t available = first_ + static_cast<std::int64_t>(window_.size());
+    if (!finished_ && p.index + 1 >= available) break;
+    const std::int64_t k = p.index < n ? p.index : n - 1;
+    FapFrame frame = window_[static_cast<std::size_t>(k - first_)];
+    const bool has_next = k + 1 < n;
+    interpolate(frame, has_next ? &window_[static_cast<std::size_t>(k + 1 - first_)] : nullptr, p, mode_, *common_);
+    sink_(next_, frame);
+    ++next_;
+    // Source frames before k are never needed again.
+    const auto drop = static_cast<std::size_t>(std::min<std::int64_t>(k - first_, static_cast<std::int64_t>(window_.size())));
+    window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(drop));
+    first_ += static_cast<std::int64_t>(drop);
+  }
+}
+
+void TrackResampler::push(const FapFrame& frame) {
+  if (finished_) throw std::logic_error("TrackResampler: push after finish");
+  window_.push_back(frame);
+  ++pushed_;
+  emit(pushed_);
+}
+
+void TrackResampler::finish() {
+  if (finished_) return;
+  finished_ = true;
+  if (pushed_ > 0) emit(pushed_);
 }
 
 }  // namespace fapcast

@@ -9,8 +9,8 @@
 
 namespace fapcast {
 
-FapSequence fap_track(const SynthesizedTrack& track, const FeaturePointBasis& basis,
-                      const AnimationOptions& options, std::int64_t end_sample) {
+FapSequence voice_rate_faps(const SynthesizedTrack& track, const FeaturePointBasis& basis,
+                            const AnimationOptions& options) {
   FapSequence voice_rate{options.name, {static_cast<std::uint32_t>(kVoiceFramesPerSecond), 1},
                                 pca_to_faps(track.pca_frames, basis)};
   const auto& targets = track.timeline.phones;
@@ -30,6 +30,12 @@ FapSequence fap_track(const SynthesizedTrack& track, const FeaturePointBasis& ba
       f.viseme = {static_cast<std::uint8_t>(mpeg4_viseme(track.timeline.phone_of[t])), 0, 63, false};
     }
   }
+  return voice_rate;
+}
+
+FapSequence fap_track(const SynthesizedTrack& track, const FeaturePointBasis& basis,
+                      const AnimationOptions& options, std::int64_t end_sample) {
+  FapSequence voice_rate = voice_rate_faps(track, basis, options);
   FapSequence out = voice_rate.rate == options.rate
                                ? std::move(voice_rate)
                                : resample_track(voice_rate, options.rate, ResampleMode::kLinear);

@@ -81,6 +81,34 @@ std::string write_fap_text(const FapSequence& seq, const FapTextWriteOptions& op
 // note each; empty when Xface, Greta and VREng all read it as written.
 std::vector<std::string> fap_text_player_notes(const FapSequence& seq, const FapTextWriteOptions& options);
 
+// What the players' notes depend on: the rate, whether any frame masks FAP 1 or 2, and how
+// many frames the one-field layout cannot carry (mask69_lossy_frames).
+struct FapTextStats {
+  FrameRate rate;
+  bool fap12 = false;
+  std::size_t mask69_lossy = 0;
+};
+std::vector<std::string> fap_text_player_notes(const FapTextStats& stats, const FapTextWriteOptions& options);
+
+// write_fap_text(seq, options) a frame at a time, for a track too long to hold whole: append()
+// adds each frame's lines (numbered in order), header() is then the first line for the frames
+// appended. Header then frames are the bytes write_fap_text gives for the same frames. Throws
+// std::invalid_argument as write_fap_text does (the rate, on construction; the frame count).
+class FapTextFrameWriter {
+ public:
+  FapTextFrameWriter(FrameRate rate, const FapTextWriteOptions& options);
+  void append(std::string& out, const FapFrame& frame);
+  std::string header(std::string_view name) const;
+  std::uint64_t frames() const { return frames_; }
+  const FapTextStats& stats() const { return stats_; }
+
+ private:
+  bool mask69_ = false;
+  bool single_ = false;
+  std::uint64_t frames_ = 0;
+  FapTextStats stats_;
+};
+
 // The header's name token for `name`: invalid UTF-8 becomes U+FFFD, every space, tab or
 // control character becomes '_', and an empty name becomes "unnamed" — so that readers that
 // take the name as one token stay in step.

@@ -58,4 +58,10 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& fram
                             std::int64_t end_sample = 0, const SynthesisOptions& options = {},
                             const std::string& source = "phones");
 
+// The same for target phones already on the voice grid (place_on_voice_grid's rules). They
+// need not start at frame 0: the search, the concatenation and the tongue see only the phones'
+// classes, lengths and frames relative to each other (the pieces of a long text, spec/synthesis.md).
+SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
+                            TargetTimeline timeline, const SynthesisOptions& options = {});
+
 }  // namespace fapcast

@@ -5,6 +5,9 @@
 #include "fapcast/codec/fap_frame.hpp"
 
 #include <cstdint>
+#include <deque>
+#include <functional>
+#include <memory>
 
 namespace fapcast {
 
@@ -32,5 +35,34 @@ std::int64_t resampled_frame_count(std::int64_t n, FrameRate from, FrameRate to)
 // The track at rate `to`. Preconditions: both rates valid. An empty track stays empty.
 FapSequence resample_track(const FapSequence& seq, FrameRate to,
                                   ResampleMode mode);
+
+// resample_track frame by frame, for a track too long to hold: source frames are pushed in
+// order, and `sink` gets each output frame (its index j and the frame) as soon as the source
+// frames it reads are in; finish() gives the rest. The frames are those resample_track gives for
+// all the frames pushed, to the bit; it keeps only the source frames still to be read (two).
+class TrackResampler {
+ public:
+  using Sink = std::function<void(std::int64_t j, const FapFrame& frame)>;
+  TrackResampler(FrameRate from, FrameRate to, ResampleMode mode, Sink sink);
+  ~TrackResampler();
+  TrackResampler(const TrackResampler&) = delete;
+  TrackResampler& operator=(const TrackResampler&) = delete;
+  void push(const FapFrame& frame);  // std::logic_error after finish()
+  void finish();
+  std::int64_t frames_out() const { return next_; }
+
+ private:
+  struct Common;
+  void emit(std::int64_t n);
+  FrameRate from_, to_;
+  ResampleMode mode_;
+  Sink sink_;
+  std::unique_ptr<Common> common_;
+  std::deque<FapFrame> window_;  // source frames first_, first_ + 1, ...
+  std::int64_t first_ = 0;
+  std::int64_t pushed_ = 0;
+  std::int64_t next_ = 0;  // the next output frame
+  bool finished_ = false;
+};
 
 }  // namespace fapcast

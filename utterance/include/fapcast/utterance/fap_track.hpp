@@ -26,6 +26,11 @@ ExpressionField expression_field(const ExpressionBlend& blend);
 // frame_to_sample(j, rate, sample_rate) < end_sample.
 std::int64_t frames_shown(std::int64_t end_sample, FrameRate rate, SampleRate sample_rate);
 
+// The FAP frames of `track` at the voice's 60 fps, one per row of track.pca_frames (the masks
+// and values fap_track resamples; options.rate is not used).
+FapSequence voice_rate_faps(const SynthesizedTrack& track, const FeaturePointBasis& basis,
+                            const AnimationOptions& options);
+
 // FAP frames of `track` at options.rate: frame j shows the 60 fps frames interpolated at
 // j / rate seconds (resample_track, linear), i.e. sample
 // frame_to_sample(j, rate, sample_rate) of the WAV; exactly the frames shown before

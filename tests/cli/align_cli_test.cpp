@@ -105,5 +105,18 @@ TEST(AlignCli, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("align a.wav --text hi")).exit_code, 2);  // no -o
 }
 
+// An accent espeak-ng does not have is a usage mistake that says where the accents come from,
+// before any file is read (a.wav does not exist).
+TEST(AlignCli, AnUnknownLangIsAUsageErrorNamingEspeakNgsVoices) {
+  for (const std::string command : {"align a.wav --text hi --lang en-xx -o a.TextGrid", "animate a.wav --text hi --lang en-xx -o a.fap",
+                                    "eval align " + std::string(FAPCAST_TEST_DATA) + " --lang en-xx"}) {
+    const auto r = run_command(fapcast(command));
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("--lang 'en-xx': not an installed espeak-ng language (espeak-ng --voices lists them)"),
+              std::string::npos)
+        << command << ": " << r.err;
+  }
+}
+
 }  // namespace
 }  // namespace fapcast::test

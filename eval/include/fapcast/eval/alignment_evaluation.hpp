@@ -11,6 +11,7 @@
 #include "fapcast/core/sample_rate.hpp"
 #include "fapcast/eval/boundary_agreement.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
+#include "fapcast/recognise/speech_aligner.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -55,8 +56,10 @@ struct AlignmentScore {
 
 // Aligns (with the transcript) and recognises (without) every recording, and scores both against
 // its labels; one score per set in the order of `recordings`, then "all hand-labelled" when two
-// sets or more are. Throws InputError for unreadable files; a recording the aligner refuses is an error.
-std::vector<AlignmentScore> evaluate_alignment(std::span<const ReferenceRecording> recordings);
+// sets or more are, with the aligner's `settings` (its accent). Throws InputError for unreadable
+// files; a recording the aligner refuses is an error.
+std::vector<AlignmentScore> evaluate_alignment(std::span<const ReferenceRecording> recordings,
+                                               const AlignerSettings& settings = {});
 
 // The scores as a text table (one row per set: recordings, seconds, boundaries and their share
 // within 10/20/25/50 ms, frames and their share in class), headed by `command` (what reproduces it).

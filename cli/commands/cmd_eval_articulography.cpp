@@ -1,4 +1,4 @@
-// `fapcast eval articulography EMA SPEECH.wav [ALIGNMENT] [--transcript FILE | --text TEXT] [--voice V]
+// `fapcast eval articulography EMA SPEECH.wav [ALIGNMENT] [--transcript FILE | --text TEXT] [--lang L] [--voice V]
 // [--json-out FILE] [--svg-out FILE]`: animates a recording as `animate` does (from its phone
 // alignment, or from the phones fapcast finds in it) and compares the face with the talker's real
 // articulography (spec/articulography.md, "Evaluation against articulography"). With both an

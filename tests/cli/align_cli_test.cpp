@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace fapcast::test {
 namespace {
@@ -108,8 +109,10 @@ TEST(AlignCli, MistakesExitTwo) {
 // An accent espeak-ng does not have is a usage mistake that says where the accents come from,
 // before any file is read (a.wav does not exist).
 TEST(AlignCli, AnUnknownLangIsAUsageErrorNamingEspeakNgsVoices) {
-  for (const std::string command : {"align a.wav --text hi --lang en-xx -o a.TextGrid", "animate a.wav --text hi --lang en-xx -o a.fap",
-                                    "eval align " + std::string(FAPCAST_TEST_DATA) + " --lang en-xx"}) {
+  const std::vector<std::string> commands = {"align a.wav --text hi --lang en-xx -o a.TextGrid",
+                                             "animate a.wav --text hi --lang en-xx -o a.fap",
+                                             "eval align " + std::string(FAPCAST_TEST_DATA) + " --lang en-xx"};
+  for (const std::string& command : commands) {
     const auto r = run_command(fapcast(command));
     EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
     EXPECT_NE(r.err.find("--lang 'en-xx': not an installed espeak-ng language (espeak-ng --voices lists them)"),

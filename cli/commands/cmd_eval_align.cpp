@@ -54,7 +54,7 @@ const cli::Registration reg{"eval align", [](CLI::App& app) {
     std::string command = "fapcast eval align " + args->data;
     for (const std::string& name : args->recordings) command += " --recording " + name;
     if (!args->lang.empty()) command += " --lang " + args->lang;
-    const std::vector<AlignmentScore> scores = evaluate_alignment(chosen, {.language = args->lang});
+    const std::vector<AlignmentScore> scores = evaluate_alignment(chosen, args->lang);
     std::cout << format_alignment_table(scores, command);
     if (!args->json.empty()) write_file_atomically(args->json, alignment_json(scores, command).dump(2) + "\n");
   });

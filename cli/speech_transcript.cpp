@@ -8,6 +8,7 @@
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/core/text_input.hpp"
 #include "fapcast/core/wav_file.hpp"
+#include "fapcast/frontend/espeak_language.hpp"
 #include "fapcast/recognise/speech_aligner.hpp"
 
 namespace fapcast::cli {
@@ -17,11 +18,17 @@ void add_transcript_options(CLI::App& command, TranscriptArgs& args) {
                      "What the speech says, as a UTF-8 text file: its phones are found by forced alignment "
                      "(spec/recognise.md); without it or --text, what the speech says is recognised");
   args.text_option = command.add_option("--text", args.text, "What the speech says, as text (instead of --transcript FILE)");
+  command.add_option("--lang", args.lang,
+                     "The accent the speech is read in, as an espeak-ng language (`espeak-ng --voices`: en-gb, "
+                     "en-gb-scotland, ...): espeak-ng's reading of each word in it is one more pronunciation to align "
+                     "with (spec/recognise.md, \"Accents\"); default: the US dictionary's only");
 }
 
 SpeechAlignment align_recording(const std::string& wav, const TranscriptArgs& args, bool quiet) {
   if (args.file_given() && args.text_given())
     throw UsageError("give what the speech says with --transcript FILE or --text TEXT, not both");
+  if (!args.lang.empty() && !espeak_language_installed(args.lang))
+    throw UsageError("--lang '" + args.lang + "': not an installed espeak-ng language (espeak-ng --voices lists them)");
   const bool recognised = !args.given();
   const std::string source = args.file_given() ? args.file : "--text";
   std::optional<Transcript> transcript;
@@ -29,7 +36,7 @@ SpeechAlignment align_recording(const std::string& wav, const TranscriptArgs& ar
     transcript = parse_transcript(args.file_given() ? decode_text(read_file(args.file), args.file, "transcript") : args.text,
                                   source);
   const Audio recorded = read_wav(wav);
-  SpeechAligner aligner;
+  SpeechAligner aligner({.language = args.lang});
   SpeechAlignment found = recognised ? aligner.recognise(recorded, wav) : aligner.align(recorded, *transcript, wav);
   if (!quiet) {
     if (recorded.channels > 1)

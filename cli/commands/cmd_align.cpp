@@ -1,4 +1,4 @@
-// `fapcast align SPEECH.wav [--transcript FILE | --text TEXT] -o OUT.TextGrid [-q]`: the phones and
+// `fapcast align SPEECH.wav [--transcript FILE | --text TEXT] [--lang L] -o OUT.TextGrid [-q]`: the phones and
 // words of recorded speech found by forced alignment to its transcript, or by recognition without
 // one, as a TextGrid (spec/recognise.md).
 // Argument parsing only.

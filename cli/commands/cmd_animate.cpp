@@ -52,6 +52,8 @@ const cli::Registration reg{"animate", [](CLI::App& app) {
         if (!args->align.empty() && !args->alignment_out.empty())
           throw cli::UsageError("animate: --alignment-out writes the alignment found (from --transcript, --text or "
                                 "recognition), not an ALIGNMENT given");
+        if (!args->align.empty() && !args->transcript.lang.empty())
+          throw cli::UsageError("animate: --lang is the accent of a transcript or recognition, not of an ALIGNMENT given");
         if (args->align.empty()) {
           if (!args->alignment.tier.empty() || !args->alignment.phone_set.empty())
             throw cli::UsageError("animate: --tier and --phone-set read an ALIGNMENT file");

@@ -1,4 +1,4 @@
-// `fapcast eval articulography EMA SPEECH.wav [ALIGNMENT] [--transcript FILE | --text TEXT] [--voice V]
+// `fapcast eval articulography EMA SPEECH.wav [ALIGNMENT] [--transcript FILE | --text TEXT] [--lang L] [--voice V]
 // [--json-out FILE] [--svg-out FILE]`: animates a recording as `animate` does (from its phone
 // alignment, or from the phones fapcast finds in it) and compares the face with the talker's real
 // articulography (spec/articulography.md, "Evaluation against articulography"). With both an
@@ -74,6 +74,8 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
       throw cli::UsageError("eval articulography: give what the speech says with --transcript FILE or --text TEXT, not both");
     if (args->align.empty() && (!args->alignment.tier.empty() || !args->alignment.phone_set.empty()))
       throw cli::UsageError("eval articulography: --tier and --phone-set read an ALIGNMENT file");
+    if (!args->align.empty() && !args->transcript.given() && !args->transcript.lang.empty())
+      throw cli::UsageError("eval articulography: --lang is the accent of the own alignment: give --transcript or --text too");
     cli::check_output_writable(args->json);  // before the voice is read and the speech animated
     cli::check_output_writable(args->svg);
     const MarkerFrames<Millimetres> ema = read_ema(read_file(args->ema), args->ema);
@@ -81,6 +83,7 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
     if (!args->align.empty()) command += " " + shell_word(args->align);
     if (args->transcript.file_given()) command += " --transcript " + shell_word(args->transcript.file);
     if (args->transcript.text_given()) command += " --text " + shell_word(args->transcript.text);
+    if (!args->transcript.lang.empty()) command += " --lang " + shell_word(args->transcript.lang);
     if (!args->voice.empty()) command += " --voice " + shell_word(args->voice);
     command += cli::synthesis_options_text(args->options);
     ArticulographySettings settings;
@@ -104,7 +107,8 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
                             cli::phones_from_alignment(args->wav, args->align, args->alignment, "eval articulography",
                                                        args->quiet)});
     if (args->align.empty() || args->transcript.given())
-      animations.push_back({args->transcript.given() ? "own alignment (forced, transcript)" : "own alignment (recognised)",
+      animations.push_back({std::string(args->transcript.given() ? "own alignment (forced, transcript" : "own alignment (recognised") +
+                                ", accent " + (args->transcript.lang.empty() ? "US dictionary" : args->transcript.lang) + ")",
                             args->wav, cli::phones_from_recording(args->wav, args->transcript, args->quiet)});
     for (const Animation& a : animations)
       check_articulography_inputs(ema, args->ema, a.speech.phones, a.speech.sample_rate, a.source);

@@ -8,6 +8,7 @@
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/core/text_input.hpp"
 #include "fapcast/core/wav_file.hpp"
+#include "fapcast/frontend/espeak_language.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
 
 #include <algorithm>
@@ -47,9 +48,7 @@ const cli::Registration reg{"say", [](CLI::App& app) {
           throw cli::UsageError("say: give the text as TEXT, as - (standard input) or with --text-file FILE (one of them)");
         // Listing espeak-ng's voices reads every voice file (5 ms): only for a language or
         // variant the user named (the default, en-us, is the front-end's own).
-        const auto languages = args->language == kDefaultLanguage ? std::vector<EspeakLanguage>{} : espeak_languages();
-        if (args->language != kDefaultLanguage &&
-            std::none_of(languages.begin(), languages.end(), [&](const EspeakLanguage& l) { return l.code == args->language; }))
+        if (args->language != kDefaultLanguage && !espeak_language_installed(args->language))
           throw cli::UsageError("say: --lang '" + args->language + "': not an installed espeak-ng language (espeak-ng --voices lists them)");
         const auto variants = args->variant.empty() ? std::vector<std::string>{} : espeak_variants();
         if (!args->variant.empty() && std::find(variants.begin(), variants.end(), args->variant) == variants.end())

@@ -82,9 +82,10 @@ std::vector<ReferenceRecording> reference_recordings(const std::string& data_dir
   return out;
 }
 
-std::vector<AlignmentScore> evaluate_alignment(std::span<const ReferenceRecording> recordings) {
+std::vector<AlignmentScore> evaluate_alignment(std::span<const ReferenceRecording> recordings,
+                                               const std::string& language) {
   std::vector<AlignmentScore> out;
-  SpeechAligner aligner;
+  SpeechAligner aligner({.language = language});
   std::vector<AlignmentScore> each(recordings.size());
   // all alignments first, then all recognitions: pocketsphinx's dither draws from one process-wide
   // generator, so a figure depends on what the process decoded before it

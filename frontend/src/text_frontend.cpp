@@ -1,5 +1,7 @@
 #include "fapcast/frontend/text_frontend.hpp"
 
+#include "fapcast/frontend/espeak_language.hpp"
+
 #include <espeak-ng/speak_lib.h>
 
 #include <algorithm>
@@ -413,6 +415,11 @@ const std::vector<std::string>& cached_variants() {
 }
 
 }  // namespace
+
+bool espeak_language_installed(std::string_view code) {
+  const auto& languages = cached_languages();
+  return std::any_of(languages.begin(), languages.end(), [&](const EspeakLanguage& l) { return l.code == code; });
+}
 
 bool append_timing(Speech& all, Speech&& part, std::int64_t offset) {
   if (part.phones.empty()) return false;

@@ -14,6 +14,7 @@
 #include "pauses.hpp"
 #include "fapcast/recognise/resample.hpp"
 #include "fapcast/core/input_error.hpp"
+#include "fapcast/frontend/espeak_language.hpp"
 #include "fapcast/frontend/text_frontend.hpp"
 #include "fapcast/phonetics/phone.hpp"
 
@@ -91,6 +92,29 @@ std::string seconds(std::int64_t sample, std::int64_t rate) {
 bool is_noise(const std::string& w) { return w == "[NOISE]" || w == "[SPEECH]" || (w.size() > 2 && w.front() == '+'); }
 bool is_silence(const std::string& w) { return w == "<sil>" || w == "<s>" || w == "</s>" || w == "SIL"; }
 
+// espeak-ng's phones (SIL left out) of each word of `t`, reading the whole transcript in
+// `language`: a word's phones are those of the words espeak-ng reports inside its bytes; empty
+// for a word it says nothing for.
+std::vector<std::vector<Phone>> spoken_words(const Transcript& t, const std::string& language) {
+  SpeakOptions options;
+  options.language = language;
+  const Speech spoken = speak(t.text, options);
+  std::vector<std::vector<Phone>> out(t.words.size());
+  for (std::size_t p = 0; p < spoken.phones.size(); ++p) {
+    const int wi = spoken.events[p].word;
+    if (wi < 0 || spoken.phones[p].phone == Phone::SIL) continue;
+    const auto& sw = spoken.words[static_cast<std::size_t>(wi)];
+    // the transcript word starting last at or before it (words are in byte order)
+    const auto after = std::upper_bound(t.words.begin(), t.words.end(), sw.byte_offset,
+                                        [](std::size_t b, const TranscriptWord& w) { return b < w.byte_offset; });
+    if (after == t.words.begin()) continue;
+    const auto& w = *(after - 1);
+    if (sw.byte_offset < w.byte_offset + w.text.size())
+      out[static_cast<std::size_t>(after - 1 - t.words.begin())].push_back(spoken.phones[p].phone);
+  }
+  return out;
+}
+
 }  // namespace
 
 struct SpeechAligner::Impl {
@@ -114,12 +138,14 @@ struct SpeechAligner::Impl {
     return *words;
   }
 
-  // Dictionary entries of every word; words the dictionary lacks get espeak-ng's pronunciation,
-  // added to both decoders under their key.
+  // Dictionary entries of every word; words the dictionary lacks get espeak-ng's pronunciation
+  // (en-us), added to both decoders under their key. With settings.language, each word also gets
+  // espeak-ng's reading of the transcript in that language (in context: its weak forms, linking
+  // r) as one more variant where it differs from those, under the key "word(PH_PH_...)".
   std::vector<WordEntry> entries(const Transcript& t) {
     Decoder& d = phone_decoder();
     std::vector<WordEntry> out(t.words.size());
-    std::optional<Speech> spoken;
+    std::optional<std::vector<std::vector<Phone>>> us;
     std::vector<std::pair<std::string, std::string>> added;
     for (std::size_t i = 0; i < t.words.size(); ++i) {
       const auto& w = t.words[i];
@@ -129,15 +155,8 @@ struct SpeechAligner::Impl {
         out[i].variants.push_back(parse_pronunciation(prons[k]));
       }
       if (!prons.empty()) continue;
-      if (!spoken) spoken = speak(t.text);
-      std::vector<Phone> ph;
-      for (std::size_t p = 0; p < spoken->phones.size(); ++p) {
-        const int wi = spoken->events[p].word;
-        if (wi < 0 || spoken->phones[p].phone == Phone::SIL) continue;
-        const auto& sw = spoken->words[static_cast<std::size_t>(wi)];
-        if (sw.byte_offset >= w.byte_offset && sw.byte_offset < w.byte_offset + w.text.size())
-          ph.push_back(spoken->phones[p].phone);
-      }
+      if (!us) us = spoken_words(t, std::string(kDefaultLanguage));
+      const std::vector<Phone>& ph = (*us)[i];
       if (ph.empty())
         throw InputError({"transcript", std::nullopt, w.byte_offset}, "no-pronunciation",
                          "espeak-ng says nothing for '" + w.text + "'");
@@ -145,9 +164,25 @@ struct SpeechAligner::Impl {
       out[i].variants.push_back(ph);
       added.emplace_back(w.key, pronunciation_string(ph));
     }
-    if (!added.empty()) {
-      d.add_words(added);
-      if (words) words->add_words(added);
+    if (!added.empty()) d.add_words(added);  // the base words first: a "word(...)" key needs its word
+    std::vector<std::pair<std::string, std::string>> variants;
+    if (!settings.language.empty()) {
+      const std::vector<std::vector<Phone>> read = spoken_words(t, settings.language);
+      for (std::size_t i = 0; i < t.words.size(); ++i) {
+        const std::vector<Phone>& ph = read[i];
+        auto& e = out[i];
+        if (ph.empty() || std::find(e.variants.begin(), e.variants.end(), ph) != e.variants.end()) continue;
+        std::string key = t.words[i].key + "(" + pronunciation_string(ph) + ")";
+        std::replace(key.begin(), key.end(), ' ', '_');
+        e.keys.push_back(key);
+        e.variants.push_back(ph);
+        variants.emplace_back(key, pronunciation_string(ph));
+      }
+      if (!variants.empty()) d.add_words(variants);
+    }
+    if (words) {
+      if (!added.empty()) words->add_words(added);
+      if (!variants.empty()) words->add_words(variants);
     }
     return out;
   }
@@ -449,6 +484,9 @@ void check_length(const Audio& speech, const std::string& source) {
 SpeechAligner::SpeechAligner(const AlignerSettings& settings) : impl_(std::make_unique<Impl>()) {
   if (settings.frames_per_second != 100 && settings.frames_per_second != 200)
     throw std::invalid_argument("SpeechAligner: frames_per_second must be 100 or 200");
+  if (!settings.language.empty() && !espeak_language_installed(settings.language))
+      throw std::invalid_argument("SpeechAligner: unknown language '" + settings.language +
+                                  "' (`espeak-ng --voices` lists the installed ones)");
   impl_->settings = settings;
 }
 

@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace fapcast::test {
 namespace {
@@ -103,6 +104,21 @@ TEST(AlignCli, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("align a.wav --text hi --transcript a.txt -o a.TextGrid")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("align a.wav --text hi -o a.lab")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("align a.wav --text hi")).exit_code, 2);  // no -o
+}
+
+// An accent espeak-ng does not have is a usage mistake that says where the accents come from,
+// before any file is read (a.wav does not exist).
+TEST(AlignCli, AnUnknownLangIsAUsageErrorNamingEspeakNgsVoices) {
+  const std::vector<std::string> commands = {"align a.wav --text hi --lang en-xx -o a.TextGrid",
+                                             "animate a.wav --text hi --lang en-xx -o a.fap",
+                                             "eval align " + std::string(FAPCAST_TEST_DATA) + " --lang en-xx"};
+  for (const std::string& command : commands) {
+    const auto r = run_command(fapcast(command));
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("--lang 'en-xx': not an installed espeak-ng language (espeak-ng --voices lists them)"),
+              std::string::npos)
+        << command << ": " << r.err;
+  }
 }
 
 }  // namespace

@@ -57,7 +57,8 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
                                      out("a.json") + " --svg-out " + out("a.svg") + " -q"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("## animated from the reference alignment"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("## animated from the own alignment (forced, transcript)"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("## animated from the own alignment (forced, transcript, accent US dictionary)"), std::string::npos)
+      << r.out;
   EXPECT_NE(r.out.find("## own alignment against the reference alignment"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find(voice()), std::string::npos) << "the voice is named: " << r.out;
   const auto j = nlohmann::json::parse(read_file(out("a.json")));
@@ -123,8 +124,17 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
   const std::string svg = read_file(out("a.svg"));
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   for (const char* label : {"lip aperture (mm", "jaw opening (mm", "jaw opening (chin 2.1) (mm", "lower-lip protrusion",
-                            "tongue-tip height", "real (EMA)", "own alignment (forced, transcript)"})
+                            "tongue-tip height", "real (EMA)", "own alignment (forced, transcript, accent US dictionary)"})
     EXPECT_NE(svg.find(label), std::string::npos) << label;
+}
+
+// The own alignment read as southern British (MOCHA's fsew0): the command and the heading say so.
+TEST_F(ArticulographyCli, TheOwnAlignmentSaysWhichAccentItWasReadIn) {
+  const auto r = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha +
+                                     ".lab --text \"This was easy for us.\" --lang en-gb --voice " + voice() + " -q"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find(" --lang en-gb --voice "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("## animated from the own alignment (forced, transcript, accent en-gb)"), std::string::npos) << r.out;
 }
 
 // Refusals that come before any voice is opened (the voice named does not exist): exit 1 naming
@@ -170,6 +180,13 @@ TEST(ArticulographyCliInput, InputsThatCannotBeComparedAreRefused) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   r = run_command(fapcast("eval articulography " + kMocha + ".ema"));
   EXPECT_EQ(r.exit_code, 2) << r.err;
+  // an accent without a transcript to read in it
+  r = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha + ".lab --lang en-gb"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--lang is the accent of the own alignment"), std::string::npos) << r.err;
+  r = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav --text a --lang en-xx"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("espeak-ng --voices"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "fapcast/core/file_io.hpp"
 #include "fapcast/core/wav_file.hpp"
@@ -47,6 +49,37 @@ TEST(SpeechAligner, SegmentsCoverTheRecordingOnItsOwnTimeline) {
   EXPECT_EQ(a.segments.back().end_sample, a.samples);
   for (std::size_t i = 1; i < a.segments.size(); ++i) EXPECT_EQ(a.segments[i].start_sample, a.segments[i - 1].end_sample);
   EXPECT_EQ(a.segments.front().kind, SpeechSegmentKind::silence);
+}
+
+// The phones of word `word` in `a`.
+std::vector<Phone> word_phones(const SpeechAlignment& a, int word) {
+  std::vector<Phone> out;
+  for (const SpeechSegment& s : a.segments)
+    if (s.word == word && s.kind == SpeechSegmentKind::phone) out.push_back(s.phone);
+  return out;
+}
+
+// msajc003's talker is Australian, non-rhotic: the hand labels have "k H @ n s I d @ d" for
+// "considered". The US dictionary has only K AH N S IH D ER D; read in en-gb, espeak-ng adds
+// k@ns'Id3d (its 3 a schwa here), and the aligner takes it.
+TEST(SpeechAligner, ReadInEnGbAWordGetsEspeakNgsNonRhoticVariantWhereItFitsBetter) {
+  const Audio audio = read_wav(kEmu + "msajc003.wav");
+  const Transcript t = parse_transcript(read_file(kEmu + "msajc003.txt"), "msajc003.txt");
+  ASSERT_EQ(t.words[5].key, "considered");
+  const std::vector<Phone> us = word_phones(SpeechAligner().align(audio, t, "msajc003.wav"), 5);
+  const std::vector<Phone> gb = word_phones(SpeechAligner({.language = "en-gb"}).align(audio, t, "msajc003.wav"), 5);
+  using enum Phone;
+  EXPECT_EQ(us, (std::vector<Phone>{K, AH, N, S, IH, D, ER, D}));
+  EXPECT_EQ(gb, (std::vector<Phone>{K, AH, N, S, IH, D, AH, D}));
+}
+
+TEST(SpeechAligner, AnUnknownLanguageIsABugNamingEspeakNgsVoices) {
+  try {
+    SpeechAligner({.language = "en-xx"});
+    FAIL() << "no throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "SpeechAligner: unknown language 'en-xx' (`espeak-ng --voices` lists the installed ones)");
+  }
 }
 
 TEST(SpeechAligner, AFrameRateOtherThan100Or200IsABug) {

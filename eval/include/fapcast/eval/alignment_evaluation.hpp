@@ -55,8 +55,11 @@ struct AlignmentScore {
 
 // Aligns (with the transcript) and recognises (without) every recording, and scores both against
 // its labels; one score per set in the order of `recordings`, then "all hand-labelled" when two
-// sets or more are. Throws InputError for unreadable files; a recording the aligner refuses is an error.
-std::vector<AlignmentScore> evaluate_alignment(std::span<const ReferenceRecording> recordings);
+// sets or more are, every recording read in the accent `language` (AlignerSettings::language:
+// an espeak-ng language, empty for the US dictionary only). Throws InputError for unreadable
+// files; a recording the aligner refuses is an error.
+std::vector<AlignmentScore> evaluate_alignment(std::span<const ReferenceRecording> recordings,
+                                               const std::string& language = {});
 
 // The scores as a text table (one row per set: recordings, seconds, boundaries and their share
 // within 10/20/25/50 ms, frames and their share in class), headed by `command` (what reproduces it).

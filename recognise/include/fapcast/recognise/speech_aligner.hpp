@@ -22,6 +22,12 @@ struct AlignerSettings {
   // in its length (spec/recognise.md, "Long recordings"); false aligns it in one piece (the
   // comparison of tests/bench/speech_aligner_bench.cpp).
   bool in_pieces = true;
+  // The accent the transcript is read in: an espeak-ng language (`espeak-ng --voices`: "en-gb").
+  // Each word gets espeak-ng's reading of the transcript in it (weak forms, linking r, in
+  // context) as one more pronunciation variant where it differs from the dictionary's (CMUdict,
+  // US English). Empty (the default): the dictionary's variants only. An unknown language:
+  // invalid_argument.
+  std::string language{};
 };
 
 class SpeechAligner {

@@ -364,6 +364,11 @@ void Server::State::say(HttpConnection& conn, const HttpRequest& request) {
   if (!r.interrupt && existing && existing->speaking && existing->queue.size() >= config.limits.max_queue)
     throw RequestError(429, "queue-full", "channel '" + r.channel + "' has " + std::to_string(existing->queue.size()) +
                                               " sessions waiting (limit " + std::to_string(config.limits.max_queue) + ")");
+  if (srtp && srtp_ssrcs.size() + 2 * destinations.size() > config.limits.max_srtp_streams)
+    throw RequestError(503, "srtp-streams-exhausted",
+                       "the SRTP key has served " + std::to_string(srtp_ssrcs.size()) + " of the " +
+                           std::to_string(config.limits.max_srtp_streams) +
+                           " streams it may (RFC 3711: each SSRC once per key); start the server with a new key");
   std::vector<RtpDestination> planned;
   for (const udp::endpoint& d : destinations) {
     RtpDestination p{d, {}};

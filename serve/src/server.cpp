@@ -117,7 +117,7 @@ void Server::State::accept() {
       socket.non_blocking(true, ignored);
       asio::write(socket, asio::buffer(wire), ignored);  // a few hundred bytes into an empty send buffer
       self->log_line("? \"-\" 503 too-many-connections");
-      linger_close(std::move(socket));
+      self->close_lingering(std::move(socket));
       return self->accept();
     }
     {
@@ -134,6 +134,10 @@ void Server::State::accept() {
       };
       handler.on_refused = [weak](int status) {
         if (auto s = weak.lock()) s->count([status](ServeStats& st) { ++(status == 400 ? st.bad_requests : st.over_limits); });
+      };
+      handler.close_lingering = [weak](tcp::socket s) {
+        if (auto st = weak.lock()) st->close_lingering(std::move(s));
+        else linger_close(std::move(s));
       };
       handler.on_closed = [weak](HttpConnection& c) {
         if (auto s = weak.lock()) {
@@ -152,6 +156,17 @@ void Server::State::accept() {
   });
 }
 
+void Server::State::close_lingering(tcp::socket socket) {
+  ++lingering;
+  refresh_gauges();
+  linger_close(std::move(socket), [weak = weak_from_this()] {
+    if (auto s = weak.lock()) {
+      --s->lingering;
+      s->refresh_gauges();
+    }
+  });
+}
+
 void Server::State::refresh_gauges() {
   std::size_t speaking = 0, queued = 0, clients = 0;
   for (const auto& [name, ch] : channels) {
@@ -164,6 +179,7 @@ void Server::State::refresh_gauges() {
   stats.sessions_queued = queued;
   stats.clients = clients;
   stats.connections = connections.size() + clients_open;
+  stats.connections_lingering = lingering;
 }
 
 ServeStats Server::State::snapshot() const {
@@ -208,7 +224,8 @@ json Server::State::stats_json() const {
           {"late_max_ms", ms(s.late_max)},
           {"wake_p50_ms", ms(s.wake_p50)},
           {"wake_p99_ms", ms(s.wake_p99)},
-          {"wake_max_ms", ms(s.wake_max)}};
+          {"wake_max_ms", ms(s.wake_max)},
+          {"connections_lingering", s.connections_lingering}};
 }
 
 HttpResponse Server::State::json_response(http::status status, const json& body, unsigned version) const {

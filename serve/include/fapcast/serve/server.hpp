@@ -41,6 +41,7 @@ struct ServeStats {
   std::uint64_t clients_accepted = 0;
   std::uint64_t clients_dropped_slow = 0;  // dropped for a full per-client queue
   std::size_t connections = 0;           // open TCP connections
+  std::size_t connections_lingering = 0;  // refused ones closing (linger_close: up to 1 s or 1 MiB), not in `connections`
   std::uint64_t frames = 0;              // frame ticks over all sessions
   std::uint64_t rtp_packets = 0;         // animation + audio RTP packets sent
   std::uint64_t live_messages = 0;       // WebSocket messages queued to clients

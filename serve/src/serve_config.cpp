@@ -151,6 +151,8 @@ void apply_serve_config(std::string_view json_text, const std::string& source, c
       c.synthesis_threads = r.integer(v, key, 1, 64);
     } else if (key == "sentence_bytes") {
       c.sentence_bytes = r.integer(v, key, 16, 4096);
+    } else if (key == "pacer_priority") {
+      c.pacer_priority = static_cast<int>(r.integer(v, key, 0, 99));
     } else if (key == "limits") {
       apply_limits(v, r, c.limits);
     } else {

@@ -10,6 +10,7 @@
 #include "fapcast/transport/udp_url.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -62,7 +63,7 @@ Server::State::State(asio::io_context& io_, ServeConfig config_, ServeVoices voi
     speakers.emplace(name, std::make_shared<const Speaker>(voice, settings, "voice '" + name + "'"));
   }
   worker = std::make_unique<SynthesisWorker>(config.synthesis_threads);
-  pacer = std::make_unique<FramePacer>(io);
+  pacer = std::make_unique<FramePacer>(io, config.pacer_priority);
 }
 
 Server::State::~State() {
@@ -194,6 +195,7 @@ ServeStats Server::State::snapshot() const {
   s.wake_p50 = paced.wake_p50;
   s.wake_p99 = paced.wake_p99;
   s.wake_max = paced.wake_max;
+  s.pacer_priority = pacer->scheduling().priority;
   return s;
 }
 
@@ -225,7 +227,8 @@ json Server::State::stats_json() const {
           {"wake_p50_ms", ms(s.wake_p50)},
           {"wake_p99_ms", ms(s.wake_p99)},
           {"wake_max_ms", ms(s.wake_max)},
-          {"connections_lingering", s.connections_lingering}};
+          {"connections_lingering", s.connections_lingering},
+          {"pacer_priority", s.pacer_priority}};
 }
 
 HttpResponse Server::State::json_response(http::status status, const json& body, unsigned version) const {
@@ -601,6 +604,17 @@ Server::Server(asio::io_context& io, ServeConfig config, ServeVoices voices, std
     : state_(std::make_shared<State>(io, std::move(config), std::move(voices), std::move(log))) {
   state_->bind();
   state_->log_line("fapcast serve: listening on " + url());
+  const FramePacer::Scheduling pacing = state_->pacer->scheduling();
+  if (pacing.priority > 0) {
+    state_->log_line("fapcast serve: frame pacer at real-time priority " + std::to_string(pacing.priority) + " (SCHED_FIFO)");
+  } else if (pacing.asked > 0) {
+    // Said once, at start, and the server runs on: frames are still paced, only a busy machine
+    // may delay them (stats' pacer_priority is 0).
+    state_->log_line("fapcast serve: frame pacer: real-time priority " + std::to_string(pacing.asked) +
+                     " (SCHED_FIFO) refused: " + std::strerror(pacing.error) +
+                     " (it needs CAP_SYS_NICE or RLIMIT_RTPRIO >= " + std::to_string(pacing.asked) +
+                     "); running at the default priority");
+  }
 }
 
 Server::~Server() {

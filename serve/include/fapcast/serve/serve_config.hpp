@@ -49,6 +49,9 @@ struct ServeConfig {
   std::filesystem::path three_dir = "/usr/share/javascript/three";  // Debian libjs-three
   std::size_t synthesis_threads = 1;
   std::size_t sentence_bytes = 120;            // the longest piece of text synthesised at once (sentence_offsets)
+  // SCHED_FIFO priority (1..99) of the frame pacer's thread; 0: the default class. Opt-in: a
+  // refusal by the system is logged and the server runs on (spec/serve.md, "Real-time priority").
+  int pacer_priority = 0;
   ServeLimits limits;
 };
 

@@ -48,6 +48,7 @@ struct ServeStats {
   std::chrono::nanoseconds late_p50{0}, late_p99{0}, late_max{0};  // frame sends past their deadline
   // The frame pacer's timer waking past the earliest deadline due (the scheduler's share of the lateness).
   std::chrono::nanoseconds wake_p50{0}, wake_p99{0}, wake_max{0};
+  int pacer_priority = 0;                // SCHED_FIFO priority the pacer's thread runs at; 0: the default class
 };
 
 // The voices a server speaks with, by the name a request gives ("default" when it gives none).

@@ -6,7 +6,8 @@
 //   BM_LiveSessions/N/P: N sessions on N channels speaking at 25 fps to one RTP receiver, the
 //     server's network thread and frame pacer pinned to CPU 0 (synthesis threads and clients on
 //     CPU 1), the pacer at real-time priority P (SCHED_FIFO; 0: the default class, as served by
-//     default), both in the same run so that they see the same machine:
+//     default), both in the same run so that they see the same machine (and CPU 0's steal time
+//     over the row: the hypervisor's share of the stalls):
 //     frame-send lateness p50/p99/max as the server counts it and as the receiver sees it
 //     (kernel receive timestamps against each stream's RTP clock), the network thread's CPU
 //     share, the peak of sessions speaking at once and the memory per session (heap and RSS
@@ -29,6 +30,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
 #include <cstring>
 #include <cstdlib>
 #include <filesystem>
@@ -130,6 +132,23 @@ ThreadSched thread_sched(pid_t tid) {
 }
 ThreadSched operator-(ThreadSched a, const ThreadSched& b) {
   return {a.cpu_s - b.cpu_s, a.run_delay_s - b.run_delay_s, a.preempted - b.preempted};
+}
+
+// Time the hypervisor gave CPU `cpu` to others while this guest had work for it (/proc/stat
+// "steal", in USER_HZ ticks): a stall no priority inside the guest can prevent.
+double cpu_steal_seconds(int cpu) {
+  std::ifstream stat("/proc/stat");
+  const std::string name = "cpu" + std::to_string(cpu);
+  for (std::string label; stat >> label;) {
+    if (label != name) {
+      stat.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+      continue;
+    }
+    long long user, nice, system, idle, iowait, irq, softirq, steal = 0;
+    stat >> user >> nice >> system >> idle >> iowait >> irq >> softirq >> steal;
+    return static_cast<double>(steal) / static_cast<double>(sysconf(_SC_CLK_TCK));
+  }
+  return 0.0;
 }
 
 std::size_t heap_bytes() { return mallinfo2().uordblks; }
@@ -391,6 +410,7 @@ void BM_LiveSessions(benchmark::State& state) {
     LatenessProbe probe(sink.fd(0));
     const double cpu0 = server.io_cpu_seconds();
     const ThreadSched sched0 = server.io_sched(), pacer0 = server.pacer_sched();
+    const double steal0 = cpu_steal_seconds(0);
     const auto t0 = Clock::now();
     std::atomic<std::int64_t> ramp_end_ns{0};  // the last request answered (CLOCK_REALTIME, as the probe's)
     // Requests from 8 client threads (each answer waits for its session's first frame).
@@ -428,7 +448,9 @@ void BM_LiveSessions(benchmark::State& state) {
     const ServeStats s = server.stats();
     const double cpu = server.io_cpu_seconds() - cpu0;
     const ThreadSched sched = server.io_sched() - sched0, pacer = server.pacer_sched() - pacer0;
+    const double steal = cpu_steal_seconds(0) - steal0;
     probe.stop();
+    state.counters["cpu0_steal_ms"] = 1e3 * steal;
     state.counters["sessions_ok"] = static_cast<double>(ok);
     state.counters["peak_speaking"] = static_cast<double>(peak);
     state.counters["frames"] = static_cast<double>(s.frames);

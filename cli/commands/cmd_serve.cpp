@@ -28,6 +28,7 @@ struct ServeArgs {
   std::string three_dir;
   std::uint32_t fps = 25;
   std::size_t synthesis_threads = 1;
+  int pacer_priority = 0;
   std::size_t max_body = 0, max_text = 0, max_sessions = 0, max_queue = 0, max_clients = 0, max_connections = 0,
               client_queue = 0;
   bool quiet = false;
@@ -55,6 +56,7 @@ void run_serve(const ServeArgs& a, const CLI::App& cmd) {
   if (!a.three_dir.empty()) config.three_dir = a.three_dir;
   if (cmd.count("--fps")) config.rate = FrameRate{a.fps, 1};
   if (cmd.count("--synthesis-threads")) config.synthesis_threads = a.synthesis_threads;
+  if (cmd.count("--pacer-priority")) config.pacer_priority = a.pacer_priority;
   ServeLimits& l = config.limits;
   if (cmd.count("--max-body-bytes")) l.max_body_bytes = a.max_body;
   if (cmd.count("--max-text-bytes")) l.max_text_bytes = a.max_text;
@@ -109,6 +111,10 @@ const cli::Registration reg{"serve", [](CLI::App& app) {
   cmd->add_option("--fps", args->fps, "Frames per second of every session (default 25)")->check(CLI::Range(1, 120));
   cmd->add_option("--synthesis-threads", args->synthesis_threads, "Threads synthesising sentences (default 1)")
       ->check(CLI::Range(1, 64));
+  cmd->add_option("--pacer-priority", args->pacer_priority,
+                  "Run the frame pacer thread in SCHED_FIFO at this priority, 1-99 (needs CAP_SYS_NICE or RLIMIT_RTPRIO; "
+                  "refused: logged, runs on); 0: the default class (default 0)")
+      ->check(CLI::Range(0, 99));
   cmd->add_option("--max-body-bytes", args->max_body, "Largest request body (default 16384)")->check(CLI::Range(256, 16 << 20));
   cmd->add_option("--max-text-bytes", args->max_text, "Longest text of one request (default 4096)")->check(CLI::Range(1, 32768));
   cmd->add_option("--max-sessions", args->max_sessions, "Sessions speaking or queued (default 256)")->check(CLI::Range(1, 100000));

@@ -3,6 +3,7 @@
 #include "fapcast/transport/timeline.hpp"
 
 #include <pthread.h>
+#include <sched.h>
 
 #include <algorithm>
 #include <deque>
@@ -32,11 +33,20 @@ struct PacedStream {
   }
 };
 
-FramePacer::FramePacer(asio::io_context& network)
+FramePacer::FramePacer(asio::io_context& network, int realtime_priority)
     : network_(network), work_(asio::make_work_guard(io_)), timer_(io_), thread_([this] {
         pthread_setname_np(pthread_self(), "fapcast-pacer");
         io_.run();
-      }) {}
+      }) {
+  scheduling_.asked = realtime_priority;
+  if (realtime_priority <= 0) return;
+  // FIFO, not RR: the pacer is the only real-time thread and it sleeps between deadlines, so
+  // there is no peer to share a time slice with.
+  sched_param param{};
+  param.sched_priority = realtime_priority;
+  scheduling_.error = pthread_setschedparam(thread_.native_handle(), SCHED_FIFO, &param);
+  if (scheduling_.error == 0) scheduling_.priority = realtime_priority;
+}
 
 FramePacer::~FramePacer() {
   stop();
@@ -45,9 +55,17 @@ FramePacer::~FramePacer() {
 
 template <typename F>
 void FramePacer::tell(const PacedStream& s, F f) {
-  // The listener is locked on the network thread, never here: the pacer holds no session.
-  asio::post(network_, [weak = s.start.listener, f = std::move(f)]() mutable {
-    if (auto l = weak.lock()) f(*l);
+  told_.emplace_back(s.start.listener, std::move(f));
+}
+
+void FramePacer::post_told() {
+  if (told_.empty()) return;
+  // One post per wake-up, not one per frame: each post takes the network io_context's lock,
+  // which the network thread may hold while preempted. The listeners are locked on the network
+  // thread, never here: the pacer holds no session.
+  asio::post(network_, [told = std::exchange(told_, {})]() mutable {
+    for (auto& [weak, f] : told)
+      if (auto l = weak.lock()) f(*l);
   });
 }
 
@@ -60,6 +78,7 @@ FramePacer::Handle FramePacer::open(PacedStreamStart start, PacedSentence first)
     stream->deadline = stream->start.start;
     schedule(stream);
     arm();
+    post_told();
   });
   return stream;
 }
@@ -74,6 +93,7 @@ void FramePacer::add(const Handle& stream, PacedSentence next) {
     s.deadline = s.start.start + samples_to_duration(s.offset, s.start.sample_rate);
     schedule(stream);
     arm();
+    post_told();
   });
 }
 
@@ -117,10 +137,7 @@ void FramePacer::arm() {
 void FramePacer::on_timer() {
   armed_for_.reset();
   const Clock::time_point woke = Clock::now();
-  if (!due_.empty() && due_.top().deadline <= woke) {
-    std::lock_guard lock(counts_mutex_);
-    wake_.add(woke - due_.top().deadline);
-  }
+  if (!due_.empty() && due_.top().deadline <= woke) wake_.add(woke - due_.top().deadline);
   // Every frame due by now, earliest first; one sent late makes the next ones later, so "now"
   // is read again before each.
   for (Clock::time_point now = woke; !due_.empty() && due_.top().deadline <= now; now = Clock::now()) {
@@ -132,6 +149,7 @@ void FramePacer::on_timer() {
     if (!s.finished && s.current) schedule(d.stream);
   }
   arm();
+  post_told();
 }
 
 void FramePacer::send_frame(PacedStream& s, Clock::time_point now) {
@@ -175,12 +193,9 @@ void FramePacer::send_frame(PacedStream& s, Clock::time_point now) {
   }
   if (report) s.next_report = sample + rtcp_step;
   s.audio_sent = upto;
-  {
-    std::lock_guard lock(counts_mutex_);
-    ++frames_;
-    rtp_packets_ += packets;
-    late_.add(now - s.deadline);
-  }
+  frames_.fetch_add(1, std::memory_order_relaxed);
+  rtp_packets_.fetch_add(packets, std::memory_order_relaxed);
+  late_.add(now - s.deadline);
   tell(s, [f = PacedFrame{p.sentence, s.frame, here, upto, sample, s.frames_sent, now}](PacedListener& l) {
     l.on_frame_sent(f);
   });
@@ -227,8 +242,8 @@ void FramePacer::finish(PacedStream& s) {
 }
 
 FramePacer::Counts FramePacer::counts() const {
-  std::lock_guard lock(counts_mutex_);
-  return {frames_,           rtp_packets_,      late_.quantile(0.5), late_.quantile(0.99), late_.max(),
+  return {frames_.load(std::memory_order_relaxed), rtp_packets_.load(std::memory_order_relaxed),
+          late_.quantile(0.5), late_.quantile(0.99), late_.max(),
           wake_.quantile(0.5), wake_.quantile(0.99), wake_.max()};
 }
 

@@ -5,8 +5,9 @@
 // due) in deadline order. Nothing else runs on it: requests, the synthesis hand-over and the
 // live (WebSocket) clients stay on the network thread, so that a frame waits for other frames
 // only. The two threads share nothing but what they post to each other and the counters
-// (behind a mutex): the network thread hands a session's RTP senders and sentences over and
-// tells it to stop; the pacer posts back, to the network io_context, what each frame sent.
+// (atomics: the pacer takes no lock a reader could hold): the network thread hands a session's
+// RTP senders and sentences over and tells it to stop; the pacer posts back, to the network
+// io_context, what the frames of one wake-up sent, in one post.
 #include "beast.hpp"
 #include "lateness_histogram.hpp"
 #include "prepared_sentence.hpp"
@@ -15,13 +16,15 @@
 #include "fapcast/core/sample_rate.hpp"
 #include "fapcast/transport/rtp_sender.hpp"
 
+#include <atomic>
 #include <chrono>
+#include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <queue>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace fapcast {
@@ -75,8 +78,11 @@ class FramePacer {
  public:
   using Handle = std::shared_ptr<PacedStream>;
 
-  // `network`: where the listeners' calls are posted.
-  explicit FramePacer(asio::io_context& network);
+  // `network`: where the listeners' calls are posted. `realtime_priority` 1..99: the thread runs
+  // in SCHED_FIFO at that priority, so that a busy machine does not delay its wake-ups (spec/serve.md,
+  // "Real-time priority"); 0: the default class (SCHED_OTHER). A refusal (no CAP_SYS_NICE, a
+  // too-low RLIMIT_RTPRIO) leaves the default class: scheduling() says which.
+  explicit FramePacer(asio::io_context& network, int realtime_priority = 0);
   ~FramePacer();  // stop(), then joins the thread
   FramePacer(const FramePacer&) = delete;
   FramePacer& operator=(const FramePacer&) = delete;
@@ -100,6 +106,13 @@ class FramePacer {
   };
   Counts counts() const;
 
+  // The scheduling the thread got: `priority` > 0 when it runs in SCHED_FIFO; `error` the errno
+  // of the refusal when one was asked for and not given (0 otherwise).
+  struct Scheduling {
+    int asked = 0, priority = 0, error = 0;
+  };
+  Scheduling scheduling() const { return scheduling_; }
+
  private:
   struct Due {
     std::chrono::steady_clock::time_point deadline;
@@ -115,6 +128,7 @@ class FramePacer {
   void finish(PacedStream& s);  // closing reports; no more frames
   template <typename F>
   void tell(const PacedStream& s, F f);
+  void post_told();  // what tell() gathered, to the network thread, in one post
 
   asio::io_context& network_;
   asio::io_context io_;
@@ -125,9 +139,10 @@ class FramePacer {
   std::uint64_t order_ = 0;
   bool stopped_ = false;
 
-  mutable std::mutex counts_mutex_;
-  std::uint64_t frames_ = 0, rtp_packets_ = 0;
+  std::vector<std::pair<std::weak_ptr<PacedListener>, std::function<void(PacedListener&)>>> told_;
+  std::atomic<std::uint64_t> frames_{0}, rtp_packets_{0};
   LatenessHistogram late_, wake_;
+  Scheduling scheduling_;
 
   std::thread thread_;  // last: starts when the rest is ready
 };

@@ -3,6 +3,7 @@
 #include "fapcast/serve/request_error.hpp"
 
 #include <array>
+#include <utility>
 #include <sstream>
 
 namespace fapcast {
@@ -12,7 +13,8 @@ constexpr std::size_t kLingerBytes = 1024 * 1024;
 constexpr std::chrono::seconds kLingerTime{1};
 
 struct Lingering : std::enable_shared_from_this<Lingering> {
-  explicit Lingering(tcp::socket s) : socket(std::move(s)), timer(socket.get_executor()) {}
+  Lingering(tcp::socket s, std::function<void()> closed)
+      : socket(std::move(s)), timer(socket.get_executor()), on_closed(std::move(closed)) {}
   void start() {
     beast::error_code ignored;
     socket.shutdown(tcp::socket::shutdown_send, ignored);
@@ -30,21 +32,27 @@ struct Lingering : std::enable_shared_from_this<Lingering> {
     });
   }
   void finish() {
+    if (!socket.is_open()) return;  // the timer and the read both end it
     beast::error_code ignored;
     timer.cancel();
     socket.close(ignored);
+    if (on_closed) std::exchange(on_closed, nullptr)();
   }
   tcp::socket socket;
   asio::steady_timer timer;
+  std::function<void()> on_closed;
   std::array<char, 16 * 1024> scratch{};
   std::size_t discarded = 0;
 };
 
 }  // namespace
 
-void linger_close(tcp::socket socket) {
-  if (!socket.is_open()) return;
-  std::make_shared<Lingering>(std::move(socket))->start();
+void linger_close(tcp::socket socket, std::function<void()> on_closed) {
+  if (!socket.is_open()) {
+    if (on_closed) on_closed();
+    return;
+  }
+  std::make_shared<Lingering>(std::move(socket), std::move(on_closed))->start();
 }
 
 std::string redacted_target(std::string_view target) {
@@ -176,7 +184,8 @@ void HttpConnection::respond(HttpResponse response, const std::string& note) {
     if (self->close_after_ || !self->keep_alive_) {
       // The peer may still be sending a body that was not read (a refusal on the head).
       self->stream_.expires_never();
-      linger_close(self->stream_.release_socket());
+      if (self->handler_.close_lingering) self->handler_.close_lingering(self->stream_.release_socket());
+      else linger_close(self->stream_.release_socket());
       return self->done();
     }
     self->read_head();

@@ -29,6 +29,8 @@ struct HttpHandler {
   // A request the connection refuses itself (431, 413, 400 http-malformed): its status, to count.
   std::function<void(int status)> on_refused;
   std::function<void(HttpConnection&)> on_closed;
+  // Closes the socket after a refusal (linger_close by default): the server's, to count it.
+  std::function<void(tcp::socket)> close_lingering;
 };
 
 class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
@@ -72,7 +74,8 @@ class HttpConnection : public std::enable_shared_from_this<HttpConnection> {
 // down the sending side, then reads and discards what arrives until the peer closes, 1 MiB or
 // 1 s, whichever comes first, and only then closes. Closing with unread data would make the
 // kernel reset the connection, and a client then reports "connection reset" instead of the answer.
-void linger_close(tcp::socket socket);
+// `on_closed`, when given, is called once the socket is closed (on its executor).
+void linger_close(tcp::socket socket, std::function<void()> on_closed = {});
 
 // The target as logged: the value of a ?token= parameter replaced by "-" (a secret stays out of logs).
 std::string redacted_target(std::string_view target);

@@ -68,6 +68,7 @@ void apply_limits(const json& j, const Reader& r, ServeLimits& l) {
     else if (key == "max_clients") l.max_clients = r.integer(v, name, 0, 100'000);
     else if (key == "max_connections") l.max_connections = r.integer(v, name, 1, 100'000);
     else if (key == "max_rtp_destinations") l.max_rtp_destinations = r.integer(v, name, 0, 64);
+    else if (key == "max_srtp_streams") l.max_srtp_streams = r.integer(v, name, 2, 1 << 24);
     else if (key == "client_queue_frames") l.client_queue_frames = r.integer(v, name, 1, 100'000);
     else if (key == "client_send_buffer_bytes") l.client_send_buffer_bytes = r.integer(v, name, 1024, 16 * kMiB);
     else if (key == "request_timeout_ms") l.request_timeout = std::chrono::milliseconds(r.integer(v, name, 10, 3'600'000));
@@ -150,6 +151,8 @@ void apply_serve_config(std::string_view json_text, const std::string& source, c
       c.synthesis_threads = r.integer(v, key, 1, 64);
     } else if (key == "sentence_bytes") {
       c.sentence_bytes = r.integer(v, key, 16, 4096);
+    } else if (key == "pacer_priority") {
+      c.pacer_priority = static_cast<int>(r.integer(v, key, 0, 99));
     } else if (key == "limits") {
       apply_limits(v, r, c.limits);
     } else {

@@ -10,6 +10,7 @@
 #include "fapcast/transport/udp_url.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -62,7 +63,7 @@ Server::State::State(asio::io_context& io_, ServeConfig config_, ServeVoices voi
     speakers.emplace(name, std::make_shared<const Speaker>(voice, settings, "voice '" + name + "'"));
   }
   worker = std::make_unique<SynthesisWorker>(config.synthesis_threads);
-  pacer = std::make_unique<FramePacer>(io);
+  pacer = std::make_unique<FramePacer>(io, config.pacer_priority);
 }
 
 Server::State::~State() {
@@ -117,7 +118,7 @@ void Server::State::accept() {
       socket.non_blocking(true, ignored);
       asio::write(socket, asio::buffer(wire), ignored);  // a few hundred bytes into an empty send buffer
       self->log_line("? \"-\" 503 too-many-connections");
-      linger_close(std::move(socket));
+      self->close_lingering(std::move(socket));
       return self->accept();
     }
     {
@@ -134,6 +135,10 @@ void Server::State::accept() {
       };
       handler.on_refused = [weak](int status) {
         if (auto s = weak.lock()) s->count([status](ServeStats& st) { ++(status == 400 ? st.bad_requests : st.over_limits); });
+      };
+      handler.close_lingering = [weak](tcp::socket s) {
+        if (auto st = weak.lock()) st->close_lingering(std::move(s));
+        else linger_close(std::move(s));
       };
       handler.on_closed = [weak](HttpConnection& c) {
         if (auto s = weak.lock()) {
@@ -152,6 +157,17 @@ void Server::State::accept() {
   });
 }
 
+void Server::State::close_lingering(tcp::socket socket) {
+  ++lingering;
+  refresh_gauges();
+  linger_close(std::move(socket), [weak = weak_from_this()] {
+    if (auto s = weak.lock()) {
+      --s->lingering;
+      s->refresh_gauges();
+    }
+  });
+}
+
 void Server::State::refresh_gauges() {
   std::size_t speaking = 0, queued = 0, clients = 0;
   for (const auto& [name, ch] : channels) {
@@ -164,6 +180,7 @@ void Server::State::refresh_gauges() {
   stats.sessions_queued = queued;
   stats.clients = clients;
   stats.connections = connections.size() + clients_open;
+  stats.connections_lingering = lingering;
 }
 
 ServeStats Server::State::snapshot() const {
@@ -178,6 +195,7 @@ ServeStats Server::State::snapshot() const {
   s.wake_p50 = paced.wake_p50;
   s.wake_p99 = paced.wake_p99;
   s.wake_max = paced.wake_max;
+  s.pacer_priority = pacer->scheduling().priority;
   return s;
 }
 
@@ -208,7 +226,9 @@ json Server::State::stats_json() const {
           {"late_max_ms", ms(s.late_max)},
           {"wake_p50_ms", ms(s.wake_p50)},
           {"wake_p99_ms", ms(s.wake_p99)},
-          {"wake_max_ms", ms(s.wake_max)}};
+          {"wake_max_ms", ms(s.wake_max)},
+          {"connections_lingering", s.connections_lingering},
+          {"pacer_priority", s.pacer_priority}};
 }
 
 HttpResponse Server::State::json_response(http::status status, const json& body, unsigned version) const {
@@ -364,6 +384,11 @@ void Server::State::say(HttpConnection& conn, const HttpRequest& request) {
   if (!r.interrupt && existing && existing->speaking && existing->queue.size() >= config.limits.max_queue)
     throw RequestError(429, "queue-full", "channel '" + r.channel + "' has " + std::to_string(existing->queue.size()) +
                                               " sessions waiting (limit " + std::to_string(config.limits.max_queue) + ")");
+  if (srtp && srtp_ssrcs.size() + 2 * destinations.size() > config.limits.max_srtp_streams)
+    throw RequestError(503, "srtp-streams-exhausted",
+                       "the SRTP key has served " + std::to_string(srtp_ssrcs.size()) + " of the " +
+                           std::to_string(config.limits.max_srtp_streams) +
+                           " streams it may (RFC 3711: each SSRC once per key); start the server with a new key");
   std::vector<RtpDestination> planned;
   for (const udp::endpoint& d : destinations) {
     RtpDestination p{d, {}};
@@ -579,6 +604,17 @@ Server::Server(asio::io_context& io, ServeConfig config, ServeVoices voices, std
     : state_(std::make_shared<State>(io, std::move(config), std::move(voices), std::move(log))) {
   state_->bind();
   state_->log_line("fapcast serve: listening on " + url());
+  const FramePacer::Scheduling pacing = state_->pacer->scheduling();
+  if (pacing.priority > 0) {
+    state_->log_line("fapcast serve: frame pacer at real-time priority " + std::to_string(pacing.priority) + " (SCHED_FIFO)");
+  } else if (pacing.asked > 0) {
+    // Said once, at start, and the server runs on: frames are still paced, only a busy machine
+    // may delay them (stats' pacer_priority is 0).
+    state_->log_line("fapcast serve: frame pacer: real-time priority " + std::to_string(pacing.asked) +
+                     " (SCHED_FIFO) refused: " + std::strerror(pacing.error) +
+                     " (it needs CAP_SYS_NICE or RLIMIT_RTPRIO >= " + std::to_string(pacing.asked) +
+                     "); running at the default priority");
+  }
 }
 
 Server::~Server() {

@@ -44,6 +44,8 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   void stop();
   ServeStats snapshot() const;
   void refresh_gauges();
+  // A refused socket's lingering close, counted until it is closed.
+  void close_lingering(tcp::socket socket);
 
   // HTTP
   std::optional<HttpResponse> on_head(HttpConnection& conn, const http::request_header<>& head, bool& upgrade);
@@ -99,6 +101,7 @@ struct Server::State : std::enable_shared_from_this<Server::State> {
   std::deque<nlohmann::json> finished;                           // the last 256 ended sessions
   std::unordered_map<HttpConnection*, std::weak_ptr<HttpConnection>> connections;
   std::size_t clients_open = 0;  // accepted upgrades not yet closed
+  std::size_t lingering = 0;     // refused sockets in their lingering close (linger_close)
   std::vector<std::weak_ptr<LiveClient>> all_clients;
   std::uint32_t session_numbers = 0;
   std::mt19937_64 ids{std::random_device{}()};

@@ -3,8 +3,11 @@
 //   BM_FirstFrame: POST /v1/say of a short first sentence -> the first FBA RTP packet at a UDP
 //     receiver (TTS, synthesis, encoding and the send included); BM_EspeakAlone: espeak-ng alone
 //     on the same sentence (its cost inside that figure).
-//   BM_LiveSessions/N: N sessions on N channels speaking at 25 fps to one RTP receiver, the
-//     server's network thread pinned to CPU 0 (synthesis threads and clients on CPU 1):
+//   BM_LiveSessions/N/P: N sessions on N channels speaking at 25 fps to one RTP receiver, the
+//     server's network thread and frame pacer pinned to CPU 0 (synthesis threads and clients on
+//     CPU 1), the pacer at real-time priority P (SCHED_FIFO; 0: the default class, as served by
+//     default), both in the same run so that they see the same machine (and CPU 0's steal time
+//     over the row: the hypervisor's share of the stalls):
 //     frame-send lateness p50/p99/max as the server counts it and as the receiver sees it
 //     (kernel receive timestamps against each stream's RTP clock), the network thread's CPU
 //     share, the peak of sessions speaking at once and the memory per session (heap and RSS
@@ -27,6 +30,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
 #include <cstring>
 #include <cstdlib>
 #include <filesystem>
@@ -130,6 +134,23 @@ ThreadSched operator-(ThreadSched a, const ThreadSched& b) {
   return {a.cpu_s - b.cpu_s, a.run_delay_s - b.run_delay_s, a.preempted - b.preempted};
 }
 
+// Time the hypervisor gave CPU `cpu` to others while this guest had work for it (/proc/stat
+// "steal", in USER_HZ ticks): a stall no priority inside the guest can prevent.
+double cpu_steal_seconds(int cpu) {
+  std::ifstream stat("/proc/stat");
+  const std::string name = "cpu" + std::to_string(cpu);
+  for (std::string label; stat >> label;) {
+    if (label != name) {
+      stat.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+      continue;
+    }
+    long long user, nice, system, idle, iowait, irq, softirq, steal = 0;
+    stat >> user >> nice >> system >> idle >> iowait >> irq >> softirq >> steal;
+    return static_cast<double>(steal) / static_cast<double>(sysconf(_SC_CLK_TCK));
+  }
+  return 0.0;
+}
+
 std::size_t heap_bytes() { return mallinfo2().uordblks; }
 std::size_t rss_bytes() {
   std::ifstream statm("/proc/self/statm");
@@ -153,8 +174,9 @@ pid_t thread_named(const std::string& name) {
 // on a thread pinned to CPU 1, so that its synthesis threads run there.
 class BenchServer {
  public:
-  explicit BenchServer(std::size_t sessions) {
+  BenchServer(std::size_t sessions, int pacer_priority) {
     ServeConfig c;
+    c.pacer_priority = pacer_priority;
     c.host = "127.0.0.1";
     c.port = 0;
     c.token_file = token_file();
@@ -311,7 +333,7 @@ void report_lateness(benchmark::State& state, const std::vector<double>& late, c
 // --- (a) request -> first animation frame on the wire ---------------------------------------
 
 void BM_FirstFrame(benchmark::State& state) {
-  BenchServer server(4);
+  BenchServer server(4, 0);
   test::RtpPorts sink;
   const std::string body = say_body(std::string(kFirstSentence) + " And a second sentence after it.", sink.url(),
                                     "bench", true);
@@ -375,15 +397,20 @@ const FinishedTrack& finished_track() {
 
 void BM_LiveSessions(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
+  const auto priority = static_cast<int>(state.range(1));
   const auto rtp_clock_hz = finished_track().audio.sample_rate.hz;  // a session's RTP clock: its speech's rate
   for (auto _ : state) {
     test::RtpPorts sink;
     const std::size_t heap0 = heap_bytes();
-    BenchServer server(n);
+    BenchServer server(n, priority);
+    // What the pacer got: a refusal (no CAP_SYS_NICE) would make the P > 0 row the default class.
+    state.counters["pacer_priority"] = server.stats().pacer_priority;
+    if (server.stats().pacer_priority != priority) state.SkipWithError("the pacer did not get the priority asked for");
     const std::size_t heap1 = heap_bytes(), rss1 = rss_bytes();  // the server alone
     LatenessProbe probe(sink.fd(0));
     const double cpu0 = server.io_cpu_seconds();
     const ThreadSched sched0 = server.io_sched(), pacer0 = server.pacer_sched();
+    const double steal0 = cpu_steal_seconds(0);
     const auto t0 = Clock::now();
     std::atomic<std::int64_t> ramp_end_ns{0};  // the last request answered (CLOCK_REALTIME, as the probe's)
     // Requests from 8 client threads (each answer waits for its session's first frame).
@@ -421,7 +448,9 @@ void BM_LiveSessions(benchmark::State& state) {
     const ServeStats s = server.stats();
     const double cpu = server.io_cpu_seconds() - cpu0;
     const ThreadSched sched = server.io_sched() - sched0, pacer = server.pacer_sched() - pacer0;
+    const double steal = cpu_steal_seconds(0) - steal0;
     probe.stop();
+    state.counters["cpu0_steal_ms"] = 1e3 * steal;
     state.counters["sessions_ok"] = static_cast<double>(ok);
     state.counters["peak_speaking"] = static_cast<double>(peak);
     state.counters["frames"] = static_cast<double>(s.frames);
@@ -451,7 +480,14 @@ void BM_LiveSessions(benchmark::State& state) {
         peak ? static_cast<double>(rss_peak - std::min(rss_peak, rss1)) / 1024.0 / static_cast<double>(peak) : 0.0;
   }
 }
-BENCHMARK(BM_LiveSessions)->Arg(50)->Arg(100)->Arg(200)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+// Each N at the default class, then at real-time priority 10, one after the other.
+BENCHMARK(BM_LiveSessions)
+    ->ArgNames({"sessions", "rt"})
+    ->Args({50, 0})->Args({50, 10})->Args({100, 0})->Args({100, 10})
+    ->Args({200, 0})->Args({200, 10})->Args({400, 0})->Args({400, 10})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime();
 
 void BM_StreamFinished(benchmark::State& state) {
   const auto n = static_cast<std::size_t>(state.range(0));
@@ -492,7 +528,7 @@ void BM_StreamFinished(benchmark::State& state) {
     state.counters["cpu_share"] = cpu / wall;
   }
 }
-BENCHMARK(BM_StreamFinished)->Arg(50)->Arg(100)->Arg(200)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+BENCHMARK(BM_StreamFinished)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 }  // namespace
 

@@ -13,6 +13,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
+#include <utility>
 #include <csignal>
 #include <fcntl.h>
 #include <poll.h>
@@ -46,60 +48,117 @@ std::string read_line(int fd, std::chrono::milliseconds timeout) {
   return line;
 }
 
-TEST(ServeCli, PrintsItsUrlAnswersAndExitsZeroOnSigterm) {
-  const std::string dir = make_temp_dir("serve_cli");
+// A `fapcast serve` started by argv (argv[0] the program run), standard error to `err_path`.
+struct ServeProcess {
+  pid_t pid = 0;
+  std::string url;  // its first line of standard output, within 20 s
+
+  ServeProcess(std::vector<std::string> args, const std::string& err_path) {
+    int out[2];
+    if (pipe(out) != 0) return;
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+    posix_spawn_file_actions_addclose(&actions, out[0]);
+    posix_spawn_file_actions_addopen(&actions, 2, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    if (posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid = 0;
+    posix_spawn_file_actions_destroy(&actions);
+    close(out[1]);
+    if (pid != 0) url = read_line(out[0], std::chrono::seconds(20));
+    close(out[0]);
+  }
+  // SIGTERM, then its wait status (-1: still running 10 s later, then killed).
+  int stop() {
+    if (pid == 0 || kill(pid, SIGTERM) != 0) return -1;
+    int status = -1;
+    for (const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10); waitpid(pid, &status, WNOHANG) == 0;
+         std::this_thread::sleep_for(std::chrono::milliseconds(10))) {
+      if (std::chrono::steady_clock::now() > until) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        status = -1;
+        break;
+      }
+    }
+    pid = 0;
+    return status;
+  }
+  ~ServeProcess() { stop(); }
+};
+
+// GET /v1/stats on `port`: status and body.
+std::pair<unsigned, std::string> get_stats(int port) {
+  boost::asio::io_context io;
+  tcp::socket s(io);
+  s.connect(tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), static_cast<std::uint16_t>(port)));
+  http::request<http::empty_body> req{http::verb::get, "/v1/stats", 11};
+  req.set(http::field::host, "127.0.0.1");
+  req.set(http::field::authorization, std::string("Bearer ") + kToken);
+  http::write(s, req);
+  boost::beast::flat_buffer b;
+  http::response<http::string_body> res;
+  http::read(s, b, res);
+  return {res.result_int(), res.body()};
+}
+
+int port_of(const std::string& url) { return std::stoi(url.substr(std::string("http://127.0.0.1:").size())); }
+
+std::string serve_dir(const std::string& name) {
+  const std::string dir = make_temp_dir(name);
   write_file_atomically(dir + "/token", std::string(kToken) + "\n");
   std::filesystem::create_directories(dir + "/three");
   write_file_atomically(dir + "/three/three.module.js", "// three\n");
-  const std::string voice = spoken_voice_file().string();
-  int out[2];
-  ASSERT_EQ(pipe(out), 0);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, out[1], 1);
-  posix_spawn_file_actions_addclose(&actions, out[0]);
-  posix_spawn_file_actions_addopen(&actions, 2, (dir + "/err.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  const std::string token_file = dir + "/token", three = dir + "/three";
-  std::vector<std::string> args = {FAPCAST_EXE, "serve", "--listen", "127.0.0.1:0", "--token-file", token_file,
-                                   "--voice", voice, "--three-dir", three};
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  ASSERT_EQ(posix_spawn(&pid, FAPCAST_EXE, &actions, nullptr, argv.data(), environ), 0);
-  posix_spawn_file_actions_destroy(&actions);
-  close(out[1]);
-  const std::string url = read_line(out[0], std::chrono::seconds(20));
-  close(out[0]);
-  ASSERT_EQ(url.rfind("http://127.0.0.1:", 0), 0u) << url;
-  const int port = std::stoi(url.substr(std::string("http://127.0.0.1:").size()));
+  return dir;
+}
+
+TEST(ServeCli, PrintsItsUrlAnswersAndExitsZeroOnSigterm) {
+  const std::string dir = serve_dir("serve_cli");
+  ServeProcess serve({FAPCAST_EXE, "serve", "--listen", "127.0.0.1:0", "--token-file", dir + "/token", "--voice",
+                      spoken_voice_file().string(), "--three-dir", dir + "/three"},
+                     dir + "/err.txt");
+  ASSERT_NE(serve.pid, 0);
+  ASSERT_EQ(serve.url.rfind("http://127.0.0.1:", 0), 0u) << serve.url;
+  const int port = port_of(serve.url);
   EXPECT_GT(port, 0);
-  {
-    boost::asio::io_context io;
-    tcp::socket s(io);
-    s.connect(tcp::endpoint(boost::asio::ip::make_address("127.0.0.1"), static_cast<std::uint16_t>(port)));
-    http::request<http::empty_body> req{http::verb::get, "/v1/stats", 11};
-    req.set(http::field::host, "127.0.0.1");
-    req.set(http::field::authorization, std::string("Bearer ") + kToken);
-    http::write(s, req);
-    boost::beast::flat_buffer b;
-    http::response<http::string_body> res;
-    http::read(s, b, res);
-    EXPECT_EQ(res.result_int(), 200u);
-    EXPECT_NE(res.body().find("\"requests\":1"), std::string::npos) << res.body();
-  }
-  ASSERT_EQ(kill(pid, SIGTERM), 0);
-  int status = -1;
-  const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  while (waitpid(pid, &status, WNOHANG) == 0) {
-    ASSERT_LT(std::chrono::steady_clock::now(), until) << "still running 10 s after SIGTERM";
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  ASSERT_TRUE(WIFEXITED(status));
+  const auto [status_code, body] = get_stats(port);
+  EXPECT_EQ(status_code, 200u);
+  EXPECT_NE(body.find("\"requests\":1"), std::string::npos) << body;
+  const int status = serve.stop();
+  ASSERT_TRUE(WIFEXITED(status)) << status;
   EXPECT_EQ(WEXITSTATUS(status), 0);
   const std::string err = read_file(dir + "/err.txt");
   EXPECT_NE(err.find("\"GET /v1/stats\" 200"), std::string::npos) << err;
   EXPECT_NE(err.find("fapcast serve: stopping"), std::string::npos) << err;
+}
+
+// --pacer-priority where the system refuses SCHED_FIFO: run without CAP_SYS_NICE (dropped from
+// the bounding set by util-linux's setpriv, so even root lacks it) and with RLIMIT_RTPRIO 0. The
+// server says so on standard error at start, serves, and reports priority 0 in its stats.
+TEST(ServeCli, PacerPriorityRefusedIsLoggedAndServes) {
+  const std::string dir = serve_dir("serve_cli_rt");
+  std::vector<std::string> args = {"sh", "-c", "ulimit -r 0 && exec \"$@\"", "sh"};
+  if (geteuid() == 0)  // a user without the capability needs nothing dropped (nor may drop it)
+    for (const char* a : {"setpriv", "--bounding-set", "-sys_nice", "--inh-caps", "-sys_nice"}) args.emplace_back(a);
+  for (const std::string& a : {std::string(FAPCAST_EXE), std::string("serve"), std::string("--listen"), std::string("127.0.0.1:0"),
+                               std::string("--token-file"), dir + "/token", std::string("--voice"), spoken_voice_file().string(),
+                               std::string("--three-dir"), dir + "/three", std::string("--pacer-priority"), std::string("30")})
+    args.push_back(a);
+  ServeProcess serve(args, dir + "/err.txt");
+  ASSERT_EQ(serve.url.rfind("http://127.0.0.1:", 0), 0u) << serve.url << read_file(dir + "/err.txt");
+  const auto [status_code, body] = get_stats(port_of(serve.url));
+  EXPECT_EQ(status_code, 200u);
+  EXPECT_NE(body.find("\"pacer_priority\":0"), std::string::npos) << body;
+  const int status = serve.stop();
+  ASSERT_TRUE(WIFEXITED(status)) << status;
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  const std::string err = read_file(dir + "/err.txt");
+  EXPECT_NE(err.find("fapcast serve: frame pacer: real-time priority 30 (SCHED_FIFO) refused: Operation not permitted "
+                     "(it needs CAP_SYS_NICE or RLIMIT_RTPRIO >= 30); running at the default priority"),
+            std::string::npos)
+      << err;
 }
 
 TEST(ServeCli, UsageAndBadInput) {
@@ -119,6 +178,12 @@ TEST(ServeCli, UsageAndBadInput) {
                           q(dir + "/short")));
   EXPECT_EQ(short_token.exit_code, 1) << short_token.err;
   EXPECT_NE(short_token.err.find(dir + "/short"), std::string::npos) << short_token.err;
+  // SCHED_FIFO's priorities are 1..99 (0: the default class).
+  for (const char* bad : {"100", "-1", "high"}) {
+    const auto r = run_command(fapcast(std::string("serve --listen 127.0.0.1:0 --token-file x --pacer-priority ") + bad));
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find("--pacer-priority"), std::string::npos) << r.err;
+  }
 }
 
 }  // namespace

@@ -77,6 +77,42 @@ TEST(ServeHardening, ConnectionsOverTheCapGet503AtAcceptWithoutSendingAnything) 
   EXPECT_EQ(status, 200);
 }
 
+// A refused connection closes lingering (reading what its peer still sends, up to 1 s): while it
+// does, it is an open socket of the server's, counted in stats' connections_lingering (not in
+// connections, which the cap is checked against); once the peer closes, it is gone.
+TEST(ServeHardening, RefusedConnectionsAreCountedWhileTheyLinger) {
+  ServeConfig c = test_config();
+  c.limits.max_connections = 1;
+  TestServer server(c);
+  const auto wait_for = [&](std::size_t lingering, std::size_t connections) {
+    for (int i = 0; i < 100; ++i) {
+      const ServeStats s = server.server->stats();
+      if (s.connections_lingering == lingering && s.connections == connections) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return false;
+  };
+  asio::io_context ioc;
+  // Refused on the head (no token) with a body announced and not sent: the server answers 401
+  // and lingers for the body.
+  tcp::socket early = connect_to(ioc, server.port());
+  asio::write(early, asio::buffer(say_head(10'000, false)));  // under the body limit: the token decides
+  EXPECT_EQ(read_answer(early).status, 401);
+  EXPECT_TRUE(wait_for(1, 0)) << "the 401's socket is not counted as lingering";
+  early.close();  // the peer closes: the lingering read ends
+  EXPECT_TRUE(wait_for(0, 0)) << "a lingering socket still counted after its peer closed";
+  // Over the cap at accept: 503, lingering too.
+  tcp::socket held = connect_to(ioc, server.port());
+  EXPECT_TRUE(wait_for(0, 1));
+  tcp::socket over = connect_to(ioc, server.port());
+  EXPECT_EQ(read_answer(over).status, 503);
+  EXPECT_TRUE(wait_for(1, 1)) << "the 503's socket is not counted as lingering";
+  over.close();
+  EXPECT_TRUE(wait_for(0, 1));
+  held.close();
+  EXPECT_TRUE(wait_for(0, 0));
+}
+
 TEST(ServeHardening, AcceptOutOfDescriptorsIsRetriedWithoutSpinning) {
   TestServer server;
   ASSERT_EQ(get(server.port(), "/v1/stats").status, 200);

@@ -9,8 +9,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <pthread.h>
+#include <sched.h>
+
 #include <atomic>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -40,6 +45,82 @@ TEST(ServePacing, FramesLeaveWhileTheNetworkThreadIsBusy) {
   EXPECT_GE(during, 5u);
   const nlohmann::json status = test::get(server.port(), "/v1/sessions/" + a.json()["session"].get<std::string>()).json();
   EXPECT_EQ(status["state"], "speaking") << status.dump();  // the window was inside the session
+}
+
+// The id of this process's thread named `name`, waited for up to 5 s (a thread names itself
+// once it runs); 0 when there is none.
+pid_t thread_named(const std::string& name) {
+  for (const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5); std::chrono::steady_clock::now() < until;
+       std::this_thread::sleep_for(std::chrono::milliseconds(10))) {
+    for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+      std::ifstream comm(task.path() / "comm");
+      std::string n;
+      if (std::getline(comm, n) && n == name) return static_cast<pid_t>(std::stol(task.path().filename().string()));
+    }
+  }
+  return 0;
+}
+
+// Whether this process may put a thread in SCHED_FIFO at `priority` (CAP_SYS_NICE or RLIMIT_RTPRIO).
+bool may_run_realtime(int priority) {
+  int rc = -1;
+  std::thread probe([&] {
+    sched_param p{};
+    p.sched_priority = priority;
+    rc = pthread_setschedparam(pthread_self(), SCHED_FIFO, &p);
+  });
+  probe.join();
+  return rc == 0;
+}
+
+bool logged(test::TestServer& server, const std::string& part) {
+  for (const std::string& line : server.log_lines())
+    if (line.find(part) != std::string::npos) return true;
+  return false;
+}
+
+TEST(ServePacing, ThePacerIsInTheDefaultClassUnlessAsked) {
+  test::TestServer server;
+  const pid_t pacer = thread_named("fapcast-pacer");
+  ASSERT_NE(pacer, 0);
+  EXPECT_EQ(sched_getscheduler(pacer), SCHED_OTHER);
+  EXPECT_EQ(test::get(server.port(), "/v1/stats").json()["pacer_priority"], 0);
+  EXPECT_FALSE(logged(server, "frame pacer"));
+}
+
+// --pacer-priority 7: the pacer's thread in SCHED_FIFO at 7, said in the log and in the stats, and
+// frames still sent; where the system refuses (no CAP_SYS_NICE, RLIMIT_RTPRIO below 7) the log
+// says so with the reason and the server runs on in the default class. (ServeCli's
+// PacerPriorityRefusedIsLoggedAndServes makes the refusal happen as root.)
+TEST(ServePacing, ThePacerRunsAtTheRealTimePriorityAskedForOrTheLogSaysWhyNot) {
+  const bool permitted = may_run_realtime(7);
+  ServeConfig c = test::test_config();
+  c.pacer_priority = 7;
+  test::TestServer server(c);
+  const pid_t pacer = thread_named("fapcast-pacer");
+  ASSERT_NE(pacer, 0);
+  sched_param param{};
+  ASSERT_EQ(sched_getparam(pacer, &param), 0);
+  const nlohmann::json stats = test::get(server.port(), "/v1/stats").json();
+  if (permitted) {
+    EXPECT_EQ(sched_getscheduler(pacer), SCHED_FIFO);
+    EXPECT_EQ(param.sched_priority, 7);
+    EXPECT_EQ(stats["pacer_priority"], 7) << stats.dump();
+    EXPECT_TRUE(logged(server, "fapcast serve: frame pacer at real-time priority 7 (SCHED_FIFO)"));
+  } else {
+    EXPECT_EQ(sched_getscheduler(pacer), SCHED_OTHER);
+    EXPECT_EQ(stats["pacer_priority"], 0) << stats.dump();
+    EXPECT_TRUE(logged(server, "real-time priority 7 (SCHED_FIFO) refused: "));
+  }
+  // The network thread stays in the default class: only the pacer is raised.
+  int policy = -1;
+  ASSERT_EQ(pthread_getschedparam(server.thread.native_handle(), &policy, &param), 0);
+  EXPECT_EQ(policy, SCHED_OTHER);
+  test::RtpPorts sink;
+  const test::Answer a =
+      test::post(server.port(), "/v1/say", nlohmann::json{{"text", "Hello there."}, {"channel", "rt"}, {"rtp", sink.url()}}.dump());
+  ASSERT_EQ(a.status, 202) << a.body;
+  EXPECT_TRUE(sink.receive(0, std::chrono::seconds(2)));  // an animation packet
 }
 
 }  // namespace

@@ -84,13 +84,14 @@ TEST(BearerTokenTest, Presentations) {
 TEST(ServeConfigTest, KeysAppliedAndRefusedByName) {
   ServeConfig c;
   apply_serve_config(R"({"listen":"[::1]:0","token_file":"t.txt","rtp_networks":["10.0.0.0/8"],
-                         "sentence_bytes":64,"limits":{"max_queue":3}})",
+                         "sentence_bytes":64,"pacer_priority":20,"limits":{"max_queue":3}})",
                      "serve.json", "/etc/fapcast", c);
   EXPECT_EQ(c.host, "::1");
   EXPECT_EQ(c.port, 0);
   EXPECT_EQ(c.token_file, std::filesystem::path("/etc/fapcast/t.txt"));
   EXPECT_EQ(c.rtp_networks, std::vector<std::string>{"10.0.0.0/8"});
   EXPECT_EQ(c.sentence_bytes, 64u);
+  EXPECT_EQ(c.pacer_priority, 20);
   EXPECT_EQ(c.limits.max_queue, 3u);
   const auto rule_of = [](const char* text) {
     ServeConfig d;
@@ -103,6 +104,10 @@ TEST(ServeConfigTest, KeysAppliedAndRefusedByName) {
   };
   EXPECT_EQ(rule_of(R"({"colour":1})"), "serve-config-key");
   EXPECT_EQ(rule_of(R"({"fps":0})"), "serve-config-value");
+  EXPECT_EQ(rule_of(R"({"pacer_priority":100})"), "serve-config-value");  // SCHED_FIFO's range is 1..99
+  EXPECT_EQ(rule_of(R"({"pacer_priority":-1})"), "serve-config-value");
+  EXPECT_EQ(rule_of(R"({"pacer_priority":"high"})"), "serve-config-value");
+  EXPECT_EQ(rule_of(R"({"pacer_priority":0})"), "accepted");
   EXPECT_EQ(rule_of("{\n\"fps\":"), "serve-config-json");
 }
 

@@ -9,11 +9,13 @@
 #include "fapcast/transport/rtp_stream_receiver.hpp"
 #include "fapcast/transport/srtp_key.hpp"
 #include "fapcast/transport/udp_receiver.hpp"
+#include "support/serve_client.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <optional>
 #include <set>
 
 namespace fapcast::test {
@@ -289,6 +291,33 @@ TEST(ServeRtp, SrtpWithTheServersKeyIsDecrypted) {
   for (const ReceivedUnit& u : keyless.animation_units) readable += clear.contains(u.bytes);
   for (const ReceivedUnit& u : keyless.audio_units) readable += clear.contains(u.bytes);
   EXPECT_EQ(readable, 0u);
+}
+
+// Every SSRC under the key is drawn once (RFC 3711 section 9.1), so the server keeps them: at most
+// limits.max_srtp_streams, two per destination; beyond, SRTP is refused by name (503) while
+// plain RTP and live clients go on.
+TEST(ServeRtp, TheSrtpKeyServesItsStreamLimitThenRefusesByName) {
+  write_file_atomically(serve_test_dir() / "srtp-limit.key", srtp_key_text(random_srtp_key()) + "\n");
+  ServeConfig c = test_config();
+  c.srtp_key_file = serve_test_dir() / "srtp-limit.key";
+  c.limits.max_srtp_streams = 4;
+  TestServer server(c);
+  RtpPorts sink;
+  const auto say = [&](const std::string& channel, std::optional<bool> srtp) {
+    json body{{"text", "Hi."}, {"channel", channel}, {"rtp", sink.url()}};
+    if (srtp) body["srtp"] = *srtp;
+    return post(server.port(), "/v1/say", body.dump());
+  };
+  EXPECT_EQ(say("a", std::nullopt).status, 202);  // streams 1 and 2 (animation, audio)
+  EXPECT_EQ(say("b", true).status, 202);          // 3 and 4
+  const Answer refused = say("c", std::nullopt);
+  EXPECT_EQ(refused.status, 503) << refused.body;
+  EXPECT_EQ(refused.json()["error"], "srtp-streams-exhausted");
+  EXPECT_NE(refused.json()["detail"].get<std::string>().find("has served 4 of the 4 streams"), std::string::npos)
+      << refused.body;
+  EXPECT_EQ(say("d", false).status, 202);  // plain RTP is not under the key
+  EXPECT_EQ(post(server.port(), "/v1/say", json{{"text", "Hi."}, {"channel", "e"}}.dump()).status, 202);
+  EXPECT_EQ(get(server.port(), "/v1/stats").json()["over_limits"], 1);
 }
 
 TEST(ServeRtp, ADestinationThatCannotBeSentToIsDroppedAndTheOthersGoOn) {

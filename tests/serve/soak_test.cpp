@@ -63,10 +63,13 @@ TEST(ServeSoak, ClientsDropAndReconnectSessionsBargeInNothingIsLeft) {
   ServeStats s;
   for (int i = 0; i < 100; ++i) {
     s = server.stats();
-    if (s.connections == 0 && s.clients == 0 && s.sessions_speaking == 0 && s.sessions_queued == 0) break;
+    if (s.connections == 0 && s.connections_lingering == 0 && s.clients == 0 && s.sessions_speaking == 0 &&
+        s.sessions_queued == 0)
+      break;
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   }
   EXPECT_EQ(s.connections, 0u);
+  EXPECT_EQ(s.connections_lingering, 0u);
   EXPECT_EQ(s.clients, 0u);
   EXPECT_EQ(s.sessions_speaking, 0u);
   EXPECT_EQ(s.sessions_queued, 0u);
@@ -86,6 +89,7 @@ TEST(ServeSoak, ClientsDropAndReconnectSessionsBargeInNothingIsLeft) {
   running.stop();
   const ServeStats end = server.stats();
   EXPECT_EQ(end.connections, 0u);
+  EXPECT_EQ(end.connections_lingering, 0u);
   EXPECT_EQ(end.clients, 0u);
 }
 

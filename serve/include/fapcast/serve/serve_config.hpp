@@ -24,6 +24,9 @@ struct ServeLimits {
   std::size_t max_clients = 256;              // live WebSocket clients (503)
   std::size_t max_connections = 512;          // open TCP connections, HTTP and WebSocket (503)
   std::size_t max_rtp_destinations = 4;       // udp:// destinations of one request
+  // Streams (SSRCs, two per SRTP destination) sent under the SRTP key since start: each SSRC is
+  // drawn once per key (RFC 3711 section 9.1), so the set of them is kept; 503 beyond (a new key is needed).
+  std::size_t max_srtp_streams = 1 << 20;
   std::size_t client_queue_frames = 25;       // frames waiting for one live client before it is dropped
   std::size_t client_send_buffer_bytes = 64 * 1024;  // SO_SNDBUF of a live client's socket: what the kernel holds for it
   std::chrono::milliseconds request_timeout{10'000};  // to read one request, headers and body
@@ -46,6 +49,9 @@ struct ServeConfig {
   std::filesystem::path three_dir = "/usr/share/javascript/three";  // Debian libjs-three
   std::size_t synthesis_threads = 1;
   std::size_t sentence_bytes = 120;            // the longest piece of text synthesised at once (sentence_offsets)
+  // SCHED_FIFO priority (1..99) of the frame pacer's thread; 0: the default class. Opt-in: a
+  // refusal by the system is logged and the server runs on (spec/serve.md, "Real-time priority").
+  int pacer_priority = 0;
   ServeLimits limits;
 };
 

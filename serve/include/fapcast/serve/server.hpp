@@ -41,12 +41,14 @@ struct ServeStats {
   std::uint64_t clients_accepted = 0;
   std::uint64_t clients_dropped_slow = 0;  // dropped for a full per-client queue
   std::size_t connections = 0;           // open TCP connections
+  std::size_t connections_lingering = 0;  // refused ones closing (linger_close: up to 1 s or 1 MiB), not in `connections`
   std::uint64_t frames = 0;              // frame ticks over all sessions
   std::uint64_t rtp_packets = 0;         // animation + audio RTP packets sent
   std::uint64_t live_messages = 0;       // WebSocket messages queued to clients
   std::chrono::nanoseconds late_p50{0}, late_p99{0}, late_max{0};  // frame sends past their deadline
   // The frame pacer's timer waking past the earliest deadline due (the scheduler's share of the lateness).
   std::chrono::nanoseconds wake_p50{0}, wake_p99{0}, wake_max{0};
+  int pacer_priority = 0;                // SCHED_FIFO priority the pacer's thread runs at; 0: the default class
 };
 
 // The voices a server speaks with, by the name a request gives ("default" when it gives none).

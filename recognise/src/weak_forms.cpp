@@ -1,6 +1,5 @@
 #include "weak_forms.hpp"
 
-#include <array>
 #include <sstream>
 #include <string>
 
@@ -19,7 +18,7 @@ struct WeakForm {
 // chapter 12 ("Weak forms"), with their weak forms transcribed into ARPAbet. Forms CMUdict
 // already has (the DH AH, to T AH, of AH V, was W AH Z ...) are listed too: the aligner adds only
 // those a word lacks.
-constexpr std::array<WeakForm, 35> kWeakForms{{
+constexpr WeakForm kWeakForms[] = {
     {"a", "AH", ""},
     {"am", "AH M|M", ""},
     {"an", "AH N", ""},
@@ -55,7 +54,7 @@ constexpr std::array<WeakForm, 35> kWeakForms{{
     {"us", "AH S", ""},
     {"was", "W AH Z", ""},
     {"were", "W AH", "W AH R"},
-}};
+};
 
 void append_forms(std::string_view forms, std::vector<std::vector<Phone>>& out) {
   std::string all(forms);

@@ -185,7 +185,8 @@ struct SpeechAligner::Impl {
         const bool before_vowel =
             i + 1 < t.words.size() && std::any_of(out[i + 1].variants.begin(), out[i + 1].variants.end(),
                                                   [](const auto& v) { return !v.empty() && is_vowel(v.front()); });
-        for (const auto& ph : weak_forms(t.words[i].key, before_vowel)) add_variant(i, ph);
+        for (std::string_view ph : weak_forms(t.words[i].key, before_vowel))
+          add_variant(i, parse_pronunciation(std::string(ph)));
       }
     if (!settings.language.empty()) {
       const std::vector<std::vector<Phone>> read = spoken_words(t, settings.language);

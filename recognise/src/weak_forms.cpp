@@ -1,17 +1,13 @@
 #include "weak_forms.hpp"
 
-#include <sstream>
-#include <string>
-
 namespace fapcast {
 
 namespace {
 
-// One word's weak forms: `forms` always; `linking` (the form with a linking r) before a vowel only.
 struct WeakForm {
   std::string_view word;
-  std::string_view forms;    // ARPAbet, forms separated by '|'
-  std::string_view linking;  // ARPAbet, or empty
+  std::string_view phones;  // ARPAbet
+  bool linking_r;           // the form with a linking r: before a vowel only
 };
 
 // The function words of P. Roach, "English Phonetics and Phonology" (4th ed., CUP 2009),
@@ -19,65 +15,65 @@ struct WeakForm {
 // already has (the DH AH, to T AH, of AH V, was W AH Z ...) are listed too: the aligner adds only
 // those a word lacks.
 constexpr WeakForm kWeakForms[] = {
-    {"a", "AH", ""},
-    {"am", "AH M|M", ""},
-    {"an", "AH N", ""},
-    {"and", "AH N D|AH N|N", ""},
-    {"are", "AH", "AH R"},
-    {"as", "AH Z", ""},
-    {"at", "AH T", ""},
-    {"but", "B AH T", ""},
-    {"can", "K AH N|K N", ""},
-    {"could", "K AH D", ""},
-    {"do", "D AH", ""},
-    {"does", "D AH Z", ""},
-    {"for", "F AH", "F AH R"},
-    {"from", "F R AH M", ""},
-    {"had", "HH AH D|AH D", ""},
-    {"has", "HH AH Z|AH Z", ""},
-    {"have", "HH AH V|AH V", ""},
-    {"he", "IY", ""},
-    {"her", "HH AH|AH", "HH AH R|AH R"},
-    {"him", "IH M", ""},
-    {"his", "IH Z", ""},
-    {"must", "M AH S T|M AH S", ""},
-    {"of", "AH V", ""},
-    {"shall", "SH AH L|SH L", ""},
-    {"should", "SH AH D", ""},
-    {"some", "S AH M", ""},
-    {"than", "DH AH N", ""},
-    {"that", "DH AH T", ""},
-    {"the", "DH AH", ""},
-    {"them", "DH AH M", ""},
-    {"there", "DH AH", "DH AH R"},
-    {"to", "T AH", ""},
-    {"us", "AH S", ""},
-    {"was", "W AH Z", ""},
-    {"were", "W AH", "W AH R"},
+    {"a", "AH", false},
+    {"am", "AH M", false},
+    {"am", "M", false},
+    {"an", "AH N", false},
+    {"and", "AH N D", false},
+    {"and", "AH N", false},
+    {"and", "N", false},
+    {"are", "AH", false},
+    {"are", "AH R", true},
+    {"as", "AH Z", false},
+    {"at", "AH T", false},
+    {"but", "B AH T", false},
+    {"can", "K AH N", false},
+    {"can", "K N", false},
+    {"could", "K AH D", false},
+    {"do", "D AH", false},
+    {"does", "D AH Z", false},
+    {"for", "F AH", false},
+    {"for", "F AH R", true},
+    {"from", "F R AH M", false},
+    {"had", "HH AH D", false},
+    {"had", "AH D", false},
+    {"has", "HH AH Z", false},
+    {"has", "AH Z", false},
+    {"have", "HH AH V", false},
+    {"have", "AH V", false},
+    {"he", "IY", false},
+    {"her", "HH AH", false},
+    {"her", "AH", false},
+    {"her", "HH AH R", true},
+    {"her", "AH R", true},
+    {"him", "IH M", false},
+    {"his", "IH Z", false},
+    {"must", "M AH S T", false},
+    {"must", "M AH S", false},
+    {"of", "AH V", false},
+    {"shall", "SH AH L", false},
+    {"shall", "SH L", false},
+    {"should", "SH AH D", false},
+    {"some", "S AH M", false},
+    {"than", "DH AH N", false},
+    {"that", "DH AH T", false},
+    {"the", "DH AH", false},
+    {"them", "DH AH M", false},
+    {"there", "DH AH", false},
+    {"there", "DH AH R", true},
+    {"to", "T AH", false},
+    {"us", "AH S", false},
+    {"was", "W AH Z", false},
+    {"were", "W AH", false},
+    {"were", "W AH R", true},
 };
-
-void append_forms(std::string_view forms, std::vector<std::vector<Phone>>& out) {
-  std::string all(forms);
-  for (char& c : all)
-    if (c == '|') c = '\n';
-  std::istringstream lines(all);
-  for (std::string line; std::getline(lines, line);) {
-    std::vector<Phone> form;
-    std::istringstream in(line);
-    for (std::string s; in >> s;) form.push_back(parse_arpabet(s, "weak-form table").phone);
-    out.push_back(std::move(form));
-  }
-}
 
 }  // namespace
 
-std::vector<std::vector<Phone>> weak_forms(std::string_view key, bool before_vowel) {
-  std::vector<std::vector<Phone>> out;
-  for (const WeakForm& w : kWeakForms) {
-    if (w.word != key) continue;
-    append_forms(w.forms, out);
-    if (before_vowel && !w.linking.empty()) append_forms(w.linking, out);
-  }
+std::vector<std::string_view> weak_forms(std::string_view key, bool before_vowel) {
+  std::vector<std::string_view> out;
+  for (const WeakForm& w : kWeakForms)
+    if (w.word == key && (before_vowel || !w.linking_r)) out.push_back(w.phones);
   return out;
 }
 

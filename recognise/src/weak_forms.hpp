@@ -4,14 +4,12 @@
 #include <string_view>
 #include <vector>
 
-#include "fapcast/phonetics/phone.hpp"
-
 namespace fapcast {
 
-// The weak forms of the function word `key` (lower-case), in ARPAbet (schwa as AH, the syllabic
-// consonant of "and" or "can" as the bare consonant). `before_vowel`: the next word starts with a
+// The weak forms of the function word `key` (lower-case), in ARPAbet ("F AH R"; schwa as AH, the
+// syllabic consonant of "and" or "can" as the bare consonant). `before_vowel`: the next word starts with a
 // vowel, so a word ending in a non-rhotic schwa also gets its linking-r form ("for us": F AH R).
 // Empty for a word that is not in the list.
-std::vector<std::vector<Phone>> weak_forms(std::string_view key, bool before_vowel);
+std::vector<std::string_view> weak_forms(std::string_view key, bool before_vowel);
 
 }  // namespace fapcast

@@ -12,6 +12,7 @@
 
 #include "decoder.hpp"
 #include "pauses.hpp"
+#include "weak_forms.hpp"
 #include "fapcast/recognise/resample.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/frontend/espeak_language.hpp"
@@ -139,9 +140,10 @@ struct SpeechAligner::Impl {
   }
 
   // Dictionary entries of every word; words the dictionary lacks get espeak-ng's pronunciation
-  // (en-us), added to both decoders under their key. With settings.language, each word also gets
-  // espeak-ng's reading of the transcript in that language (in context: its weak forms, linking
-  // r) as one more variant where it differs from those, under the key "word(PH_PH_...)".
+  // (en-us), added to both decoders under their key. With settings.weak_forms, each function word
+  // also gets its weak forms, and with settings.language espeak-ng's reading of the transcript in
+  // that language (in context: its weak forms, linking r), each as one more variant where it
+  // differs from those, under the key "word(PH_PH_...)".
   std::vector<WordEntry> entries(const Transcript& t) {
     Decoder& d = phone_decoder();
     std::vector<WordEntry> out(t.words.size());
@@ -165,21 +167,32 @@ struct SpeechAligner::Impl {
       added.emplace_back(w.key, pronunciation_string(ph));
     }
     if (!added.empty()) d.add_words(added);  // the base words first: a "word(...)" key needs its word
+    // one more variant of word i, where it differs from those it has
     std::vector<std::pair<std::string, std::string>> variants;
+    const auto add_variant = [&](std::size_t i, const std::vector<Phone>& ph) {
+      auto& e = out[i];
+      if (ph.empty() || std::find(e.variants.begin(), e.variants.end(), ph) != e.variants.end()) return;
+      std::string key = t.words[i].key + "(" + pronunciation_string(ph) + ")";
+      std::replace(key.begin(), key.end(), ' ', '_');
+      e.keys.push_back(key);
+      e.variants.push_back(ph);
+      // a word twice in the transcript: its key once
+      if (std::none_of(variants.begin(), variants.end(), [&](const auto& v) { return v.first == key; }))
+        variants.emplace_back(key, pronunciation_string(ph));
+    };
+    if (settings.weak_forms)
+      for (std::size_t i = 0; i < t.words.size(); ++i) {
+        const bool before_vowel =
+            i + 1 < t.words.size() && std::any_of(out[i + 1].variants.begin(), out[i + 1].variants.end(),
+                                                  [](const auto& v) { return !v.empty() && is_vowel(v.front()); });
+        for (std::string_view ph : weak_forms(t.words[i].key, before_vowel))
+          add_variant(i, parse_pronunciation(std::string(ph)));
+      }
     if (!settings.language.empty()) {
       const std::vector<std::vector<Phone>> read = spoken_words(t, settings.language);
-      for (std::size_t i = 0; i < t.words.size(); ++i) {
-        const std::vector<Phone>& ph = read[i];
-        auto& e = out[i];
-        if (ph.empty() || std::find(e.variants.begin(), e.variants.end(), ph) != e.variants.end()) continue;
-        std::string key = t.words[i].key + "(" + pronunciation_string(ph) + ")";
-        std::replace(key.begin(), key.end(), ' ', '_');
-        e.keys.push_back(key);
-        e.variants.push_back(ph);
-        variants.emplace_back(key, pronunciation_string(ph));
-      }
-      if (!variants.empty()) d.add_words(variants);
+      for (std::size_t i = 0; i < t.words.size(); ++i) add_variant(i, read[i]);
     }
+    if (!variants.empty()) d.add_words(variants);
     if (words) {
       if (!added.empty()) words->add_words(added);
       if (!variants.empty()) words->add_words(variants);

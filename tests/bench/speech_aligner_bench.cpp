@@ -54,6 +54,8 @@ void align_all(benchmark::State& state, AlignerSettings settings) {
 }
 
 void BM_Align200FpsOnePass(benchmark::State& state) { align_all(state, {}); }
+// The default without the weak forms of function words (spec/recognise.md, "Weak forms"): what they cost.
+void BM_Align200FpsNoWeakForms(benchmark::State& state) { align_all(state, {.weak_forms = false}); }
 void BM_Align100FpsOnePass(benchmark::State& state) { align_all(state, {.frames_per_second = 100}); }
 void BM_Align200FpsWordEdges(benchmark::State& state) { align_all(state, {.word_edges = true}); }
 
@@ -106,6 +108,7 @@ void BM_ResampleTo16k(benchmark::State& state) {
 
 BENCHMARK(BM_ResampleTo16k)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Align200FpsOnePass)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Align200FpsNoWeakForms)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RecogniseThenAlign)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Align100FpsOnePass)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Align200FpsWordEdges)->Unit(benchmark::kMillisecond);

@@ -73,6 +73,24 @@ TEST(SpeechAligner, ReadInEnGbAWordGetsEspeakNgsNonRhoticVariantWhereItFitsBette
   EXPECT_EQ(gb, (std::vector<Phone>{K, AH, N, S, IH, D, AH, D}));
 }
 
+// Weak forms where the talker uses them, strong forms where not (msajc003 and msajc015, hand
+// labels in EMU SAMPA): "amongst her friends" has no h, "@:" alone, and the aligner takes the weak
+// form AH over CMUdict's HH ER; "he emphasized" has "h i:", and HH IY stays over the weak IY.
+TEST(SpeechAligner, AFunctionWordGetsItsWeakFormWhereTheTalkerSaysIt) {
+  using enum Phone;
+  const Audio a003 = read_wav(kEmu + "msajc003.wav");
+  const Transcript t003 = parse_transcript(read_file(kEmu + "msajc003.txt"), "msajc003.txt");
+  ASSERT_EQ(t003.words[1].key, "her");
+  EXPECT_EQ(word_phones(SpeechAligner().align(a003, t003, "msajc003.wav"), 1), (std::vector<Phone>{AH}));
+  EXPECT_EQ(word_phones(SpeechAligner({.weak_forms = false}).align(a003, t003, "msajc003.wav"), 1),
+            (std::vector<Phone>{HH, ER}));
+
+  const Audio a015 = read_wav(kEmu + "msajc015.wav");
+  const Transcript t015 = parse_transcript(read_file(kEmu + "msajc015.txt"), "msajc015.txt");
+  ASSERT_EQ(t015.words[0].key, "he");
+  EXPECT_EQ(word_phones(SpeechAligner().align(a015, t015, "msajc015.wav"), 0), (std::vector<Phone>{HH, IY}));
+}
+
 TEST(SpeechAligner, AnUnknownLanguageIsABugNamingEspeakNgsVoices) {
   try {
     SpeechAligner({.language = "en-xx"});

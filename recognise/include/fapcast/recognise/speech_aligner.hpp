@@ -28,6 +28,9 @@ struct AlignerSettings {
   // US English). Empty (the default): the dictionary's variants only. An unknown language:
   // invalid_argument.
   std::string language{};
+  // Each function word also gets its weak forms where the dictionary lacks them ("for" as F AH,
+  // F AH R before a vowel: spec/recognise.md, "Weak forms").
+  bool weak_forms = true;
 };
 
 class SpeechAligner {

@@ -140,8 +140,8 @@ MorphAnimation mesh_animation(const SynthesisArgs& args, const SpeechBasis& basi
   const auto shown = frames_shown(audio_samples, rate, track.timeline.sample_rate);
   if (weights.rows() > shown) weights.conservativeResize(shown, Eigen::NoChange);
   const FaceModel& face = ict_face_model();
-  if (basis.mean.cols() != 3 * static_cast<Eigen::Index>(face.vertex_count()))
-    throw std::runtime_error(args.output + ": the voice's face has " + std::to_string(basis.mean.cols() / 3) +
+  if (basis.dimension() != 3 * static_cast<Eigen::Index>(face.vertex_count()))
+    throw std::runtime_error(args.output + ": the voice's face has " + std::to_string(basis.dimension() / 3) +
                              " vertices, not the ICT face's " + std::to_string(face.vertex_count()) +
                              ": no faces to write a mesh with");
   return morph_animation_from_speech(basis, face.faces, std::move(weights), rate, name);

@@ -86,7 +86,7 @@ const cli::Registration reg{"say", [](CLI::App& app) {
         Speech speech;
         std::int64_t samples = 0;
         speak_chunks(text, options, [&](Speech&& part) {
-          const std::vector<std::int16_t> audio = std::move(part.audio.samples);
+          const std::span<const std::int16_t> audio = part.audio.samples;  // left there: the next chunk's buffer
           const SampleRate rate = part.audio.sample_rate;
           const std::size_t before = speech.phones.size();
           if (!append_timing(speech, std::move(part), samples)) return;

@@ -79,8 +79,7 @@ class Voice {  // move-only
   const VoiceFileView& file() const { return view_; }
 
  private:
-  // The voice-level checks (sections and shapes, provenance, FPNT, GRPH, RPAR, FMAP ...) on a
-  // verified container.
+  // The voice-level checks (FPNT, GRPH, RPAR, FMAP ...) on a verified container.
   static Voice from_view(VoiceFileView view);
   Voice(VoiceFileView view, VoiceProvenance provenance, std::vector<VoiceFeaturePoint> feature_points,
         std::vector<VoiceRigidMarker> rigid_markers, Eigen::MatrixXf frame_coefficients, PhoneGraph graph,

@@ -1,6 +1,5 @@
 #include "streamed_fap_track.hpp"
 
-#include "default_voice.hpp"
 #include "fap_output.hpp"
 #include "file_extension.hpp"
 
@@ -11,7 +10,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace fapcast::cli {
@@ -36,18 +34,14 @@ StreamedFapTrack::StreamedFapTrack(const SynthesisArgs& args, SampleRate sample_
     : args_(args),
       sample_rate_(sample_rate),
       source_(std::move(source)),
-      voice_(open_voice_or_default(args.voice, args.quiet)),
+      voice_(open_synthesis_voice(args)),
       speech_(speech_basis(voice_, args.expression)),
-      basis_(face_basis(speech_, voice_, args.voice.empty() ? std::string("the default voice") : args.voice)),
-      rate_{static_cast<std::uint32_t>(args.fps), 1},
+      basis_(face_basis(speech_, voice_, synthesis_voice_name(args))),
+      animation_(animation_options(args, std::move(name))),
+      rate_(animation_.rate),
       resampler_(kVoiceFrameRate, rate_, ResampleMode::kLinear,
                  [this](std::int64_t j, const FapFrame& frame) { take_frame(j, frame); }),
       piece_samples_(static_cast<std::int64_t>(std::llround(args.piece_seconds * sample_rate.hz))) {
-  check_voice_phone_set(voice_, args.voice.empty() ? std::string("the default voice") : args.voice);
-  animation_.rate = rate_;
-  animation_.viseme = args.viseme;
-  animation_.name = std::move(name);
-  if (args.expression) animation_.expression = expression_field(*args.expression);
   out_.emplace(args.output);
   if (lower_extension(args.output) == ".fap") {
     try {
@@ -73,6 +67,7 @@ void StreamedFapTrack::add(std::vector<TimedPhone>& phones) {
       continue;
     synthesize_piece({phones.data(), c + 1}, 0, false);
     phones.erase(phones.begin(), phones.begin() + static_cast<std::ptrdiff_t>(c));  // keep the pause
+    first_phone_ += c;
     c = 0;
   }
 }
@@ -109,7 +104,7 @@ void StreamedFapTrack::finish(std::vector<TimedPhone>& phones, std::int64_t audi
 
 void StreamedFapTrack::synthesize_piece(std::span<const TimedPhone> phones, std::int64_t end_sample, bool last) {
   const auto start = std::chrono::steady_clock::now();
-  TargetTimeline timeline = place_on_voice_grid(phones, sample_rate_, end_sample, source_);
+  TargetTimeline timeline = place_on_voice_grid(phones, sample_rate_, end_sample, source_, first_phone_);
   // A piece after the first starts in the pause the one before ended in: its frames count from
   // there (the silence place_on_voice_grid fills before it is the pieces before).
   std::int64_t origin = 0;
@@ -161,22 +156,18 @@ void StreamedFapTrack::take_frame(std::int64_t j, const FapFrame& frame) {
   }
 }
 
-std::string StreamedFapTrack::summary() const {
-  std::ostringstream line;
-  line << args_.output << ": " << frames_written_ << " frames at " << args_.fps << " fps ("
-       << static_cast<double>(audio_samples_) / static_cast<double>(sample_rate_.hz) << " s), " << phones_
-       << " phones in " << units_ << " units";
-  if (pieces_ > 1) line << " (" << pieces_ << " pieces cut in pauses)";
-  line << ", synthesised in " << std::chrono::duration<double>(synthesis_time_).count() * 1000.0 << " ms";
-  if (args_.expression) line << ", expression " << expression_blend_text(*args_.expression);
-  return line.str();
-}
-
-std::string StreamedFapTrack::tail() const {
-  std::ostringstream line;
-  if (substituted_ > 0) line << "; " << substituted_ << " phones borrowed a nearby viseme class";
-  if (dropped_ > 0) line << "; " << dropped_ << " phones shorter than a frame dropped";
-  return line.str();
+std::string StreamedFapTrack::summary(std::string_view outputs) const {
+  SynthesisReport report;
+  report.frames = static_cast<std::size_t>(frames_written_);
+  report.fps = args_.fps;
+  report.audio_seconds = static_cast<double>(audio_samples_) / static_cast<double>(sample_rate_.hz);
+  report.phones = phones_;
+  report.units = units_;
+  report.pieces = pieces_;
+  report.synthesis_ms = std::chrono::duration<double>(synthesis_time_).count() * 1000.0;
+  report.substituted = substituted_;
+  report.dropped = dropped_;
+  return synthesis_summary(args_, report, outputs);
 }
 
 }  // namespace fapcast::cli

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fapcast::cli {
@@ -46,9 +47,8 @@ class StreamedFapTrack {
   // its temporary file; `commit` then renames it (with the WAV: commit_together).
   void finish(std::vector<TimedPhone>& phones, std::int64_t audio_samples);
   AtomicFile& output() { return *out_; }
-  // The summary line `say` prints, as synthesize_to_file's: summary(), the cues' part, tail().
-  std::string summary() const;
-  std::string tail() const;
+  // The summary line `say` prints (synthesis_summary), with `outputs` (the cues' part).
+  std::string summary(std::string_view outputs) const;
 
  private:
   void synthesize_piece(std::span<const TimedPhone> phones, std::int64_t end_sample, bool last);
@@ -65,6 +65,7 @@ class StreamedFapTrack {
   TrackResampler resampler_;
   std::int64_t piece_samples_;     // args.piece_seconds in samples (0: no cuts)
   std::int64_t kept_from_ = 0;     // the first voice frame the next piece gives (its cut)
+  std::size_t first_phone_ = 0;    // the index in the whole text of the first phone not yet erased
   std::int64_t shown_ = -1;        // output frames shown (known at finish)
   std::optional<AtomicFile> out_;
   // .fap: the frames' lines go to `body_` as they come, the header and then the body to out_ at

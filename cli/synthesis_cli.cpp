@@ -140,14 +140,46 @@ MorphAnimation mesh_animation(const SynthesisArgs& args, const SpeechBasis& basi
   const auto shown = frames_shown(audio_samples, rate, track.timeline.sample_rate);
   if (weights.rows() > shown) weights.conservativeResize(shown, Eigen::NoChange);
   const FaceModel& face = ict_face_model();
-  if (basis.mean.cols() != 3 * static_cast<Eigen::Index>(face.vertex_count()))
-    throw std::runtime_error(args.output + ": the voice's face has " + std::to_string(basis.mean.cols() / 3) +
+  if (basis.dimension() != 3 * static_cast<Eigen::Index>(face.vertex_count()))
+    throw std::runtime_error(args.output + ": the voice's face has " + std::to_string(basis.dimension() / 3) +
                              " vertices, not the ICT face's " + std::to_string(face.vertex_count()) +
                              ": no faces to write a mesh with");
   return morph_animation_from_speech(basis, face.faces, std::move(weights), rate, name);
 }
 
 }  // namespace
+
+Voice open_synthesis_voice(const SynthesisArgs& args) {
+  Voice voice = open_voice_or_default(args.voice, args.quiet);
+  check_voice_phone_set(voice, synthesis_voice_name(args));
+  return voice;
+}
+
+std::string synthesis_voice_name(const SynthesisArgs& args) {
+  return args.voice.empty() ? std::string("the default voice") : args.voice;
+}
+
+AnimationOptions animation_options(const SynthesisArgs& args, std::string name) {
+  AnimationOptions animation;
+  animation.rate = {static_cast<std::uint32_t>(args.fps), 1};
+  animation.viseme = args.viseme;
+  animation.name = std::move(name);
+  if (args.expression) animation.expression = expression_field(*args.expression);
+  return animation;
+}
+
+std::string synthesis_summary(const SynthesisArgs& args, const SynthesisReport& report, std::string_view outputs) {
+  std::ostringstream line;
+  line << args.output << ": " << report.frames << " frames at " << report.fps << " fps (" << report.audio_seconds
+       << " s), " << report.phones << " phones in " << report.units << " units";
+  if (report.pieces > 1) line << " (" << report.pieces << " pieces cut in pauses)";
+  line << ", synthesised in " << report.synthesis_ms << " ms";
+  if (args.expression) line << ", expression " << expression_blend_text(*args.expression);
+  line << outputs;
+  if (report.substituted > 0) line << "; " << report.substituted << " phones borrowed a nearby viseme class";
+  if (report.dropped > 0) line << "; " << report.dropped << " phones shorter than a frame dropped";
+  return line.str();
+}
 
 void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> phones,
                         SampleRate sample_rate, std::int64_t audio_samples,
@@ -158,9 +190,7 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
               << " s, " << phones.size() << " phones" << cue_summary << "\n";
     return;
   }
-  const Voice voice = open_voice_or_default(args.voice, args.quiet);
-  const std::string voice_name = args.voice.empty() ? std::string("the default voice") : args.voice;
-  check_voice_phone_set(voice, voice_name);
+  const Voice voice = open_synthesis_voice(args);
   const SpeechBasis speech = speech_basis(voice, args.expression);
   const SynthesisOptions& options = args.options;
   const auto start = std::chrono::steady_clock::now();
@@ -187,29 +217,26 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
     frames = static_cast<std::size_t>(animation.weights.rows());
     fps = Voice::kFramesPerSecond;
   } else {
-    const FeaturePointBasis basis = face_basis(speech, voice, voice_name);
-    AnimationOptions animation;
-    animation.rate = {static_cast<std::uint32_t>(args.fps), 1};
-    animation.viseme = args.viseme;
-    animation.name = name;
-    if (args.expression) animation.expression = expression_field(*args.expression);
+    const FeaturePointBasis basis = face_basis(speech, voice, synthesis_voice_name(args));
+    const AnimationOptions animation = animation_options(args, name);
     track.pca_frames = speech_weights(track.pca_frames, speech);
     const FapSequence seq = fap_track(track, basis, animation, audio_samples);
     seconds = elapsed();
     write_animation(args.output, seq, fap_write_options(args.player), sample_rate, basis.neutral);
     frames = seq.frames.size();
   }
-  std::cout << args.output << ": " << frames << " frames at " << fps << " fps ("
-            << static_cast<double>(audio_samples) / static_cast<double>(sample_rate.hz) << " s), "
-            << track.timeline.phones.size() << " phones in " << track.search.units.size()
-            << " units, synthesised in " << seconds * 1000.0 << " ms";
-  if (args.expression) std::cout << ", expression " << expression_blend_text(*args.expression);
   if (rig_summary.empty() && !args.rig.vmc.empty())
     rig_summary = write_rig_outputs(args.rig, args.output, voice, track, audio_samples, false, args.words);
-  std::cout << rig_summary << cue_summary;
-  if (track.substituted > 0) std::cout << "; " << track.substituted << " phones borrowed a nearby viseme class";
-  if (track.timeline.dropped > 0) std::cout << "; " << track.timeline.dropped << " phones shorter than a frame dropped";
-  std::cout << "\n";
+  SynthesisReport report;
+  report.frames = frames;
+  report.fps = fps;
+  report.audio_seconds = static_cast<double>(audio_samples) / static_cast<double>(sample_rate.hz);
+  report.phones = track.timeline.phones.size();
+  report.units = track.search.units.size();
+  report.synthesis_ms = seconds * 1000.0;
+  report.substituted = track.substituted;
+  report.dropped = track.timeline.dropped;
+  std::cout << synthesis_summary(args, report, rig_summary + cue_summary) << "\n";
 }
 
 }  // namespace fapcast::cli

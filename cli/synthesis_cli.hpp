@@ -15,6 +15,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace fapcast::cli {
@@ -52,6 +53,32 @@ std::string synthesis_options_text(const SynthesisOptions& options);
 // parses the expression into args.expression, then calls `run`.
 CLI::App* add_synthesis_command(CLI::App& app, const std::string& name, const std::string& description,
                                 SynthesisArgs& args, std::function<void()> run);
+
+// The voice args.voice names (the default voice when empty), checked against this build's phone
+// set (check_voice_phone_set), and the name it goes by in messages.
+Voice open_synthesis_voice(const SynthesisArgs& args);
+std::string synthesis_voice_name(const SynthesisArgs& args);
+
+// The FAP track's options the arguments ask for: --fps, --viseme, --expression (FAP 2), `name`.
+AnimationOptions animation_options(const SynthesisArgs& args, std::string name);
+
+// What `say` and `animate` report when a track is written.
+struct SynthesisReport {
+  std::size_t frames = 0;
+  int fps = 0;
+  double audio_seconds = 0.0;
+  std::size_t phones = 0;
+  std::size_t units = 0;
+  std::size_t pieces = 1;  // > 1: the track was made in pieces cut in pauses
+  double synthesis_ms = 0.0;
+  std::size_t substituted = 0;  // phones that borrowed a nearby viseme class
+  std::size_t dropped = 0;      // phones shorter than a frame
+};
+
+// The one-line summary: "OUT: F frames at R fps (S s), P phones in U units[ (N pieces cut in
+// pauses)], synthesised in T ms[, expression E]", then `outputs` (the rig's and the cues' parts),
+// then the substituted and dropped phones when there are any. No line end.
+std::string synthesis_summary(const SynthesisArgs& args, const SynthesisReport& report, std::string_view outputs);
 
 // Writes the mouth cues of `phones` when asked (args.cues), then synthesises them (at
 // `sample_rate`, audio of `audio_samples`) on the voice and writes args.output (FAPs, or a .glb of

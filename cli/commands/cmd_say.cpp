@@ -39,6 +39,7 @@ const cli::Registration reg{"say", [](CLI::App& app) {
     bool ssml = false;
     std::string wav;
     cli::SynthesisArgs synthesis;
+    CLI::Option* piece_seconds = nullptr;  // --piece-seconds, to tell whether it was given
   };
   auto args = std::make_shared<Args>();
   auto* cmd = cli::add_synthesis_command(
@@ -46,6 +47,13 @@ const cli::Registration reg{"say", [](CLI::App& app) {
       args->synthesis, [args] {
         if (args->text.empty() == args->text_file.empty())
           throw cli::UsageError("say: give the text as TEXT, as - (standard input) or with --text-file FILE (one of them)");
+        // Pieces are for a FAP track: a mesh, a rig or --vmc takes the whole text at once, so a
+        // piece length asked for would be ignored (and the memory it bounds not bounded).
+        if (args->piece_seconds->count() > 0 && !cli::is_streamed_output(args->synthesis))
+          throw cli::UsageError("say: --piece-seconds applies to a FAP track (-o .fap, .fba, .json or .bvh, without "
+                                "--rig or --vmc); " +
+                                (args->synthesis.output.empty() ? std::string("mouth cues alone have no track")
+                                                                : "'" + args->synthesis.output + "' is made from the whole text at once"));
         // Listing espeak-ng's voices reads every voice file (5 ms): only for a language or
         // variant the user named (the default, en-us, is the front-end's own).
         if (args->language != kDefaultLanguage && !espeak_language_installed(args->language))
@@ -85,7 +93,7 @@ const cli::Registration reg{"say", [](CLI::App& app) {
         Speech speech;
         std::int64_t samples = 0;
         speak_chunks(text, options, [&](Speech&& part) {
-          const std::vector<std::int16_t> audio = std::move(part.audio.samples);
+          const std::span<const std::int16_t> audio = part.audio.samples;  // left there: the next chunk's buffer
           const SampleRate rate = part.audio.sample_rate;
           const std::size_t before = speech.phones.size();
           if (!append_timing(speech, std::move(part), samples)) return;
@@ -128,7 +136,7 @@ const cli::Registration reg{"say", [](CLI::App& app) {
           commit_together({&track->output(), &*wav_file});
         else
           track->output().commit();
-        std::cout << track->summary() << cues << track->tail() << "\n";
+        std::cout << track->summary(cues) << "\n";
       });
   cmd->add_option("TEXT", args->text, "The text (UTF-8); - reads it from standard input");
   cmd->add_option("--text-file", args->text_file, "Read the text from this file (UTF-8, or UTF-16 with a BOM; any length)");
@@ -138,9 +146,10 @@ const cli::Registration reg{"say", [](CLI::App& app) {
   cmd->add_option("--espeak-variant", args->variant,
                   "espeak-ng voice variant, as `espeak-ng --voices=variant` lists it by file (f2, m3, klatt, ...)");
   cmd->add_flag("--ssml", args->ssml, "The text is SSML: espeak-ng parses the markup (<break>, <prosody>, ...)");
-  cmd->add_option("--piece-seconds", args->synthesis.piece_seconds,
+  args->piece_seconds = cmd->add_option("--piece-seconds", args->synthesis.piece_seconds,
                   "A FAP track is made and written in pieces of about this much speech, each ending in a pause "
-                  "(bounded memory for any length); 0: the whole text at once")
+                  "(bounded memory for any length); 0: the whole text at once. FAP tracks only (.glb and rigs "
+                  "are made whole)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   cmd->add_option("--wav-out", args->wav, "Write the speech here (16-bit mono WAV; with .glb: beside it by default)");

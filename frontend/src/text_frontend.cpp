@@ -277,9 +277,17 @@ constexpr double kDefaultWordsPerMinute = 175.0;
 
 namespace {
 
+// Seconds of speech espeak-ng makes of a byte of text at its default rate, with room to spare:
+// the page of tests/data/text gives 0.054 (158 s of 2,913 bytes).
+constexpr double kSpeechSecondsPerTextByte = 0.07;
+
 // One espeak_Synth call over `text`, which starts at byte `base` of the input.
-// `voice` is what espeak_SetVoiceByName selects ("en-us", "Russian+f2").
-Speech speak_chunk(std::string_view text, std::size_t base, const SpeakOptions& options, const std::string& voice) {
+// `voice` is what espeak_SetVoiceByName selects ("en-us", "Russian+f2"). The audio is collected
+// into `samples` (emptied; its capacity kept, and raised to what the text is likely to need):
+// the audio is not copied as the buffer grows, nor its pages faulted in again chunk after chunk
+// when the caller hands the last chunk's buffer back.
+Speech speak_chunk(std::string_view text, std::size_t base, const SpeakOptions& options, const std::string& voice,
+                   std::vector<std::int16_t> samples = {}) {
   std::vector<std::size_t> char_offsets;
   scan_text(text, options.source, base, &char_offsets);
   const bool ipa = options.language != kDefaultLanguage;
@@ -292,9 +300,14 @@ Speech speak_chunk(std::string_view text, std::size_t base, const SpeakOptions& 
     select_voice(voice);
     if (std::all_of(text.begin(), text.end(), is_space)) return speech;
     espeak_SetSynthCallback(collect);
+    collector.samples = std::move(samples);
+    collector.samples.clear();
+    const int wpm = static_cast<int>(std::lround(std::clamp(kDefaultWordsPerMinute * options.rate_factor, 80.0, 450.0)));
+    const double expected_s = kSpeechSecondsPerTextByte * static_cast<double>(text.size()) * kDefaultWordsPerMinute / wpm;
+    collector.samples.reserve(std::max(collector.samples.capacity(),
+                                       static_cast<std::size_t>(expected_s * speech.audio.sample_rate.hz)));
     g_collector = &collector;
     const std::string buffer(text);  // NUL-terminated copy
-    const int wpm = static_cast<int>(std::lround(std::clamp(kDefaultWordsPerMinute * options.rate_factor, 80.0, 450.0)));
     espeak_SetParameter(espeakRATE, wpm, 0);  // set on every call: espeak-ng keeps it between calls
     const unsigned flags = espeakCHARS_UTF8 | (options.phoneme_input ? espeakPHONEMES : 0u) |
                            (options.ssml ? espeakSSML : 0u);
@@ -477,9 +490,12 @@ void speak_chunks(std::string_view text, const SpeakOptions& options, const std:
     return;
   }
   const std::vector<std::size_t> starts = chunk_offsets(text, kChunkBytes);
+  std::vector<std::int16_t> samples;
   for (std::size_t i = 0; i < starts.size(); ++i) {
     const std::size_t end = i + 1 < starts.size() ? starts[i + 1] : text.size();
-    sink(speak_chunk(text.substr(starts[i], end - starts[i]), starts[i], options, voice));
+    Speech part = speak_chunk(text.substr(starts[i], end - starts[i]), starts[i], options, voice, std::move(samples));
+    sink(std::move(part));
+    samples = std::move(part.audio.samples);  // what the sink left of them (nothing if it took them)
   }
 }
 

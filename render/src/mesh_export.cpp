@@ -31,18 +31,17 @@ MorphAnimation morph_animation_from_cm(const Positions& base_cm,
 
 MorphAnimation morph_animation_from_speech(const SpeechBasis& basis, const PolygonFaces& faces,
                                                   Eigen::MatrixXf weights, FrameRate rate, std::string name) {
-  const Eigen::Index d = basis.mean.cols();
-  if (basis.mean.rows() != 1 || d % 3 != 0 || basis.components.cols() != d || weights.cols() != basis.components.rows() ||
-      basis.names.size() != static_cast<std::size_t>(basis.components.rows()))
+  const Eigen::Index d = basis.dimension();
+  if (d % 3 != 0 || weights.cols() != basis.size() || basis.names().size() != static_cast<std::size_t>(basis.size()))
     throw std::invalid_argument("morph basis mean, directions, names and weights disagree in size");
   const Eigen::Index n = d / 3;
   MorphAnimation a;
   a.name = std::move(name);
-  a.base_positions_m = Eigen::Map<const Eigen::Matrix3Xf>(basis.mean.data(), 3, n);
+  a.base_positions_m = Eigen::Map<const Eigen::Matrix3Xf>(basis.mean().data(), 3, n);
   a.triangles = triangulate(faces);
-  for (Eigen::Index k = 0; k < basis.components.rows(); ++k)
-    a.targets_m.push_back(Eigen::Map<const Eigen::Matrix3Xf>(basis.components.row(k).data(), 3, n));
-  a.target_names = basis.names;
+  for (Eigen::Index k = 0; k < basis.size(); ++k)
+    a.targets_m.push_back(Eigen::Map<const Eigen::Matrix3Xf>(basis.direction(k).data(), 3, n));
+  a.target_names = basis.names();
   a.weights = std::move(weights);
   a.rate = rate;
   return a;

@@ -15,16 +15,11 @@ namespace fapcast {
 std::optional<std::string> face_glb(const Voice& voice, const std::string& name) {
   const FaceModel& face = ict_face_model();
   if (voice.dimension() != 3 * face.vertex_count()) return std::nullopt;
-  SpeechBasis basis = speech_basis(voice);
-  const Eigen::Index k = basis.components.rows();
-  basis.components.conservativeResize(k + static_cast<Eigen::Index>(kExpressionCount), Eigen::NoChange);
-  Eigen::Index row = k;
-  for (const Expression e : all_expressions()) {
-    basis.components.row(row++) = expression_direction_m(voice, face, {{e, kMaxExpressionIntensity}, std::nullopt});
-    basis.names.emplace_back(expression_name(e));
-  }
+  SpeechBasis basis(voice);
+  for (const Expression e : all_expressions())
+    basis.add(expression_direction_m(voice, face, {{e, kMaxExpressionIntensity}, std::nullopt}), std::string(expression_name(e)));
   const MorphAnimation animation = morph_animation_from_speech(
-      basis, face.faces, Eigen::MatrixXf(0, basis.components.rows()), {25, 1}, "fapcast serve: " + name);
+      basis, face.faces, Eigen::MatrixXf(0, basis.size()), {25, 1}, "fapcast serve: " + name);
   return write_glb(animation);
 }
 

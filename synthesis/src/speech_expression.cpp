@@ -47,17 +47,27 @@ RowMajorMatrixXf expression_direction_m(const Voice& voice, const FaceModel& fac
   return out;
 }
 
+SpeechBasis::SpeechBasis(const Voice& voice)
+    : mean_(voice.pca_mean().data()),
+      pca_(voice.pca_components().data()),
+      pca_count_(voice.pca_components().rows()),
+      dimension_(voice.pca_components().cols()) {
+  for (Eigen::Index i = 0; i < pca_count_; ++i) names_.push_back("pc" + std::to_string(i + 1));
+}
+
+void SpeechBasis::add(const RowMajorMatrixXf& direction, std::string name) {
+  if (direction.rows() != 1 || direction.cols() != dimension_)
+    throw std::invalid_argument("a direction of the speech basis is 1 x " + std::to_string(dimension_) + ", not " +
+                                std::to_string(direction.rows()) + " x " + std::to_string(direction.cols()));
+  added_.conservativeResize(added_.rows() + 1, dimension_);
+  added_.bottomRows(1) = direction;
+  names_.push_back(std::move(name));
+}
+
 SpeechBasis speech_basis(const Voice& voice, const std::optional<ExpressionBlend>& expression) {
-  SpeechBasis b;
-  b.mean = voice.pca_mean();
-  const auto pcs = voice.pca_components();
-  const Eigen::Index k = pcs.rows();
-  b.components.resize(k + (expression ? 1 : 0), pcs.cols());
-  b.components.topRows(k) = pcs;
-  for (Eigen::Index i = 0; i < k; ++i) b.names.push_back("pc" + std::to_string(i + 1));
+  SpeechBasis b(voice);
   if (expression) {
-    b.components.row(k) = expression_direction_m(voice, ict_face_model(), *expression);
-    b.names.push_back(expression_blend_text(*expression));
+    b.add(expression_direction_m(voice, ict_face_model(), *expression), expression_blend_text(*expression));
     b.expression = expression;
   }
   return b;
@@ -68,9 +78,9 @@ Eigen::MatrixXf speech_weights(const Eigen::MatrixXf& pca_frames, const SpeechBa
   if (pca_frames.cols() != k)
     throw std::invalid_argument("PCA frames have " + std::to_string(pca_frames.cols()) + " columns, the voice " +
                                 std::to_string(k) + " components");
-  Eigen::MatrixXf w(pca_frames.rows(), basis.components.rows());
+  Eigen::MatrixXf w(pca_frames.rows(), basis.size());
   w.leftCols(k) = pca_frames;
-  if (basis.expression) w.col(k).setOnes();
+  w.rightCols(basis.size() - k).setOnes();
   return w;
 }
 

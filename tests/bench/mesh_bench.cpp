@@ -4,7 +4,8 @@
 //  - adapting one dense 3 x N target, and all 53 ICT expression targets (sparse);
 //  - .glb bytes per second of animation for k = 17 morph targets at 60 fps;
 //  - `voice adapt` (adapt_voice) of a voice shaped like the reference voice (k = 17, 21 RBF
-//    centres, full ICT face) to the actor, against opening (mapping + verifying) the same voice.
+//    centres, full ICT face) to the actor, against opening (mapping + verifying) the same voice;
+//  - the face basis `say` makes of that voice's PCA components, read in place against copied.
 // Peak heap is counted by replacing global operator new/delete in this program only.
 #include <benchmark/benchmark.h>
 
@@ -20,6 +21,7 @@
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/face/obj_mesh.hpp"
 #include "fapcast/voice/voice_adaptation.hpp"
+#include "fapcast/utterance/voice_face.hpp"
 #include "fapcast/core/file_io.hpp"
 #include "support/scatter_adaptation.hpp"
 #include "support/tiny_voice.hpp"
@@ -178,6 +180,37 @@ void BM_VoiceOpen_k17(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(Voice::open(file).dimension());
 }
 BENCHMARK(BM_VoiceOpen_k17)->Unit(benchmark::kMillisecond);
+
+// The face basis `say` makes on every run, from the k x D PCA components (5.45 MB here, as in
+// the reference voice): read in place in the mapped voice (SpeechBasis, what `say` does) against
+// the obvious alternative, the components copied out of the file first (what it did before).
+// Both restrict the same basis to the feature points (face_basis); the copy's page faults count.
+void BM_FaceBasisFromVoiceView_k17(benchmark::State& state) {
+  const Voice voice = Voice::open(reference_shaped_voice());
+  for (auto _ : state) {
+    const SpeechBasis speech(voice);
+    benchmark::DoNotOptimize(face_basis(speech, voice, "bench").components.data());
+  }
+  state.counters["components_MB"] = static_cast<double>(voice.pca_components().size() * sizeof(float)) / 1e6;
+}
+BENCHMARK(BM_FaceBasisFromVoiceView_k17)->Unit(benchmark::kMicrosecond);
+
+void BM_FaceBasisFromCopy_k17(benchmark::State& state) {
+  const Voice voice = Voice::open(reference_shaped_voice());
+  std::vector<FeaturePointVertex> vertices;
+  FeaturePointPositions neutral;
+  for (const VoiceFeaturePoint& p : voice.feature_points()) {
+    vertices.push_back({*parse_feature_point(p.label), p.vertex});
+    neutral[vertices.back().fp] = p.neutral_m;
+  }
+  for (auto _ : state) {
+    const RowMajorMatrixXf mean = voice.pca_mean();
+    const RowMajorMatrixXf components = voice.pca_components();
+    benchmark::DoNotOptimize(restrict_basis(mean, components, vertices, neutral).components.data());
+  }
+  state.counters["components_MB"] = static_cast<double>(voice.pca_components().size() * sizeof(float)) / 1e6;
+}
+BENCHMARK(BM_FaceBasisFromCopy_k17)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

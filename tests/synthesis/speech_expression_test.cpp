@@ -46,15 +46,18 @@ TEST(SpeechBasis, TheExpressionIsOneMoreDirectionOnTheVoicesFace) {
   const Voice voice = ict_wide_voice(std::nullopt, "fapcast_expr_voice.fapv");
   const ExpressionBlend joy{{Expression::joy, 40}, std::nullopt};
   const SpeechBasis plain = speech_basis(voice);
-  EXPECT_EQ(plain.components.rows(), 1);
-  EXPECT_EQ(plain.names, std::vector<std::string>{"pc1"});
+  EXPECT_EQ(plain.size(), 1);
+  EXPECT_EQ(plain.names(), std::vector<std::string>{"pc1"});
+  // The PCA part is the voice file itself, not a copy.
+  EXPECT_EQ(plain.pca_components().data(), voice.pca_components().data());
+  EXPECT_EQ(plain.mean().data(), voice.pca_mean().data());
   const SpeechBasis b = speech_basis(voice, joy);
-  ASSERT_EQ(b.components.rows(), 2);
+  ASSERT_EQ(b.size(), 2);
   EXPECT_EQ(b.pca_count(), 1);
-  EXPECT_EQ(b.names.back(), "joy:40");
-  EXPECT_EQ(b.components.row(0), voice.pca_components().row(0));
+  EXPECT_EQ(b.names().back(), "joy:40");
+  EXPECT_EQ(b.direction(0), voice.pca_components().row(0));
   const Positions want = 0.01f * expression_displacement(face, joy.first);
-  const Eigen::Map<const Positions> got(b.components.row(1).data(), 3, face.vertex_count());
+  const Eigen::Map<const Positions> got(b.direction(1).data(), 3, face.vertex_count());
   EXPECT_LT((got - want).cwiseAbs().maxCoeff(), 1e-9f);
   EXPECT_GT(want.cwiseAbs().maxCoeff(), 1e-3f) << "joy moves the face by millimetres";
 
@@ -72,7 +75,7 @@ TEST(SpeechBasis, TheExpressionIsOneMoreDirectionOnTheVoicesFace) {
   maps.col(8).setConstant(2.f);
   const Voice big = ict_wide_voice(maps, "fapcast_expr_voice_big.fapv");
   const SpeechBasis bb = speech_basis(big, joy);
-  EXPECT_LT((bb.components.row(1) - 2.f * b.components.row(1)).cwiseAbs().maxCoeff(), 1e-9f);
+  EXPECT_LT((bb.direction(1) - 2.f * b.direction(1)).cwiseAbs().maxCoeff(), 1e-9f);
 }
 
 TEST(SpeechBasis, RefusesAVoiceOfAnotherTopology) {

@@ -104,6 +104,13 @@ TEST(PlaceOnVoiceGrid, RefusesReversedOverlappingAndNegativePhones) {
     EXPECT_NE(std::string(e.what()).find("x.lab"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("phone 1 'T'"), std::string::npos) << e.what();
   }
+  // A piece of a longer text (say's pieces): the index counts from the text's start.
+  try {
+    place_on_voice_grid(P{{Phone::AA, 0, 500}, {Phone::T, 400, 900}}, kSampleRate, 0, "say: text", 120);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("phone 121 'T'"), std::string::npos) << e.what();
+  }
   EXPECT_THROW(place_on_voice_grid(P{}, SampleRate{0}), std::invalid_argument);
 }
 

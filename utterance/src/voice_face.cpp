@@ -18,7 +18,15 @@ FeaturePointBasis face_basis(const SpeechBasis& basis, const Voice& voice,
     vertices.push_back({*fp, p.vertex});
     neutral[*fp] = p.neutral_m;
   }
-  return restrict_basis(basis.mean, basis.components, vertices, std::move(neutral));
+  // The PCA components in place in the voice's file, then the added directions: only the
+  // points' columns are read.
+  FeaturePointBasis b = restrict_basis(basis.mean(), basis.pca_components(), vertices, std::move(neutral));
+  if (basis.added().rows() > 0) {
+    const FeaturePointBasis added = restrict_basis(basis.mean(), basis.added(), vertices, b.neutral);
+    b.components.conservativeResize(basis.size(), Eigen::NoChange);
+    b.components.bottomRows(basis.added().rows()) = added.components;
+  }
+  return b;
 }
 
 void check_voice_phone_set(const Voice& voice, const std::string& source) {

@@ -132,17 +132,14 @@ Voice::Voice(Voice&&) noexcept = default;
 Voice& Voice::operator=(Voice&&) noexcept = default;
 Voice::~Voice() = default;
 
-Voice Voice::open(const std::filesystem::path& path) {
-  return from_view(open_voice(path));  // container, sections, shapes, provenance
-}
+Voice Voice::open(const std::filesystem::path& path) { return from_view(VoiceFileView::open(path)); }
 
 Voice Voice::over_bytes(std::span<const std::byte> bytes, std::string source) {
-  VoiceFileView view = VoiceFileView::over_bytes(bytes, std::move(source));
-  check_voice_sections(view);
-  return from_view(std::move(view));
+  return from_view(VoiceFileView::over_bytes(bytes, std::move(source)));
 }
 
 Voice Voice::from_view(VoiceFileView view) {
+  check_voice_sections(view);  // open_voice's checks, the provenance parsed once (here)
   VoiceProvenance provenance = view.provenance();
   const Eigen::Index d = static_cast<Eigen::Index>(view.require(vs::kPcaMean).cols);
   if (d % 3 != 0) refuse(view, vs::kPcaMean, "section-shape", "D = " + std::to_string(d) + " is not 3 x vertices");

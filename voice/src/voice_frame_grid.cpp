@@ -7,8 +7,8 @@
 
 namespace fapcast {
 namespace {
-std::string describe(std::span<const TimedPhone> phones, std::size_t i) {
-  return "phone " + std::to_string(i) + " '" + std::string(arpabet(phones[i].phone)) + "' [" +
+std::string describe(std::span<const TimedPhone> phones, std::size_t i, std::size_t first_phone) {
+  return "phone " + std::to_string(first_phone + i) + " '" + std::string(arpabet(phones[i].phone)) + "' [" +
          std::to_string(phones[i].start_sample) + ", " + std::to_string(phones[i].end_sample) + ")";
 }
 
@@ -22,7 +22,7 @@ void append(TargetTimeline& out, Phone phone, std::int64_t first, std::int64_t e
 }  // namespace
 
 TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, SampleRate sample_rate,
-                                   std::int64_t end_sample, const std::string& source) {
+                                   std::int64_t end_sample, const std::string& source, std::size_t first_phone) {
   if (!sample_rate.valid())
     throw std::invalid_argument("voice grid: sample rate " + std::to_string(sample_rate.hz) + " Hz");
   TargetTimeline out;
@@ -40,12 +40,12 @@ TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, SampleRat
   for (std::size_t i = 0; i < phones.size(); ++i) {
     const TimedPhone& p = phones[i];
     if (p.start_sample < 0)
-      throw InputError({source, {}, {}}, "phone-negative-start", describe(phones, i) + " starts before sample 0");
+      throw InputError({source, {}, {}}, "phone-negative-start", describe(phones, i, first_phone) + " starts before sample 0");
     if (p.end_sample < p.start_sample)
-      throw InputError({source, {}, {}}, "phone-reversed", describe(phones, i) + " ends before it starts");
+      throw InputError({source, {}, {}}, "phone-reversed", describe(phones, i, first_phone) + " ends before it starts");
     if (p.start_sample < previous_end)
       throw InputError({source, {}, {}}, "phone-overlap",
-                       describe(phones, i) + " starts before the previous phone ends (sample " +
+                       describe(phones, i, first_phone) + " starts before the previous phone ends (sample " +
                            std::to_string(previous_end) + "): phones must be in time order");
     fill_silence_to(p.start_sample);
     const std::int64_t end = first_frame_at(p.end_sample, kVoiceFrameRate, sample_rate);

@@ -114,6 +114,8 @@ Speech speak(std::string_view text, const SpeakOptions& options = {});
 // chunk at a time: `sink` gets each chunk's speech in order, its samples and phones counted from
 // the chunk's own start, its words' byte offsets into the whole text. A text of at most
 // kChunkBytes (or SSML) is one chunk. Throws as speak() does (input errors before any chunk).
+// The samples a sink leaves in the chunk (it reads them without moving them out) are the next
+// chunk's buffer: its memory is reused, not allocated and faulted in again.
 void speak_chunks(std::string_view text, const SpeakOptions& options, const std::function<void(Speech&&)>& sink);
 
 // Appends a chunk of speak_chunks to `all` as speak() does, but its timing only: phones, events

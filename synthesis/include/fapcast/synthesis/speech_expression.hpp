@@ -36,20 +36,48 @@ std::string expression_blend_text(const ExpressionBlend& blend);
 // when the voice's face is not `face`'s topology (D != 3 x face.vertex_count()).
 RowMajorMatrixXf expression_direction_m(const Voice& voice, const FaceModel& face, const ExpressionBlend& blend);
 
-// A voice's face as a morph basis (metres, xyz interleaved per vertex).
-struct SpeechBasis {
-  RowMajorMatrixXf mean;           // 1 x D: the voice's PCA mean
-  RowMajorMatrixXf components;     // K x D: the k PCA components, then the expression's direction
-  std::vector<std::string> names;  // K: "pc1" ... "pck", then e.g. "joy:40"
-  std::optional<ExpressionBlend> expression;
-  Eigen::Index pca_count() const { return components.rows() - (expression ? 1 : 0); }
+// A voice's face as a morph basis (metres, xyz interleaved per vertex): the mean and K
+// directions, first the voice's k PCA components, then the directions added to them (an
+// expression's displacement). The mean and the components are read in place from the voice's
+// mapped file, not copied (5.45 MB for the default voice): a basis is valid while its voice
+// lives. The added directions are its own.
+class SpeechBasis {
+ public:
+  SpeechBasis() = default;
+  // The voice's mean and k components, named "pc1" ... "pck".
+  explicit SpeechBasis(const Voice& voice);
+
+  Eigen::Map<const RowMajorMatrixXf> mean() const { return {mean_, 1, dimension_}; }  // 1 x D
+  Eigen::Map<const RowMajorMatrixXf> pca_components() const { return {pca_, pca_count_, dimension_}; }  // k x D
+  const RowMajorMatrixXf& added() const { return added_; }  // (K - k) x D
+  // Direction i of K, 1 x D.
+  Eigen::Map<const Eigen::RowVectorXf> direction(Eigen::Index i) const {
+    return {i < pca_count_ ? pca_ + i * dimension_ : added_.row(i - pca_count_).data(), dimension_};
+  }
+  Eigen::Index size() const { return pca_count_ + added_.rows(); }  // K
+  Eigen::Index pca_count() const { return pca_count_; }               // k
+  Eigen::Index dimension() const { return dimension_; }               // D
+  const std::vector<std::string>& names() const { return names_; }   // K: "pc1" ... "pck", then the added
+  // Appends `direction` (1 x D) as direction K + 1, named `name`. Throws std::invalid_argument
+  // when it is not 1 x D.
+  void add(const RowMajorMatrixXf& direction, std::string name);
+
+  std::optional<ExpressionBlend> expression;  // the expression whose direction was added, if any
+
+ private:
+  const float* mean_ = nullptr;  // in the voice's file
+  const float* pca_ = nullptr;   // in the voice's file, k x D row-major
+  Eigen::Index pca_count_ = 0;
+  Eigen::Index dimension_ = 0;
+  RowMajorMatrixXf added_;
+  std::vector<std::string> names_;
 };
 
 // The voice's basis, with the expression (on ict_face_model()) as direction k + 1 when given.
 SpeechBasis speech_basis(const Voice& voice, const std::optional<ExpressionBlend>& expression = {});
 
-// F x K weights of `basis` for F synthesised PCA frames (F x k): the PCA coefficients, then the
-// expression's weight 1 (its FAP 2 intensity) in every frame. Throws std::invalid_argument when
+// F x K weights of `basis` for F synthesised PCA frames (F x k): the PCA coefficients, then
+// weight 1 for each added direction (an expression at its FAP 2 intensity) in every frame. Throws std::invalid_argument when
 // the frames do not have basis.pca_count() columns.
 Eigen::MatrixXf speech_weights(const Eigen::MatrixXf& pca_frames, const SpeechBasis& basis);
 

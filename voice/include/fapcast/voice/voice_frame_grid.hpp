@@ -48,10 +48,11 @@ struct TargetTimeline {
 
 // `end_sample` (e.g. the audio's length) extends the timeline with silence when it lies past
 // the last phone; phones running past it are the caller's concern (see tools' animate).
-// Throws InputError (source `source`, rule as above, detail naming the phone index) or
-// std::invalid_argument for an invalid sample rate.
+// Throws InputError (source `source`, rule as above, detail naming the phone index: phones[0]
+// is phone `first_phone` of the text, as in a piece of a longer one) or std::invalid_argument
+// for an invalid sample rate.
 TargetTimeline place_on_voice_grid(std::span<const TimedPhone> phones, SampleRate sample_rate,
-                                   std::int64_t end_sample = 0, const std::string& source = "phones");
+                                   std::int64_t end_sample = 0, const std::string& source = "phones", std::size_t first_phone = 0);
 
 // Whether a phone's visible shape must be met exactly (lip closure, lip to teeth).
 constexpr bool is_held(VisemeClass v) {

@@ -89,7 +89,8 @@ RouteMatch match_route(http::verb method, std::string_view target) {
   if (m.route == Route::kNotFound) return m;
   const bool ok = each_parameter(query, [&](std::string_view name, std::string_view value) {
     if (get && name == "token" && !m.token) {
-      m.token = std::string(value);
+      // An empty ?token= presents no token: answered as a request without one (token-missing).
+      if (!value.empty()) m.token = std::string(value);
       return true;
     }
     if (m.route == Route::kPage) return true;  // the page's own parameters (channel): the script reads them

@@ -72,6 +72,10 @@ TEST(ServeAuth, TokenAsQueryParameterOnGetAndRedactedInTheLog) {
   // Not on a POST: a form could carry it there.
   const Answer p = http_request(port(), http::verb::post, std::string("/v1/say?token=") + kToken, "{\"text\":\"hi\"}", {});
   EXPECT_EQ(p.status, 401);
+  // An empty ?token= presents no token (found by serve_http_request_fuzz: seed empty-query-token).
+  const Answer empty = http_request(port(), http::verb::get, "/three/examples/loader.js?token=&x", {}, {});
+  EXPECT_EQ(empty.status, 401);
+  EXPECT_EQ(empty.json()["error"], "token-missing");
 }
 
 // The answer to a WebSocket handshake as a plain HTTP exchange (Boost 1.74's handshake does not

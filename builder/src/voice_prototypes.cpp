@@ -16,7 +16,7 @@ namespace {
 
 // spec/prototypes.tsv, row for row: the details added to the realised articulation.
 constexpr PrototypeShapeWeight kDetails[] = {
-    {VisemeClass::kSilence, "mouthClose", 0.007f},
+    {VisemeClass::kSilence, "mouthClose", 0.058f},
     {VisemeClass::kBilabial, "mouthRollUpper", 0.15f},
     {VisemeClass::kBilabial, "mouthRollLower", 0.1f},
     {VisemeClass::kLabiodental, "noseSneer_L", 0.1f},

@@ -42,6 +42,7 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
     std::string voice;
     SynthesisOptions options;
     double tilt_deg = 0;
+    bool talker = false;
     std::string json;
     std::string svg;
     bool quiet = false;
@@ -66,6 +67,10 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
                   "how much the scores depend on it")
       ->check(CLI::Range(-45.0, 45.0))
       ->capture_default_str();
+  cmd->add_flag("--talker", args->talker,
+                "Also animate each alignment with the SYNTHETIC reference talker's own articulation (the tracks the "
+                "default voice is recorded from, on the generic ICT face, no voice): whether an error comes from the "
+                "talker's tables or from the voice");
   cmd->add_option("--json-out", args->json, "Write the results as JSON to this file (atomically)");
   cmd->add_option("--svg-out", args->svg, "Write the curves, real and synthesised, as an SVG plot to this file (atomically)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
@@ -86,6 +91,7 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
     if (!args->transcript.lang.empty()) command += " --lang " + shell_word(args->transcript.lang);
     if (!args->voice.empty()) command += " --voice " + shell_word(args->voice);
     command += cli::synthesis_options_text(args->options);
+    if (args->talker) command += " --talker";
     ArticulographySettings settings;
     settings.extra_rotation_rad = args->tilt_deg * std::numbers::pi / 180;
     if (args->tilt_deg != 0) {
@@ -123,6 +129,16 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
                                                     a.speech.samples, args->options, a.source, settings));
       names.push_back(a.name);
     }
+    // After the voice's animations, so that the first two stay the reference and own alignment's.
+    const std::size_t voice_evaluations = evaluations.size();
+    if (args->talker) {
+      for (const Animation& a : animations) {
+        evaluations.push_back(evaluate_talker_articulography(ema, args->ema, voice, a.speech.phones,
+                                                             a.speech.sample_rate, a.speech.samples, args->options,
+                                                             a.source, settings));
+        names.push_back("reference talker (SYNTHETIC), " + a.name);
+      }
+    }
 
     std::cout << "# " << command << "\n";
     std::cout << "Real articulography " << args->ema << " against the face animated on " << voice_name
@@ -133,12 +149,16 @@ const cli::Registration reg{"eval articulography", [](CLI::App& app) {
     json["speech"] = args->wav;
     json["voice"] = voice_name;
     for (std::size_t i = 0; i < evaluations.size(); ++i) {
-      std::cout << articulography_table(evaluations[i], "## animated from the " + names[i]) << "\n";
+      const bool talker = i >= voice_evaluations;
+      std::cout << articulography_table(evaluations[i], talker ? "## the " + names[i] + ", no voice"
+                                                               : "## animated from the " + names[i])
+                << "\n";
       nlohmann::json one = articulography_json(evaluations[i]);
       one["phones_from"] = names[i];
+      one["animated_by"] = i >= voice_evaluations ? "reference talker (SYNTHETIC)" : "voice";
       json["animations"].push_back(std::move(one));
     }
-    if (evaluations.size() == 2) {
+    if (voice_evaluations == 2) {
       std::cout << "## own alignment against the reference alignment\n"
                 << alignment_effect_table(evaluations[0], evaluations[1]) << "\n";
     }

@@ -3,9 +3,12 @@
 #include "fapcast/codec/fapu_values.hpp"
 #include "fapcast/codec/feature_point.hpp"
 #include "fapcast/core/input_error.hpp"
+#include "fapcast/face/face_model.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/math/sample_statistics.hpp"
 #include "fapcast/math/zero_phase_lowpass.hpp"
+#include "fapcast/talker/articulation.hpp"
+#include "fapcast/talker/coarticulation.hpp"
 #include "fapcast/voice/voice_frame_grid.hpp"
 
 #include <algorithm>
@@ -328,43 +331,105 @@ void check_articulography_inputs(const MarkerFrames<Millimetres>& ema, const std
                      "no phone is spoken (only silences and noises): nothing to compare with the EMA");
 }
 
+namespace {
+
+// What both animations share: the registration on the voice's mean face `voice_mean_m` (so that
+// the real curves are the same whatever animates the face), the real curves, and the face's curves
+// from frames of `components_m` about `mean_m`.
+ArticulographyEvaluation compare_with_face(const MarkerFrames<Millimetres>& ema, const std::string& ema_source,
+                                           const Eigen::Ref<const RowMajorMatrixXf>& voice_mean_m,
+                                           const Eigen::Ref<const RowMajorMatrixXf>& mean_m,
+                                           const Eigen::Ref<const RowMajorMatrixXf>& components_m,
+                                           const Eigen::MatrixXf& frames, const SynthesizedTrack& track,
+                                           double mns_mm, const std::string& phones_source,
+                                           const ArticulographySettings& settings) {
+  ArticulographyEvaluation e;
+  e.settings = settings;
+  e.ema_rate_hz = ema.frame_rate_hz;
+  e.ema_frames = ema.frame_count();
+  e.end_s = static_cast<double>(ema.first_frame + e.ema_frames - 1) / ema.frame_rate_hz;
+  const ArticulographyFacePoints points = ict_articulography_points();
+  if (voice_mean_m.cols() <= 3 * static_cast<Eigen::Index>(points.lower_incisor) + 2)
+    throw InputError({phones_source, std::nullopt, std::nullopt}, "articulography-mesh",
+                     "the voice's face has " + std::to_string(voice_mean_m.cols() / 3) +
+                         " vertices: the face points are ICT-FaceKit vertices (an ICT-topology voice is needed)");
+  e.registration = register_ema(ema, ema_source, voice_mean_m, points);
+  e.registration.rotation_rad += settings.extra_rotation_rad;
+  e.real = ema_measure_curves(ema, e.registration, settings.rate_hz, e.end_s, settings.lowpass_hz);
+  if (frames.rows() < 1)
+    throw InputError({phones_source, std::nullopt, std::nullopt}, "articulography-span", "no frames were synthesised");
+  e.phones = track.timeline.phones.size();
+  e.units = track.search.units.size();
+  e.face = face_measure_curves(mean_m, components_m, frames, track.tongue, points, mns_mm, settings.rate_hz, e.end_s);
+  for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m)
+    e.agreement[m] = trajectory_agreement(e.real.mm[m], e.face.mm[m], settings.rate_hz, settings.max_lag_s,
+                                          settings.lag_step_s);
+  return e;
+}
+
+// The voice's MNS FAPU in mm, measured on its neutral feature points as a renderer measures it
+// (codec's FAPU rule): the tongue FAPs are in it.
+double neutral_mns_mm(const Voice& voice) {
+  FeaturePointPositions neutral_m;
+  for (const VoiceFeaturePoint& p : voice.feature_points())
+    if (const auto fp = parse_feature_point(p.label)) neutral_m[*fp] = p.neutral_m;
+  return 1000 * measure_fapu(neutral_m).mns;
+}
+
+}  // namespace
+
 ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>& ema, const std::string& ema_source,
                                                  const Voice& voice, std::span<const TimedPhone> phones,
                                                  SampleRate sample_rate, std::int64_t audio_samples,
                                                  const SynthesisOptions& options, const std::string& phones_source,
                                                  const ArticulographySettings& settings) {
   check_articulography_inputs(ema, ema_source, phones, sample_rate, phones_source);
-  ArticulographyEvaluation e;
-  e.settings = settings;
-  e.ema_rate_hz = ema.frame_rate_hz;
-  e.ema_frames = ema.frame_count();
-  e.end_s = static_cast<double>(ema.first_frame + e.ema_frames - 1) / ema.frame_rate_hz;
-  const auto mean = voice.pca_mean();
-  const auto components = voice.pca_components();
-  const ArticulographyFacePoints points = ict_articulography_points();
-  if (mean.cols() <= 3 * static_cast<Eigen::Index>(points.lower_incisor) + 2)
-    throw InputError({phones_source, std::nullopt, std::nullopt}, "articulography-mesh",
-                     "the voice's face has " + std::to_string(mean.cols() / 3) +
-                         " vertices: the face points are ICT-FaceKit vertices (an ICT-topology voice is needed)");
-  e.registration = register_ema(ema, ema_source, mean, points);
-  e.registration.rotation_rad += settings.extra_rotation_rad;
-  e.real = ema_measure_curves(ema, e.registration, settings.rate_hz, e.end_s, settings.lowpass_hz);
   const SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones, sample_rate,
                                             audio_samples, options, phones_source);
-  if (track.pca_frames.rows() < 1)
-    throw InputError({phones_source, std::nullopt, std::nullopt}, "articulography-span", "no frames were synthesised");
-  e.phones = track.timeline.phones.size();
-  e.units = track.search.units.size();
-  // The tongue FAPs are in the MNS of the neutral face (what a renderer measures: codec's FAPU rule).
-  FeaturePointPositions neutral_m;
-  for (const VoiceFeaturePoint& p : voice.feature_points())
-    if (const auto fp = parse_feature_point(p.label)) neutral_m[*fp] = p.neutral_m;
-  const double mns_mm = 1000 * measure_fapu(neutral_m).mns;
-  e.face = face_measure_curves(mean, components, track.pca_frames, track.tongue, points, mns_mm, settings.rate_hz,
-                               e.end_s);
-  for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m)
-    e.agreement[m] = trajectory_agreement(e.real.mm[m], e.face.mm[m], settings.rate_hz, settings.max_lag_s,
-                                          settings.lag_step_s);
+  return compare_with_face(ema, ema_source, voice.pca_mean(), voice.pca_mean(), voice.pca_components(), track.pca_frames, track,
+                           neutral_mns_mm(voice), phones_source, settings);
+}
+
+ArticulographyEvaluation evaluate_talker_articulography(const MarkerFrames<Millimetres>& ema,
+                                                        const std::string& ema_source, const Voice& voice,
+                                                        std::span<const TimedPhone> phones, SampleRate sample_rate,
+                                                        std::int64_t audio_samples, const SynthesisOptions& options,
+                                                        const std::string& phones_source,
+                                                        const ArticulographySettings& settings) {
+  check_articulography_inputs(ema, ema_source, phones, sample_rate, phones_source);
+  // The tongue is the parametric tongue of the same phones (the talker's tongue channels drive no
+  // face shape), so that only the face differs from the voice's animation.
+  const SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones, sample_rate,
+                                            audio_samples, options, phones_source);
+  const FaceModel& face = ict_face_model();
+  const Eigen::MatrixXf weights =
+      expression_weights(coarticulate({sample_rate, {phones.begin(), phones.end()}}), ShapeMapper(face));
+  // The shapes the talker uses, dense (metres), about the generic neutral: the face the default
+  // voice is retargeted to.
+  std::vector<Eigen::Index> used;
+  for (Eigen::Index s = 0; s < weights.rows(); ++s)
+    if (weights.row(s).cwiseAbs().maxCoeff() > 0) used.push_back(s);
+  const Eigen::Index n = face.neutral_cm.cols();
+  RowMajorMatrixXf mean_m(1, 3 * n);
+  for (Eigen::Index v = 0; v < n; ++v)
+    for (int a = 0; a < 3; ++a) mean_m(0, 3 * v + a) = face.neutral_cm(a, v) / 100.0f;
+  RowMajorMatrixXf components_m = RowMajorMatrixXf::Zero(static_cast<Eigen::Index>(used.size()), 3 * n);
+  // On the voice's frames of the same span (synthesize runs to the audio's end; the talker to the
+  // last phone's): the talker's last frame held.
+  const Eigen::Index frame_count = track.pca_frames.rows();
+  Eigen::MatrixXf frames(frame_count, static_cast<Eigen::Index>(used.size()));
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    const SparseDelta& d = face.expressions[static_cast<std::size_t>(used[i])];
+    for (std::size_t j = 0; j < d.vertices.size(); ++j)
+      for (int a = 0; a < 3; ++a)
+        components_m(static_cast<Eigen::Index>(i), 3 * d.vertices[j] + a) =
+            d.offsets_cm(a, static_cast<Eigen::Index>(j)) / 100.0f;
+    for (Eigen::Index k = 0; k < frame_count; ++k)
+      frames(k, static_cast<Eigen::Index>(i)) = weights(used[i], std::min(k, weights.cols() - 1));
+  }
+  ArticulographyEvaluation e = compare_with_face(ema, ema_source, voice.pca_mean(), mean_m, components_m, frames, track,
+                                                 neutral_mns_mm(voice), phones_source, settings);
+  e.units = 0;  // no units: the talker's tracks are continuous
   return e;
 }
 

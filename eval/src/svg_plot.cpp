@@ -53,10 +53,9 @@ std::vector<double> nice_ticks(double lo, double hi, int target) {
 std::string svg_line_plot(const LinePlot& plot) {
   if (plot.panels.empty()) throw std::invalid_argument("svg plot: no panels");
   if (!(plot.x_step > 0)) throw std::invalid_argument("svg plot: x step must be positive");
-  const double left = 80, right = 20, top = 60, gap = 45, bottom = 55;
+  const double left = 80, right = 20, gap = 45, bottom = 55;
   const double width = plot.width_px, panel_h = plot.panel_height_px;
   const double plot_w = width - left - right;
-  const double height = top + static_cast<double>(plot.panels.size()) * (panel_h + gap) - gap + bottom;
 
   std::size_t samples = 1;
   std::vector<std::string> legend;
@@ -65,6 +64,21 @@ std::string svg_line_plot(const LinePlot& plot) {
       samples = std::max(samples, panel.series[s].values.size());
       if (s >= legend.size()) legend.push_back(panel.series[s].name);
     }
+  // Legend entries left to right under the title, a new row (18 px lower) where the next one
+  // would pass the right margin; the panels start below the last row.
+  struct LegendEntry {
+    double x, y;
+  };
+  std::vector<LegendEntry> entries;
+  double lx = left, ly = 40;
+  for (const std::string& name : legend) {
+    const double w = 40 + 7.0 * static_cast<double>(name.size());
+    if (lx > left && lx + w - 10 > width - right) lx = left, ly += 18;
+    entries.push_back({lx, ly});
+    lx += w;
+  }
+  const double top = ly + 20;
+  const double height = top + static_cast<double>(plot.panels.size()) * (panel_h + gap) - gap + bottom;
   const double x_lo = plot.x_start;
   const double x_hi = plot.x_start + static_cast<double>(std::max<std::size_t>(samples, 2) - 1) * plot.x_step;
   auto x_px = [&](double x) { return left + (x - x_lo) / (x_hi - x_lo) * plot_w; };
@@ -76,14 +90,12 @@ std::string svg_line_plot(const LinePlot& plot) {
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
       << "<text x=\"" << px(width / 2) << "\" y=\"22\" text-anchor=\"middle\" font-size=\"15\">"
       << escape_xml(plot.title) << "</text>\n";
-  // Legend: one row under the title.
-  double lx = left;
   for (std::size_t s = 0; s < legend.size(); ++s) {
     const char* colour = kColours[s % kColours.size()];
-    svg << "<line x1=\"" << px(lx) << "\" y1=\"40\" x2=\"" << px(lx + 24) << "\" y2=\"40\" stroke=\""
-        << colour << "\" stroke-width=\"2\"/>\n"
-        << "<text x=\"" << px(lx + 30) << "\" y=\"44\">" << escape_xml(legend[s]) << "</text>\n";
-    lx += 40 + 7.0 * static_cast<double>(legend[s].size());
+    const auto [ex, ey] = entries[s];
+    svg << "<line x1=\"" << px(ex) << "\" y1=\"" << px(ey) << "\" x2=\"" << px(ex + 24) << "\" y2=\"" << px(ey)
+        << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n"
+        << "<text x=\"" << px(ex + 30) << "\" y=\"" << px(ey + 4) << "\">" << escape_xml(legend[s]) << "</text>\n";
   }
 
   for (std::size_t p = 0; p < plot.panels.size(); ++p) {

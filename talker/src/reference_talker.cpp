@@ -5,6 +5,7 @@
 #include "fapcast/talker/coarticulation.hpp"
 #include "fapcast/face/marker_map.hpp"
 #include "fapcast/core/synthetic_label.hpp"
+#include "fapcast/talker/rest_padding.hpp"
 #include "fapcast/talker/talker_markers.hpp"
 #include "fapcast/corpus/textgrid.hpp"
 
@@ -83,9 +84,10 @@ ReferenceTake record_take(const ScriptItem& item, std::string id, const FaceMode
   const UtteranceVariation variation = draw_utterance_variation(random);
   take.effort = variation.effort;
   const bool nonsense = item.section == ScriptSection::kNonsense;
-  take.speech = speak(nonsense ? item.espeak_phonemes : item.text, SpeakOptions{.phoneme_input = nonsense, .rate_factor = variation.rate_factor});
-  if (take.speech.phones.empty())
+  Speech spoken = speak(nonsense ? item.espeak_phonemes : item.text, SpeakOptions{.phoneme_input = nonsense, .rate_factor = variation.rate_factor});
+  if (spoken.phones.empty())
     throw std::runtime_error("reference talker: espeak-ng said nothing for \"" + item.text + "\"");
+  take.speech = with_rest(std::move(spoken), RestPadding{});
   take.audio = take.speech.audio;
   take.alignment = take_alignment(take.speech);
   take.clean = talker_markers(actor, timeline_of(take.speech), {60, variation.effort});

@@ -121,6 +121,30 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
             0.2);
   EXPECT_EQ(tilted["measures"]["lip_aperture"]["range_ours_mm"], upright["measures"]["lip_aperture"]["range_ours_mm"]);
 
+  // --talker adds the SYNTHETIC reference talker's own articulation of the same phones, after the
+  // voice's animations (whose order and effect table stay): the same real side, a face that is not
+  // the voice's, and, as calibrated (spec/talker.md), lips that open about as far as the real
+  // talker's and move with them.
+  const auto k = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha +
+                                     ".lab --talker --voice " + voice() + " --json-out " + out("k.json") + " -q"));
+  ASSERT_EQ(k.exit_code, 0) << k.err;
+  EXPECT_NE(k.out.find(" --talker\n"), std::string::npos) << k.out;
+  EXPECT_NE(k.out.find("## the reference talker (SYNTHETIC), reference alignment, no voice"), std::string::npos) << k.out;
+  const auto kj = nlohmann::json::parse(read_file(out("k.json")));
+  ASSERT_EQ(kj["animations"].size(), 2u);
+  EXPECT_EQ(kj["animations"][0]["animated_by"], "voice");
+  const auto& talker = kj["animations"][1];
+  EXPECT_EQ(talker["animated_by"], "reference talker (SYNTHETIC)");
+  EXPECT_EQ(talker["synthesis"]["units"], 0);
+  EXPECT_EQ(talker["curves"]["real_mm"]["lip_aperture"], kj["animations"][0]["curves"]["real_mm"]["lip_aperture"]);
+  EXPECT_NE(talker["curves"]["ours_mm"]["lip_aperture"], kj["animations"][0]["curves"]["ours_mm"]["lip_aperture"]);
+  EXPECT_EQ(talker["curves"]["ours_mm"]["tongue_tip_height"], kj["animations"][0]["curves"]["ours_mm"]["tongue_tip_height"])
+      << "the same parametric tongue";
+  const auto& talker_lips = talker["measures"]["lip_aperture"];
+  EXPECT_GT(talker_lips["range_ratio"].get<double>(), 0.8);
+  EXPECT_LT(talker_lips["range_ratio"].get<double>(), 1.25);
+  EXPECT_GT(talker_lips["r_zero_lag"].get<double>(), 0.4);
+
   const std::string svg = read_file(out("a.svg"));
   EXPECT_EQ(svg.rfind("<?xml", 0), 0u);
   for (const char* label : {"lip aperture (mm", "jaw opening (mm", "jaw opening (chin 2.1) (mm", "lower-lip protrusion",

@@ -105,6 +105,37 @@ TEST(SvgPlot, IsWellFormedAndHasOnePolylinePerRun) {
   EXPECT_NE(svg.find(">1.8</text>"), std::string::npos);
 }
 
+// A legend wider than the figure wraps onto more rows instead of running off the right edge, and
+// the panels move down by as much: nothing is drawn over the legend.
+TEST(SvgPlot, ALongLegendWrapsAndPushesThePanelsDown) {
+  const LinePlot one_row = figure();
+  LinePlot many = figure();
+  for (auto& panel : many.panels)
+    for (const char* name : {"own alignment (forced, transcript, accent US dictionary)",
+                             "reference talker (SYNTHETIC), reference alignment", "a third long series name here"})
+      panel.series.push_back({name, panel.series[0].values});
+  const std::string svg = svg_line_plot(many);
+  EXPECT_EQ(xml_problem(svg), "");
+  // Every legend label (the text after a legend's line) ends inside the figure, at 7 px a character.
+  const std::string entry = "stroke-width=\"2\"/>\n<text x=\"";
+  std::size_t labels = 0;
+  for (std::size_t at = svg.find(entry); at != std::string::npos; at = svg.find(entry, at + 1)) {
+    const std::size_t text = at + entry.size() - 9;
+    const double x = std::stod(svg.substr(text + 9));
+    const std::size_t open = svg.find('>', text), close = svg.find("</text>", open);
+    EXPECT_LE(x + 7 * static_cast<double>(close - open - 1), many.width_px) << svg.substr(text, 120);
+    ++labels;
+  }
+  EXPECT_EQ(labels, 5u);
+  // The first panel's frame is lower than with a one-row legend.
+  const auto panel_top = [](const std::string& s) {
+    const std::size_t g = s.find("<g class=\"panel\">");
+    const std::size_t y = s.find(" y=\"", g);
+    return std::stod(s.substr(y + 4));
+  };
+  EXPECT_GT(panel_top(svg), panel_top(svg_line_plot(one_row)) + 17);
+}
+
 TEST(SvgPlot, RefusesEmptyFiguresAndKeepsFlatOnesDrawable) {
   LinePlot empty;
   EXPECT_THROW(svg_line_plot(empty), std::invalid_argument);

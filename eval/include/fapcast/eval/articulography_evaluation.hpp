@@ -144,6 +144,19 @@ ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>
                                                  const SynthesisOptions& options, const std::string& phones_source,
                                                  const ArticulographySettings& settings = {});
 
+// The same comparison for the SYNTHETIC reference talker's own articulation of `phones`
+// (talker/coarticulation.hpp: the Cohen-Massaro channel tracks the default voice's corpus is
+// recorded from, mapped to ICT expression shapes on the generic ICT face at 60 fps), without a
+// voice's units, RBF map or PCA: set beside evaluate_articulography's, it tells whether an error
+// comes from the talker's tables or from the voice built on them. The tongue is the parametric
+// tongue of the same phones, and the MNS FAPU the voice's, as there; `units` is 0.
+ArticulographyEvaluation evaluate_talker_articulography(const MarkerFrames<Millimetres>& ema,
+                                                        const std::string& ema_source, const Voice& voice,
+                                                        std::span<const TimedPhone> phones, SampleRate sample_rate,
+                                                        std::int64_t audio_samples, const SynthesisOptions& options,
+                                                        const std::string& phones_source,
+                                                        const ArticulographySettings& settings = {});
+
 // The table `eval articulography` prints for one animation, headed by `title`: one row per
 // measure (range real and ours in mm, their ratio, r at zero lag, best lag in ms, r there; a lag
 // on the edge of the window is marked "(window edge)": no delay lines the curves up), then the

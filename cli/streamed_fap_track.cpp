@@ -9,7 +9,6 @@
 #include "fapcast/voice/voice_frame_grid.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 
 namespace fapcast::cli {
@@ -80,17 +79,13 @@ void StreamedFapTrack::finish(std::vector<TimedPhone>& phones, std::int64_t audi
   resampler_.finish();
   const FapTextWriteOptions fap = fap_write_options(args_.player);
   if (fap_text_) {
-    body_->write(pending_text_);
+    // The header (its counts known only now), the lines flushed so far, copied by the kernel,
+    // then the ones still held.
+    out_->write(fap_text_->header(animation_.name));
+    out_->append_contents_of(*body_);
+    out_->write(pending_text_);
     pending_text_.clear();
     pending_text_.shrink_to_fit();
-    out_->write(fap_text_->header(animation_.name));
-    std::ifstream body(body_->temporary(), std::ios::binary);
-    std::string block(kTextFlushBytes, '\0');
-    while (body) {
-      body.read(block.data(), static_cast<std::streamsize>(block.size()));
-      out_->write({block.data(), static_cast<std::size_t>(body.gcount())});
-    }
-    if (body.bad()) throw std::runtime_error(args_.output + ": cannot read back its frames from " + body_->temporary().string());
     body_.reset();  // never committed: removed
     notes_ = fap_text_player_notes(fap_text_->stats(), fap);
   } else {

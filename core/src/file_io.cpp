@@ -124,6 +124,29 @@ void AtomicFile::write(std::string_view bytes) {
   }
 }
 
+void AtomicFile::append_contents_of(const AtomicFile& source) {
+  if (fd_ < 0) fail(path_, "write after commit");
+  if (source.fd_ < 0) fail(path_, "cannot read " + source.tmp_.string() + ": already committed");
+  loff_t from = 0;
+  for (;;) {
+    const ssize_t n = ::copy_file_range(source.fd_, &from, fd_, nullptr, std::size_t{1} << 30, 0);
+    if (n == 0) return;  // the source's end
+    if (n > 0) continue;
+    if (errno == EINTR) continue;
+    if (errno != EXDEV && errno != ENOSYS && errno != EOPNOTSUPP && errno != EINVAL) abandon("copy from " + source.tmp_.string() + " failed", errno);
+    break;  // a file system or kernel without it: through a buffer
+  }
+  std::string block(std::size_t{1} << 16, '\0');
+  for (;;) {
+    const ssize_t n = ::pread(source.fd_, block.data(), block.size(), from);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) abandon("read of " + source.tmp_.string() + " failed", errno);
+    if (n == 0) return;
+    write({block.data(), static_cast<std::size_t>(n)});
+    from += n;
+  }
+}
+
 void AtomicFile::write_at(std::uint64_t offset, std::string_view bytes) {
   if (fd_ < 0) fail(path_, "write after commit");
   const char* p = bytes.data();

@@ -2,6 +2,7 @@
 // swept by the next write to the same directory (ours only, and only stale ones), outputs that
 // belong together committed together.
 #include "fapcast/core/file_io.hpp"
+#include "fapcast/core/huge_pages.hpp"
 #include "fapcast/core/input_error.hpp"
 #include "support/run_command.hpp"
 
@@ -16,6 +17,8 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace fapcast {
 namespace {
@@ -43,6 +46,26 @@ TEST(AtomicFile, AnUncommittedFileLeavesNothingBehind) {
   }
   EXPECT_EQ(files_in(dir), 1u);  // the temporary file is gone, the old output untouched
   EXPECT_EQ(read_file(dir / "o.fap"), "old");
+}
+
+TEST(AtomicFile, AppendsAnotherFilesContentsBetweenItsOwnWrites) {
+  const fs::path dir = test::make_temp_dir("atomic-append");
+  AtomicFile body(dir / "body");
+  std::string lines;
+  for (int i = 0; i < 20000; ++i) lines += "line " + std::to_string(i) + "\n";  // several copy calls' worth
+  body.write(lines);
+  AtomicFile out(dir / "o.fap");
+  out.write("header\n");
+  out.append_contents_of(body);
+  out.write("tail\n");
+  out.append_contents_of(body);  // from its start again, whatever was read before
+  out.commit();
+  EXPECT_EQ(read_file(dir / "o.fap"), "header\n" + lines + "tail\n" + lines);
+  AtomicFile empty(dir / "empty");
+  AtomicFile after(dir / "after");
+  after.append_contents_of(empty);
+  after.commit();
+  EXPECT_EQ(read_file(dir / "after"), "");
 }
 
 TEST(AtomicFile, AnOutputThatCannotBeCreatedFailsAtOnce) {
@@ -116,6 +139,16 @@ TEST(AtomicFile, AFolderIsNoOutput) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("o.fap: is a directory, not a file"), std::string::npos) << e.what();
   }
+}
+
+TEST(HugePages, AdviceKeepsTheBytes) {
+  std::vector<std::int16_t> samples;
+  samples.reserve(std::size_t{3} << 20);  // 6 MiB: holds whole huge pages wherever it lands
+  advise_huge_pages(samples);
+  for (std::size_t i = 0; i < samples.capacity(); ++i) samples.push_back(static_cast<std::int16_t>(i * 7));
+  for (std::size_t i = 0; i < samples.size(); i += 4099) EXPECT_EQ(samples[i], static_cast<std::int16_t>(i * 7));
+  advise_huge_pages(nullptr, 0);           // nothing to advise
+  advise_huge_pages(samples.data(), 100);  // below a huge page: nothing
 }
 
 TEST(ReadFile, RefusesAFileOverItsLimitBeforeReading) {

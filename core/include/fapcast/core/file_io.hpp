@@ -36,6 +36,9 @@ class AtomicFile {
 
   // Appends bytes to the temporary file. Throws std::runtime_error naming `path`.
   void write(std::string_view bytes);
+  // Appends everything written to `source` so far, copied by the kernel (copy_file_range: no
+  // buffer in this process to fill and fault in). Throws std::runtime_error naming `path`.
+  void append_contents_of(const AtomicFile& source);
   // Writes bytes at `offset` of the temporary file (pwrite; a header patched after its data,
   // as WavWriter does). Throws std::runtime_error naming `path`.
   void write_at(std::uint64_t offset, std::string_view bytes);

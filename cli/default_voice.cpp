@@ -1,19 +1,23 @@
 #include "default_voice.hpp"
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
+#include <vector>
 #include <ctime>
 #include <iostream>
 #include <stdexcept>
 
 #include "fapcast/core/data_root.hpp"
-#include "fapcast/talker/reference_talker.hpp"
 #include "fapcast/builder/voice_build.hpp"
 #include "fapcast/core/file_io.hpp"
 #include "default_voice_key.hpp"
-#include "recording_script_options.hpp"
 
 #ifndef FAPCAST_VERSION
 #define FAPCAST_VERSION "unknown"
@@ -30,6 +34,45 @@ std::string env(const char* name) {
 
 // The reference corpus the default voice is built from.
 constexpr std::uint64_t kDefaultVoiceSeed = 1;
+
+extern "C" char** environ;
+
+// Records the reference corpus into `corpus` in a child process (`fapcast corpus
+// record-reference`). espeak-ng 1.51 carries synthesiser state from call to call (its pitch
+// flutter's phase, a function-local static no call resets), so speech shifts by a few samples
+// with whatever the process spoke before: recorded in the calling process, the corpus (and the
+// cached voice) would depend on the text that first needed it. A fresh process speaks the
+// script from espeak-ng's initial state, every time. The child's summary line goes nowhere
+// (standard output may be the caller's track); its progress and errors go to standard error.
+void record_reference_corpus_in_child(const fs::path& corpus, bool quiet) {
+  const std::string exe = fs::read_symlink("/proc/self/exe").string();
+  std::vector<std::string> args = {exe, "corpus", "record-reference", "-o", corpus.string(),
+                                   "--seed", std::to_string(kDefaultVoiceSeed),
+                                   "--cmudict", default_cmudict_path().string(),
+                                   "--word-counts", default_word_counts_path().string()};
+  if (quiet) args.emplace_back("-q");
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, exe.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0)
+    throw std::runtime_error("default voice: cannot start " + exe + " to record the reference corpus: " +
+                             std::strerror(spawned));
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) throw std::runtime_error(std::string("default voice: waitpid: ") + std::strerror(errno));
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+  throw std::runtime_error("default voice: recording the reference corpus failed (" +
+                           (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
+                                              : "signal " + std::to_string(WTERMSIG(status))) +
+                           ")");
+}
 
 }  // namespace
 
@@ -83,18 +126,7 @@ fs::path ensure_default_voice(bool quiet) {
     }
   } cleanup{corpus};
   if (!quiet) std::cerr << "building the default voice (SYNTHETIC reference talker, seed 1) into " << path.string() << "\n";
-  RecordingScriptInputs inputs;
-  inputs.cmudict = default_cmudict_path().string();
-  inputs.word_counts = default_word_counts_path().string();
-  ReferenceCorpusOptions options;
-  options.seed = kDefaultVoiceSeed;
-  (void)record_reference_corpus(
-      load_recording_script(inputs), corpus, options,
-      [&](const std::string& name, std::string_view bytes) { write_file_atomically(corpus / name, bytes); },
-      [&](std::size_t done, std::size_t total) {
-        if (!quiet && (done % 50 == 0 || done == total)) std::cerr << "\rrecorded " << done << " / " << total << std::flush;
-      });
-  if (!quiet) std::cerr << "\n";
+  record_reference_corpus_in_child(corpus, quiet);
   VoiceBuildOptions build;
   build.seed = kDefaultVoiceSeed;
   build.corpus_name = "fapcast reference corpus (SYNTHETIC), seed 1, all script items";

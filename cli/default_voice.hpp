@@ -14,9 +14,11 @@ namespace fapcast::cli {
 std::filesystem::path default_voice_path();
 
 // The default voice's path, building it first when the cache has none: records the reference
-// corpus (all script items, seed 1) into a temporary directory, builds the voice (exact PCA
-// route), writes it atomically and removes the corpus. Progress on stderr unless `quiet`.
-// Deterministic: the same bytes every time when SOURCE_DATE_EPOCH is set (build time).
+// corpus (all script items, seed 1) into a temporary directory in a child process (`fapcast
+// corpus record-reference`: espeak-ng starts from its initial state, whatever this process spoke
+// before), builds the voice (exact PCA route), writes it atomically and removes the corpus.
+// Progress on stderr unless `quiet`. Deterministic: the same bytes every time when
+// SOURCE_DATE_EPOCH is set (build time). Only the fapcast executable calls it (/proc/self/exe).
 std::filesystem::path ensure_default_voice(bool quiet);
 
 // The provenance build time: SOURCE_DATE_EPOCH (reproducible builds) when set, else now; ISO 8601

@@ -107,7 +107,10 @@ std::vector<std::size_t> chunk_offsets(std::string_view text, std::size_t max_by
 // Throws InputError for text that breaks the input rules above, std::invalid_argument for an
 // unknown language or variant ("espeak-ng: unknown language 'xx'") and for a phoneme whose IPA
 // has an unknown symbol (naming phoneme and language), std::runtime_error if espeak-ng fails
-// (e.g. its data is missing).
+// (e.g. its data is missing). espeak-ng 1.51 carries synthesiser state (its pitch flutter's
+// phase) from call to call: the same text may come out a few samples longer or shorter after
+// other speech in the process. What must be reproducible is spoken from a fresh process
+// (spec/voice.md, "The default voice").
 Speech speak(std::string_view text, const SpeakOptions& options = {});
 
 // The same text as speak() gives, chunk by chunk (kChunkBytes), for callers that keep only one

@@ -32,6 +32,11 @@ void add_synthesis_options(CLI::App& cmd, SynthesisOptions& options) {
                  "Weight of the duration term in the unit search's cost: ln^2 of each phone's time warp (>= 0)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
+  cmd.add_option("--context-weight", options.search.context_weight,
+                 "Weight of the right-context term in the unit search's cost: a unit left where its recording "
+                 "went on in another viseme class (>= 0)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
   cmd.add_flag_function(
       "--boundary-joins", [&options](std::int64_t) { options.concatenation.join_mid_phone = false; },
       options.concatenation.join_mid_phone
@@ -47,6 +52,8 @@ std::string synthesis_options_text(const SynthesisOptions& options) {
     text << " --max-active " << options.search.max_active.value_or(0);
   if (options.search.duration_weight != shipped.search.duration_weight)
     text << " --duration-weight " << options.search.duration_weight;
+  if (options.search.context_weight != shipped.search.context_weight)
+    text << " --context-weight " << options.search.context_weight;
   if (options.concatenation.join_mid_phone != shipped.concatenation.join_mid_phone && !options.concatenation.join_mid_phone)
     text << " --boundary-joins";
   return text.str();

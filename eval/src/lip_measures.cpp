@@ -93,10 +93,14 @@ CurveAgreement compare_curves(std::span<const double> a, std::span<const double>
     ++out.frames;
   }
   if (out.frames == 0 || max_a <= 0 || max_b <= 0) return out;
-  double error = 0;
+  double error = 0, difference = 0;
   for (std::size_t t = 0; t < a.size(); ++t)
-    if (!std::isnan(a[t]) && !std::isnan(b[t])) error += std::abs(a[t] / max_a - b[t] / max_b);
+    if (!std::isnan(a[t]) && !std::isnan(b[t])) {
+      error += std::abs(a[t] / max_a - b[t] / max_b);
+      difference += std::abs(a[t] - b[t]);
+    }
   out.mean_error_percent = 100.0 * error / static_cast<double>(out.frames);
+  out.mean_abs_difference = difference / static_cast<double>(out.frames);
   out.correlation = pearson_correlation(a, b);  // scale-free: the normalisation does not change it
   return out;
 }

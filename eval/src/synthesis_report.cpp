@@ -23,8 +23,14 @@ std::string pad_right(const std::string& s, std::size_t width) {
   return s.size() >= width ? s : s + std::string(width - s.size(), ' ');
 }
 
+// The scorer's lip curves are in metres (synthesis_score.hpp); the report speaks mm.
+double mm(double metres) { return 1000.0 * metres; }
+
 nlohmann::json agreement_json(const CurveAgreement& a) {
-  return {{"error_percent", a.mean_error_percent}, {"correlation", a.correlation}, {"frames", a.frames}};
+  return {{"error_percent", a.mean_error_percent},
+          {"mean_abs_difference_mm", mm(a.mean_abs_difference)},
+          {"correlation", a.correlation},
+          {"frames", a.frames}};
 }
 
 }  // namespace
@@ -34,10 +40,11 @@ std::string format_evaluation_table(const EvaluationReport& report, const Evalua
   out << kSyntheticLabel << "\n"
       << "held-out sentences: " << report.utterances.size() << " (seed " << context.seed << "), "
       << report.phones << " phones, " << report.frames << " frames at 60 fps; voice " << context.voice << "\n"
-      << "errors: mean |recorded - synthesised| of each curve normalised by its maximum (%); "
-         "r: correlation; RMS over feature-point positions on the target face\n";
-  const std::vector<std::string> header{"system",   "height %", "width %", "protr. %", "r height", "r width",
-                                        "r protr.", "lip RMS mm", "all RMS mm", "units/phone"};
+      << "errors: mean |recorded - synthesised| of each curve normalised by its maximum (%, the paper's) "
+         "and in mm; r: correlation; RMS over feature-point positions on the target face\n";
+  const std::vector<std::string> header{"system",    "height %",  "width %",  "protr. %",   "height mm",
+                                        "width mm",  "protr. mm", "r height", "r width",    "r protr.",
+                                        "lip RMS mm", "all RMS mm", "units/phone"};
   std::size_t name_width = header[0].size();
   for (const auto& s : report.systems) name_width = std::max(name_width, s.name.size());
   out << pad_right(header[0], name_width);
@@ -46,7 +53,9 @@ std::string format_evaluation_table(const EvaluationReport& report, const Evalua
   for (const auto& s : report.systems) {
     const auto& l = s.score.lips;
     const std::vector<std::string> cells{fixed(l.height.mean_error_percent, 2), fixed(l.width.mean_error_percent, 2),
-                                         fixed(l.protrusion.mean_error_percent, 2), fixed(l.height.correlation, 3),
+                                         fixed(l.protrusion.mean_error_percent, 2),
+                                         fixed(mm(l.height.mean_abs_difference), 3), fixed(mm(l.width.mean_abs_difference), 3),
+                                         fixed(mm(l.protrusion.mean_abs_difference), 3), fixed(l.height.correlation, 3),
                                          fixed(l.width.correlation, 3), fixed(l.protrusion.correlation, 3),
                                          fixed(s.score.lip_rms_mm, 2), fixed(s.score.all_rms_mm, 2),
                                          s.units_per_phone > 0 ? fixed(s.units_per_phone, 3) : "-"};

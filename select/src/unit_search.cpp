@@ -446,6 +446,8 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   if (options.beta < 0.0) throw std::invalid_argument("unit search: beta must be >= 0");
   if (!(options.duration_weight >= 0.0) || std::isinf(options.duration_weight))
     throw std::invalid_argument("unit search: the duration weight must be finite and >= 0");
+  if (!(options.context_weight >= 0.0) || std::isinf(options.context_weight))
+    throw std::invalid_argument("unit search: the context weight must be finite and >= 0");
   DurationTerm duration(graph, target_frames, options.duration_weight);
   for (std::size_t t = 0; t < targets.size(); ++t)
     if (graph.with_viseme(targets[t]).empty())
@@ -459,10 +461,10 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   if (options.max_active) trail.reserve(targets.size() * std::max<std::size_t>(*options.max_active, 1));
   StepBuilder builder;
   CapLimit cap(options.max_active);
-  const auto close_step = [&] {
+  const auto close_step = [&](std::optional<std::size_t> max_active) {
     auto& actives = builder.actives();
     // The reference path does without the cap's limit (prune's selection alone keeps the same).
-    prune(actives, options.max_active, options.prune_joins ? cap.limit() : std::numeric_limits<double>::infinity());
+    prune(actives, max_active, options.prune_joins ? cap.limit() : std::numeric_limits<double>::infinity());
     trail.insert(trail.end(), actives.begin(), actives.end());
     begin.push_back(trail.size());
     result.stats.active_per_step.push_back(actives.size());
@@ -471,22 +473,35 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   const auto step = [&](std::size_t t) { return std::span(trail).subspan(begin[t], begin[t + 1] - begin[t]); };
   result.stats.active_per_step.reserve(targets.size());
   for (StateId j : graph.with_viseme(targets[0])) builder.add(j, 1.0 + duration(j, 0), kNoBack, true);
-  close_step();
+  // The first step is not capped: every state of the first class starts at the same cost (the
+  // duration term aside), so a cap would keep the lowest state ids, not the best starts (most often
+  // the rest before some take, whose recording goes on in other classes). Step 1 sorts them out.
+  close_step(std::nullopt);
 
   JoinScratch scratch;
+  std::vector<Active> leaving;  // the previous step's actives with their right-context term
   for (std::size_t t = 1; t < targets.size(); ++t) {
-    const auto prev = step(t - 1);
+    const auto kept = step(t - 1);
     cap.clear();
     // Within a recording: the next phone, free.
-    for (std::uint32_t a = 0; a < prev.size(); ++a) {
-      const StateId i = prev[a].state;
+    for (std::uint32_t a = 0; a < kept.size(); ++a) {
+      const StateId i = kept[a].state;
       if (graph.child_viseme(i) == targets[t]) {
-        const double cost = prev[a].cost + duration(i + 1, t);
+        const double cost = kept[a].cost + duration(i + 1, t);
         builder.add(i + 1, cost, a, false);
         cap.add(cost);
       }
     }
-    // Across recordings: states whose parent looks like the phone we leave.
+    // Across recordings: states whose parent looks like the phone we leave. A unit left where its
+    // recording went on in another class pays the context term, a constant per predecessor: it
+    // joins the predecessor's cost, so every join path (and its pruning) sees it alike.
+    std::span<const Active> prev = kept;
+    if (options.context_weight > 0.0) {
+      leaving.assign(kept.begin(), kept.end());
+      for (Active& x : leaving)
+        if (graph.child_viseme(x.state) != targets[t]) x.cost += options.context_weight;
+      prev = leaving;
+    }
     offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), Diviseme{targets[t - 1], targets[t]}, options,
                 duration, t, cap, builder, scratch);
     if (builder.empty()) {  // the voice never recorded this diviseme: join anywhere that matches
@@ -494,7 +509,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
       offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, duration, t, cap, builder,
                   scratch);
     }
-    close_step();
+    close_step(options.max_active);
   }
 
   // Back-trace from the cheapest final state.

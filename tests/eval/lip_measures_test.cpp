@@ -84,6 +84,7 @@ TEST(LipMeasures, ComparisonNormalisesEachCurveByItsOwnMaximum) {
   EXPECT_NEAR(same.mean_error_percent, 0.0, 1e-12);
   EXPECT_NEAR(same.correlation, 1.0, 1e-12);
   EXPECT_EQ(same.frames, 4u);
+  EXPECT_NEAR(same.mean_abs_difference, 0.8125, 1e-12) << "in the curves' own unit: the faces differ in size";
   // Against a constant curve: |1-1| + |0.5-1| + |0.75-1| + |1-1| = 0.75 over 4 frames.
   const std::vector<double> flat = {3.0, 3.0, 3.0, 3.0};
   const CurveAgreement off = compare_curves(small, flat);
@@ -94,6 +95,7 @@ TEST(LipMeasures, ComparisonNormalisesEachCurveByItsOwnMaximum) {
   const std::vector<double> mirrored = {0.5, 1.0, nan, 0.5};
   const CurveAgreement mirror = compare_curves(small, mirrored);
   EXPECT_EQ(mirror.frames, 3u);
+  EXPECT_NEAR(mirror.mean_abs_difference, (0.5 + 0.5 + 0.5) / 3, 1e-12) << "NaN frames skipped";
   EXPECT_NEAR(mirror.correlation, -1.0, 1e-12);
   EXPECT_THROW((void)compare_curves(small, std::vector<double>{1.0}), std::invalid_argument);
 }

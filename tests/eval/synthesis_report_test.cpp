@@ -13,7 +13,7 @@ EvaluationReport report() {
   r.phones = 40;
   r.frames = 120;
   SystemReport a{"variable-length", {}, 0.35};
-  a.score.lips.height = {4.5, 0.91, 120};
+  a.score.lips.height = {4.5, 0.91, 120, 0.000625};  // the scorer's curves are in metres
   a.score.lip_rms_mm = 1.25;
   a.score.all_rms_mm = 0.75;
   SystemReport b{"dominance", {}, 0.0};
@@ -36,6 +36,8 @@ TEST(SynthesisReport, TableHasOneRowPerSystemAndSaysSynthetic) {
   EXPECT_NE(t.find("4.50"), std::string::npos);
   EXPECT_NE(t.find("0.910"), std::string::npos);
   EXPECT_NE(t.find("0.350"), std::string::npos);
+  EXPECT_NE(t.find("height mm"), std::string::npos);
+  EXPECT_NE(t.find("0.625"), std::string::npos);
   EXPECT_NE(t.find("reproduce: fapcast eval synth --seed 2"), std::string::npos);
   const auto row = t.substr(t.find("\ndominance"));
   EXPECT_NE(row.find(" -\n"), std::string::npos) << "no units for the dominance model: " << row;
@@ -44,6 +46,7 @@ TEST(SynthesisReport, TableHasOneRowPerSystemAndSaysSynthetic) {
   EXPECT_TRUE(j["synthetic"].get<bool>());
   EXPECT_EQ(j["systems"].size(), 2u);
   EXPECT_DOUBLE_EQ(j["systems"][0]["lip_height"]["error_percent"].get<double>(), 4.5);
+  EXPECT_NEAR(j["systems"][0]["lip_height"]["mean_abs_difference_mm"].get<double>(), 0.625, 1e-12);
   EXPECT_DOUBLE_EQ(j["systems"][0]["lip_fp_rms_mm"].get<double>(), 1.25);
 }
 

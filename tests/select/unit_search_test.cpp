@@ -51,10 +51,12 @@ Toy make_toy(const std::vector<std::vector<int>>& utterances, std::mt19937_64& r
   return toy;
 }
 
+// The duration term on the paper's cost otherwise (no context term).
 SearchOptions with_duration(double beta, double weight) {
   SearchOptions o;
   o.beta = beta;
   o.duration_weight = weight;
+  o.context_weight = 0.0;
   return o;
 }
 
@@ -66,8 +68,9 @@ double duration_term(const PhoneGraph& g, StateId j, std::int64_t target_frames,
 
 // Minimum cost over every admissible state sequence, or +inf when there is none; with `lengths`,
 // each state also pays its duration term at `weight`.
+// A join from i at target t also pays `context` when i's recording does not go on in class targets[t].
 double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, double beta, double weight = 0.0,
-                   std::span<const std::int64_t> lengths = {}) {
+                   std::span<const std::int64_t> lengths = {}, double context = 0.0) {
   double best = std::numeric_limits<double>::infinity();
   std::vector<StateId> path;
   std::function<void(std::size_t, double)> go = [&](std::size_t t, double cost) {
@@ -85,7 +88,9 @@ double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, do
         const bool next_in_recording = g.has_child(i) && j == i + 1;
         const bool admissible_join = g.has_parent(j) && g.state(j - 1).viseme == g.state(i).viseme;
         if (next_in_recording) step = 0.0;
-        else if (admissible_join) step = 1.0 + beta * join_cost(g, i, j);
+        else if (admissible_join)
+          step = 1.0 + beta * join_cost(g, i, j) +
+                 (g.has_child(i) && g.state(i + 1).viseme == targets[t] ? 0.0 : context);
         else continue;
       }
       if (!lengths.empty()) step += duration_term(g, j, lengths[t], weight);
@@ -98,10 +103,11 @@ double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, do
   return best;
 }
 
-class UnitSearchBruteForce : public ::testing::TestWithParam<double> {};
+// (beta, context weight): the paper's cost (context 0) and with the right-context term.
+class UnitSearchBruteForce : public ::testing::TestWithParam<std::tuple<double, double>> {};
 
 TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
-  const double beta = GetParam();
+  const auto [beta, context] = GetParam();
   const auto seed = test_seed();
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> visemes(0, 2), length(2, 5), count(2, 4), tlen(1, 5);
@@ -122,8 +128,10 @@ TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
       EXPECT_THROW(unit_search(g, targets, {beta, {}}), std::invalid_argument);
       continue;
     }
-    const double expected = brute_force(g, targets, beta);
-    const SearchResult r = unit_search(g, targets, {beta, {}});
+    const double expected = brute_force(g, targets, beta, 0.0, {}, context);
+    SearchOptions options{beta, {}};
+    options.context_weight = context;
+    const SearchResult r = unit_search(g, targets, options);
     if (std::isinf(expected)) {
       EXPECT_GT(r.stats.hard_joins, 0u) << "no admissible path exists, so a hard join is needed";
       continue;
@@ -142,14 +150,15 @@ TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
       covered_targets += u.length;
     }
     EXPECT_EQ(covered_targets, targets.size());
-    if (beta == 0.0) {
+    if (beta == 0.0 && context == 0.0) {
       EXPECT_EQ(r.cost, static_cast<double>(r.units.size())) << "beta = 0 counts units";
     }
   }
   EXPECT_GT(compared, 100) << "too few comparable trials to mean anything";
 }
 
-INSTANTIATE_TEST_SUITE_P(Betas, UnitSearchBruteForce, ::testing::Values(0.0, 0.05, 1.0));
+INSTANTIATE_TEST_SUITE_P(BetasAndContext, UnitSearchBruteForce,
+                         ::testing::Combine(::testing::Values(0.0, 0.05, 1.0), ::testing::Values(0.0, 0.3)));
 
 // The duration term: phones of random lengths, targets of random lengths; the search's cost is
 // the brute-force minimum, and its path's cost written out term by term is that cost.
@@ -187,7 +196,7 @@ TEST(UnitSearch, DurationTermFindsTheMinimumCostOnRandomSmallGraphs) {
     }
     EXPECT_NEAR(path, r.cost, 1e-9 * (1 + path)) << where;
     ++compared;
-    moved += unit_search(g, targets, {beta, {}}).states != r.states;
+    moved += unit_search(g, targets, lengths, with_duration(beta, 0.0)).states != r.states;
   }
   EXPECT_GT(compared, 100) << "too few comparable trials to mean anything";
   EXPECT_GT(moved, 10) << "the duration term never changed a path: the trials do not exercise it";
@@ -409,10 +418,60 @@ TEST(UnitSearch, CapBoundsActiveStatesAndStillFindsAPath) {
   for (auto& v : targets) v = V(visemes(rng));
   const SearchResult full = unit_search(g, targets, {0.1, {}});
   const SearchResult capped = unit_search(g, targets, {0.1, 8});
-  for (auto n : capped.stats.active_per_step) EXPECT_LE(n, 8u);
+  // The first phone keeps every state of its class (they all start at cost 1), the others the cap.
+  EXPECT_EQ(capped.stats.active_per_step[0], g.with_viseme(targets[0]).size());
+  for (std::size_t t = 1; t < capped.stats.active_per_step.size(); ++t) EXPECT_LE(capped.stats.active_per_step[t], 8u);
   EXPECT_GT(*std::max_element(full.stats.active_per_step.begin(), full.stats.active_per_step.end()), 8u);
   EXPECT_GE(capped.cost, full.cost - 1e-9) << "pruning can only lose optimality, never gain it";
   EXPECT_EQ(capped.states.size(), targets.size());
+}
+
+// Every state of the first class starts at the same cost; the cap must not choose among them by
+// state id. Recordings 0-9 start with class 0 but go on in class 5; only recording 10 spells the
+// whole target. Capped at 2, the search still finds it: one unit.
+TEST(UnitSearch, TheCapDoesNotChooseAmongTheFirstPhonesEqualStarts) {
+  std::mt19937_64 rng(7);
+  std::vector<std::vector<int>> utts(10, std::vector<int>{0, 5});
+  utts.push_back({0, 1, 2});
+  const Toy toy = make_toy(utts, rng);
+  const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
+  const std::vector<VisemeClass> targets = Vs({0, 1, 2});
+  const SearchResult r = unit_search(g, targets, {0.1, 2});
+  ASSERT_EQ(r.units.size(), 1u);
+  EXPECT_EQ(r.units[0], (Unit{20, 0, 3}));
+}
+
+// The right-context term: three paths of two units spell 0 1 2 3. Leaving recording 0's /1/
+// (recorded before a 4) or recording 1's /2/ (before a 5) leaves a phone recorded in another
+// context; leaving recording 1's /1/, recorded before a 2 as the target has it, does not. At
+// beta 0 the three cost 2 units each: without the term the tie goes to the lowest state (recording
+// 0's /1/), with it to the unit left in its own context.
+TEST(UnitSearch, ContextTermLeavesUnitsWhereTheirRecordingGoesOnAsTheTarget) {
+  std::mt19937_64 rng(8);
+  const Toy toy = make_toy({{0, 1, 4}, {0, 1, 2, 5}, {1, 2, 3}}, rng);  // states 0-2, 3-6, 7-9
+  const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
+  const std::vector<VisemeClass> targets = Vs({0, 1, 2, 3});
+  SearchOptions paper{0.0, {}};
+  paper.context_weight = 0.0;
+  SearchOptions context = paper;
+  context.context_weight = 0.3;
+  const SearchResult without = unit_search(g, targets, paper);
+  const SearchResult with = unit_search(g, targets, context);
+  EXPECT_EQ(without.states, (std::vector<StateId>{0, 1, 8, 9}));
+  EXPECT_EQ(with.states, (std::vector<StateId>{3, 4, 8, 9}));
+  EXPECT_EQ(with.cost, 2.0);
+  EXPECT_EQ(with.units.size(), 2u);
+}
+
+TEST(UnitSearch, ContextWeightMustBeFiniteAndNonNegative) {
+  std::mt19937_64 rng(9);
+  const Toy toy = make_toy({{0, 1}}, rng);
+  const PhoneGraph g(toy.states);
+  SearchOptions o;
+  for (double w : {-0.1, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()}) {
+    o.context_weight = w;
+    EXPECT_THROW(unit_search(g, Vs({0, 1}), o), std::invalid_argument) << w;
+  }
 }
 
 TEST(UnitSearch, HardJoinWhenADivisemeWasNeverRecorded) {

@@ -152,7 +152,8 @@ TEST(Synthesize, ReachesTheTargetShapesAndKeepsClosures) {
     EXPECT_LT(s.pca_frames(mid, 0), -0.9f) << "phone " << i;
   }
   EXPECT_FALSE(s.search.stats.active_per_step.empty());
-  for (auto a : s.search.stats.active_per_step) EXPECT_LE(a, 32u);
+  // The cap from the second phone on (the first keeps every state of its class: spec/search.md).
+  for (std::size_t n = 1; n < s.search.stats.active_per_step.size(); ++n) EXPECT_LE(s.search.stats.active_per_step[n], 32u);
 }
 
 TEST(Synthesize, SubstitutesMissingClassesAndCountsThem) {

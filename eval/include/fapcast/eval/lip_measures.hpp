@@ -64,6 +64,9 @@ struct CurveAgreement {
   double mean_error_percent = 0;  // mean |a/max(a) - b/max(b)| x 100, the paper's figure
   double correlation = 0;         // Pearson correlation of a and b (0 when either is constant)
   std::size_t frames = 0;         // frames where both are defined
+  // mean |a - b| in the curves' own unit: meaningful only when both curves are on one face (eval
+  // synth), where it does not hang on each curve's single highest frame as the normalised error does
+  double mean_abs_difference = 0;
 };
 
 struct LipAgreement {

@@ -17,7 +17,9 @@ struct SearchOptions {
   // Weight of the smoothness term: a join costs 1 + beta * C. beta = 0 minimises the number
   // of units alone.
   double beta = 0.1;
-  // Keep at most this many active states per target phone (the cheapest); nullopt = all.
+  // Keep at most this many active states per target phone (the cheapest) from the second phone
+  // on; nullopt = all. The first phone keeps every state of its class: they all start at the same
+  // cost, and a cap there would keep the lowest state ids instead of the best starts.
   std::optional<std::size_t> max_active = 64;
   // Skip the joins that provably cannot win or survive the cap (spec/search.md, "Pruning the
   // joins"). The result is identical either way, to the bit; false evaluates every pair of
@@ -28,6 +30,13 @@ struct SearchOptions {
   // its target's length, and a large warp distorts the timing of lip opening and closure most;
   // the term prefers units whose phones already last about as long. 0 = the paper's cost.
   double duration_weight = 0.0;
+  // Weight of the right-context term: a join i -> j at target phone t adds context_weight when
+  // the phone recorded after i (its child) is not of class targets[t], or i ends its recording.
+  // The join rule (G = 0) makes the entered unit's left context right; this asks the same of the
+  // unit left, whose last phone was recorded coarticulated with what followed it (a take's last
+  // phone anticipates the rest after the word). 0 = the paper's cost; 0.3 (below one unit: it
+  // never buys a unit, it chooses among paths of as many units) measured in spec/evaluation.md.
+  double context_weight = 0.3;
 };
 
 // A run of consecutive states of one recording that covers consecutive target phones.
@@ -46,14 +55,16 @@ struct SearchStats {
 struct SearchResult {
   std::vector<StateId> states;  // one per target phone
   std::vector<Unit> units;
-  double cost = 0.0;  // number of units + beta * sum of join costs + the duration terms
+  double cost = 0.0;  // number of units + beta * sum of join costs + the duration and context terms
   SearchStats stats;
 };
 
 // Finds the minimum-cost path. Transitions: to the next state of the same recording at cost 0;
 // to a state j whose parent has the viseme of the state left (G = 0) at cost 1 + beta * C(i, j);
 // a state matches target phone t only if its viseme is targets[t] (d = 0, else infinite), and
-// costs its duration term (SearchOptions::duration_weight) there.
+// costs its duration term (SearchOptions::duration_weight) there; a join from i at target phone t
+// also costs the context term (SearchOptions::context_weight) when i's own recording does not go on
+// in class targets[t].
 // Starting costs 1 (the first unit). When some step has no admissible join at all, the search
 // joins into any state of the right viseme (a "hard join", counted in stats) rather than fail.
 // Throws std::invalid_argument naming the first target viseme class the graph has no state of.

@@ -78,7 +78,7 @@ DivisemeSelection select_divisemes(const PhoneGraph& graph, std::span<const Targ
   return selection;
 }
 
-Eigen::MatrixXf concatenate_divisemes(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+Eigen::MatrixXf concatenate_divisemes(const PhoneGraph& graph, const PcaFrames& pca_frames,
                                  const DivisemeSelection& selection,
                                  std::span<const TargetPhone> targets, const ConcatenationOptions& options) {
   check_targets(targets);

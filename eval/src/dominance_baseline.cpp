@@ -7,7 +7,7 @@
 
 namespace fapcast {
 
-VisemeTargets viseme_targets(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames) {
+VisemeTargets viseme_targets(const PhoneGraph& graph, const PcaFrames& pca_frames) {
   VisemeTargets out;
   out.coefficients = Eigen::MatrixXf::Zero(static_cast<Eigen::Index>(kVisemeClassCount), pca_frames.cols());
   out.phones.assign(kVisemeClassCount, 0);

@@ -51,10 +51,10 @@ std::vector<HeldOutUtterance> record_held_out(const FaceModel& actor, std::uint6
   return out;
 }
 
-NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+NamedSystem diviseme_system(const PhoneGraph& graph, Eigen::Map<const RowMajorMatrixXf> pca_frames,
                             ConcatenationOptions options, DivisemeChoiceRule rule) {
   return {rule == DivisemeChoiceRule::kFirst ? "diviseme-first" : "diviseme",
-          [&graph, &pca_frames, options, rule](const HeldOutUtterance& u) {
+          [&graph, pca_frames, options, rule](const HeldOutUtterance& u) {
             const auto targets = covered(graph, u.targets);
             const auto selection = select_divisemes(graph, targets, rule);
             return SystemOutput{concatenate_divisemes(graph, pca_frames, selection, targets, options),
@@ -62,7 +62,7 @@ NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_
           }};
 }
 
-NamedSystem dominance_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+NamedSystem dominance_system(const PhoneGraph& graph, const PcaFrames& pca_frames,
                              DominanceBaselineOptions options) {
   // Targets once, not per utterance.
   auto targets = std::make_shared<VisemeTargets>(viseme_targets(graph, pca_frames));

@@ -109,7 +109,7 @@ MouthVisemes::MouthVisemes(const ArkitFit& fit, const Voice& voice, const Viseme
   // Prototypes: fit every corpus phone state's centre frame.
   const auto& states = voice.graph().states();
   const auto phones = voice.state_phones();
-  const Eigen::MatrixXf& coefficients = voice.frame_coefficients();
+  const auto coefficients = voice.frame_coefficients();
   Eigen::MatrixXf centres(static_cast<Eigen::Index>(states.size()), coefficients.cols());
   for (std::size_t s = 0; s < states.size(); ++s)
     centres.row(static_cast<Eigen::Index>(s)) = coefficients.row(states[s].frames.first + states[s].frames.count / 2);

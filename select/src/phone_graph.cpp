@@ -75,8 +75,7 @@ std::span<const StateId> PhoneGraph::entries(VisemeClass from, VisemeClass to) c
   return std::span(by_diviseme_).subspan(diviseme_offsets_[k], diviseme_offsets_[k + 1] - diviseme_offsets_[k]);
 }
 
-JoinFeatures join_features(std::span<const PhoneState> states,
-                                   const Eigen::MatrixXf& pca_frames) {
+JoinFeatures join_features(std::span<const PhoneState> states, const PcaFrames& pca_frames) {
   const Eigen::Index k = pca_frames.cols();
   const Eigen::Index width = (2 * k + kJoinLanes - 1) / kJoinLanes * kJoinLanes;
   const auto rows = static_cast<Eigen::Index>(states.size());

@@ -58,14 +58,14 @@ VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v) {
                        " nor of its substitutes (" + names + ")");
 }
 
-SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
+SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
                             std::span<const TimedPhone> phones, SampleRate sample_rate,
                             std::int64_t end_sample, const SynthesisOptions& options,
                             const std::string& source) {
   return synthesize(graph, frame_coefficients, place_on_voice_grid(phones, sample_rate, end_sample, source), options);
 }
 
-SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
+SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
                             TargetTimeline timeline, const SynthesisOptions& options) {
   SynthesizedTrack out;
   out.timeline = std::move(timeline);

@@ -121,7 +121,7 @@ void backward_substitute(const SmoothingFactor& f, double* z, std::size_t k, Eig
 
 }  // namespace
 
-Eigen::MatrixXf concatenate_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+Eigen::MatrixXf concatenate_units(const PhoneGraph& graph, const PcaFrames& pca_frames,
                              const SearchResult& result, std::span<const TargetPhone> targets,
                              const ConcatenationOptions& options) {
   if (result.states.size() != targets.size())
@@ -211,14 +211,12 @@ Eigen::MatrixXf concatenate_units(const PhoneGraph& graph, const Eigen::MatrixXf
     }
   }
 
-  const float* data = pca_frames.data();
-  const auto stride = static_cast<std::size_t>(pca_frames.rows());
   auto tap_of = [&](const Piece& p, std::int64_t n) {
     return tap(recordings[p.recording], warp(graph.state(p.state).frames, p.first, p.end, n));
   };
   auto value = [&](Tap a, std::size_t c) {
-    const float* column = data + c * stride;
-    return (1.0f - a.f) * column[a.i0] + a.f * column[a.i1];
+    const auto col = static_cast<Eigen::Index>(c);
+    return (1.0f - a.f) * pca_frames(a.i0, col) + a.f * pca_frames(a.i1, col);
   };
   // The frames, row-major in double: what the smoother works on, a frame at a time.
   const bool smooth = options.smoothing > 0.0 && frames >= 3;

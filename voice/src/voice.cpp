@@ -96,13 +96,12 @@ std::string voice_feature_points_json(std::span<const VoiceFeaturePoint> feature
 }
 
 Voice::Voice(VoiceFileView view, VoiceProvenance provenance, std::vector<VoiceFeaturePoint> feature_points,
-             std::vector<VoiceRigidMarker> rigid_markers, Eigen::MatrixXf frame_coefficients, PhoneGraph graph,
+             std::vector<VoiceRigidMarker> rigid_markers, PhoneGraph graph,
              std::vector<Phone> phones, std::vector<FrameSpan> utterances, double rbf_r_squared, double rbf_lambda)
     : view_(std::move(view)),
       provenance_(std::move(provenance)),
       feature_points_(std::move(feature_points)),
       rigid_markers_(std::move(rigid_markers)),
-      frame_coefficients_(std::move(frame_coefficients)),
       graph_(std::move(graph)),
       phones_(std::move(phones)),
       utterances_(std::move(utterances)),
@@ -170,13 +169,15 @@ Voice Voice::from_view(VoiceFileView view) {
     if (!view.matrix_f32(vs::kFaceMaps).allFinite())
       refuse(view, vs::kFaceMaps, "non-finite", "a face map holds a NaN or an infinity");
   }
-  Eigen::MatrixXf frames = coefficients;
-  JoinFeatures join = join_features(graph.states, frames);
+  JoinFeatures join = join_features(graph.states, coefficients);
   PhoneGraph phone_graph(std::move(graph.states), std::move(join));
-  return Voice(std::move(view), std::move(provenance), std::move(points), std::move(rigid), std::move(frames),
+  return Voice(std::move(view), std::move(provenance), std::move(points), std::move(rigid),
                std::move(phone_graph), std::move(graph.phones), std::move(graph.utterances), r_squared, lambda);
 }
 
+Eigen::Map<const RowMajorMatrixXf> Voice::frame_coefficients() const {
+  return view_.matrix_f32(vs::kFrameCoefficients);
+}
 Eigen::Map<const RowMajorMatrixXf> Voice::pca_mean() const { return view_.matrix_f32(vs::kPcaMean); }
 Eigen::Map<const RowMajorMatrixXf> Voice::pca_components() const { return view_.matrix_f32(vs::kPcaComponents); }
 Eigen::Map<const RowMajorMatrixXf> Voice::pca_variances() const { return view_.matrix_f32(vs::kPcaVariances); }

@@ -51,7 +51,7 @@ DivisemeSelection select_divisemes(const PhoneGraph& graph, std::span<const Targ
 // starting there (the very first and last halves from the first and last divisemes). Returns
 // end_frame(last) - first_frame(first) rows of k, like concatenate_units. Throws
 // std::invalid_argument when the selection does not fit the targets.
-Eigen::MatrixXf concatenate_divisemes(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+Eigen::MatrixXf concatenate_divisemes(const PhoneGraph& graph, const PcaFrames& pca_frames,
                                  const DivisemeSelection& selection,
                                  std::span<const TargetPhone> targets,
                                  const ConcatenationOptions& options = {});

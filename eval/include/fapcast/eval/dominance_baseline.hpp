@@ -23,7 +23,7 @@ struct VisemeTargets {
 
 // The mean PCA coefficients (pca_frames is frames x k) of the centre frame of every state of
 // each class; a class with no state has a zero row and phones = 0.
-VisemeTargets viseme_targets(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames);
+VisemeTargets viseme_targets(const PhoneGraph& graph, const PcaFrames& pca_frames);
 
 // Dominance functions per class. Generic, a priori values in the spirit of Cohen-Massaro, NOT the
 // reference talker's table (spec/articulation.tsv): the baseline must not know the generator it

@@ -47,13 +47,14 @@ struct NamedSystem {
   std::function<SystemOutput(const HeldOutUtterance&)> synthesise;
 };
 
-// The two baselines over a voice's phone graph and PCA frames (frames x k); both keep references.
-// A target class the voice never recorded is replaced as synthesize() replaces it
+// The two baselines over a voice's phone graph and PCA frames (frames x k); both keep a
+// reference to the graph, the diviseme system its view of the frames (both must outlive it, as
+// a Voice's do). A target class the voice never recorded is replaced as synthesize() replaces it
 // (covered_viseme), so every system says the same visemes.
-NamedSystem diviseme_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+NamedSystem diviseme_system(const PhoneGraph& graph, Eigen::Map<const RowMajorMatrixXf> pca_frames,
                             ConcatenationOptions options = {},
                             DivisemeChoiceRule rule = DivisemeChoiceRule::kBestDuration);
-NamedSystem dominance_system(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+NamedSystem dominance_system(const PhoneGraph& graph, const PcaFrames& pca_frames,
                              DominanceBaselineOptions options = {});
 
 // The target face as the evaluation sees it.

@@ -22,6 +22,11 @@ struct FrameSpan {
   bool operator==(const FrameSpan&) const = default;
 };
 
+// A voice's PCA frames (frames x k), row-major as the voice file stores them, so the join
+// features and the concatenation read them in place in the mapped file (a column-major matrix
+// given here is copied first).
+using PcaFrames = Eigen::Ref<const Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>;
+
 // One phone of one recorded utterance.
 struct PhoneState {
   std::uint32_t utterance = 0;  // recordings are numbered 0..U-1
@@ -44,8 +49,7 @@ struct JoinFeatures {
 
 // Makes the join features of every state from the voice's PCA frames (frames x k). A state
 // shorter than two frames borrows frames from its neighbours in the recording.
-JoinFeatures join_features(std::span<const PhoneState> states,
-                                   const Eigen::MatrixXf& pca_frames);
+JoinFeatures join_features(std::span<const PhoneState> states, const PcaFrames& pca_frames);
 
 // C of a join from the state whose exit row is `exit` into the state whose entry row is `entry`
 // (`dims` floats each, a multiple of kJoinLanes): half the squared distance of the rows, i.e.

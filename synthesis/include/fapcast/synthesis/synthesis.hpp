@@ -53,7 +53,7 @@ struct SynthesizedTrack {
 // `frame_coefficients` (corpus frames x k PCA coefficients, 60 fps). Throws InputError for
 // phones breaking the rules or classes the voice cannot cover; an empty phone list gives an
 // empty track.
-SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
+SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
                             std::span<const TimedPhone> phones, SampleRate sample_rate,
                             std::int64_t end_sample = 0, const SynthesisOptions& options = {},
                             const std::string& source = "phones");
@@ -61,7 +61,7 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& fram
 // The same for target phones already on the voice grid (place_on_voice_grid's rules). They
 // need not start at frame 0: the search, the concatenation and the tongue see only the phones'
 // classes, lengths and frames relative to each other (the pieces of a long text, spec/synthesis.md).
-SynthesizedTrack synthesize(const PhoneGraph& graph, const Eigen::MatrixXf& frame_coefficients,
+SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
                             TargetTimeline timeline, const SynthesisOptions& options = {});
 
 }  // namespace fapcast

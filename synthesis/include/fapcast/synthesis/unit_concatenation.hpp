@@ -28,7 +28,7 @@ struct ConcatenationOptions {
 // Concatenates the units of `result` (one state per target phone) over `targets`, sampling the
 // voice's PCA frames (frames x k). Returns end_frame(last) - first_frame(first) rows of k.
 // Throws std::invalid_argument if targets and result disagree or a target has no frames.
-Eigen::MatrixXf concatenate_units(const PhoneGraph& graph, const Eigen::MatrixXf& pca_frames,
+Eigen::MatrixXf concatenate_units(const PhoneGraph& graph, const PcaFrames& pca_frames,
                              const SearchResult& result, std::span<const TargetPhone> targets,
                              const ConcatenationOptions& options = {});
 

@@ -59,7 +59,7 @@ class Voice {  // move-only
   Eigen::Map<const RowMajorMatrixXf> pca_mean() const;        // 1 x D, metres, xyz interleaved
   Eigen::Map<const RowMajorMatrixXf> pca_components() const;  // k x D
   Eigen::Map<const RowMajorMatrixXf> pca_variances() const;   // 1 x k, m^2
-  const Eigen::MatrixXf& frame_coefficients() const { return frame_coefficients_; }  // F x k
+  Eigen::Map<const RowMajorMatrixXf> frame_coefficients() const;  // F x k, in place in the file
   const PhoneGraph& graph() const { return graph_; }          // states index frame_coefficients rows
   std::span<const Phone> state_phones() const { return phones_; }  // ARPAbet phone per state
   // Frame span of each corpus utterance in frame_coefficients (graph states' utterance indices).
@@ -82,7 +82,7 @@ class Voice {  // move-only
   // The voice-level checks (FPNT, GRPH, RPAR, FMAP ...) on a verified container.
   static Voice from_view(VoiceFileView view);
   Voice(VoiceFileView view, VoiceProvenance provenance, std::vector<VoiceFeaturePoint> feature_points,
-        std::vector<VoiceRigidMarker> rigid_markers, Eigen::MatrixXf frame_coefficients, PhoneGraph graph,
+        std::vector<VoiceRigidMarker> rigid_markers, PhoneGraph graph,
         std::vector<Phone> phones, std::vector<FrameSpan> utterances, double rbf_r_squared, double rbf_lambda);
 
   VoiceFileView view_;
@@ -91,7 +91,6 @@ class Voice {  // move-only
   Eigen::Index dimension_ = 0;
   std::vector<VoiceFeaturePoint> feature_points_;
   std::vector<VoiceRigidMarker> rigid_markers_;
-  Eigen::MatrixXf frame_coefficients_;
   PhoneGraph graph_;
   std::vector<Phone> phones_;
   std::vector<FrameSpan> utterances_;

@@ -429,6 +429,25 @@ void prune(std::vector<Active>& actives, std::optional<std::size_t> cap, double 
   actives.resize(keep);
 }
 
+// The first step's cap. Every state of the first class starts at the same cost (the duration term
+// aside), so the cap alone would choose among equal starts by state id: on the default voice the
+// rests of the first 32 takes, whatever the sentence begins with. Kept beside the cap's worth:
+// every state whose recording goes on in the second target's class, the starts of the units longer
+// than one phone (the rests of the takes that begin as the sentence does). All of them would cost
+// the first join's sweep more than they could win it: they all rest alike.
+void prune_first_step(const PhoneGraph& graph, std::vector<Active>& actives, std::optional<std::size_t> cap,
+                      std::optional<VisemeClass> second) {
+  if (!cap || actives.size() <= *cap) return;
+  const auto others = std::stable_partition(actives.begin(), actives.end(), [&](const Active& a) {
+    return second && graph.child_viseme(a.state) == *second;
+  });
+  std::vector<Active> rest(others, actives.end());
+  actives.erase(others, actives.end());
+  prune(rest, cap, std::numeric_limits<double>::infinity());
+  actives.insert(actives.end(), rest.begin(), rest.end());
+  std::sort(actives.begin(), actives.end(), [](const Active& a, const Active& b) { return a.state < b.state; });
+}
+
 }  // namespace
 
 SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
@@ -461,10 +480,14 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   if (options.max_active) trail.reserve(targets.size() * std::max<std::size_t>(*options.max_active, 1));
   StepBuilder builder;
   CapLimit cap(options.max_active);
-  const auto close_step = [&](std::optional<std::size_t> max_active) {
+  const auto close_step = [&](bool first) {
     auto& actives = builder.actives();
-    // The reference path does without the cap's limit (prune's selection alone keeps the same).
-    prune(actives, max_active, options.prune_joins ? cap.limit() : std::numeric_limits<double>::infinity());
+    if (first) {
+      prune_first_step(graph, actives, options.max_active, targets.size() > 1 ? std::optional(targets[1]) : std::nullopt);
+    } else {
+      // The reference path does without the cap's limit (prune's selection alone keeps the same).
+      prune(actives, options.max_active, options.prune_joins ? cap.limit() : std::numeric_limits<double>::infinity());
+    }
     trail.insert(trail.end(), actives.begin(), actives.end());
     begin.push_back(trail.size());
     result.stats.active_per_step.push_back(actives.size());
@@ -473,10 +496,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   const auto step = [&](std::size_t t) { return std::span(trail).subspan(begin[t], begin[t + 1] - begin[t]); };
   result.stats.active_per_step.reserve(targets.size());
   for (StateId j : graph.with_viseme(targets[0])) builder.add(j, 1.0 + duration(j, 0), kNoBack, true);
-  // The first step is not capped: every state of the first class starts at the same cost (the
-  // duration term aside), so a cap would keep the lowest state ids, not the best starts (most often
-  // the rest before some take, whose recording goes on in other classes). Step 1 sorts them out.
-  close_step(std::nullopt);
+  close_step(true);
 
   JoinScratch scratch;
   std::vector<Active> leaving;  // the previous step's actives with their right-context term
@@ -509,7 +529,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
       offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, duration, t, cap, builder,
                   scratch);
     }
-    close_step(options.max_active);
+    close_step(false);
   }
 
   // Back-trace from the cheapest final state.

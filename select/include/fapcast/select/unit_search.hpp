@@ -17,9 +17,10 @@ struct SearchOptions {
   // Weight of the smoothness term: a join costs 1 + beta * C. beta = 0 minimises the number
   // of units alone.
   double beta = 0.1;
-  // Keep at most this many active states per target phone (the cheapest) from the second phone
-  // on; nullopt = all. The first phone keeps every state of its class: they all start at the same
-  // cost, and a cap there would keep the lowest state ids instead of the best starts.
+  // Keep at most this many active states per target phone (the cheapest); nullopt = all. The
+  // first phone keeps, beside them, every state whose recording goes on in the second phone's
+  // class: all its states start at the same cost, and the cap alone would keep the lowest state
+  // ids instead of the starts of long units.
   std::optional<std::size_t> max_active = 64;
   // Skip the joins that provably cannot win or survive the cap (spec/search.md, "Pruning the
   // joins"). The result is identical either way, to the bit; false evaluates every pair of

@@ -25,7 +25,7 @@ constexpr int kTargetPhones = 120;  // ~10 s of speech
 
 struct World {
   std::vector<PhoneState> states;
-  Eigen::MatrixXf frames;
+  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> frames;  // row-major, as a voice maps them
   std::unique_ptr<PhoneGraph> graph;
   std::vector<VisemeClass> targets;
   std::vector<TargetPhone> timing;
@@ -41,7 +41,7 @@ const World& world() {
       for (int p = 0; p < kPhonesPerRecording; ++p, f += kFramesPerPhone)
         w.states.push_back({u, V(cls(rng)), {f, kFramesPerPhone}});
     std::normal_distribution<float> normal;
-    w.frames = Eigen::MatrixXf(f, kK);
+    w.frames.resize(f, kK);
     for (Eigen::Index i = 0; i < w.frames.size(); ++i) w.frames.data()[i] = normal(rng);
     w.graph = std::make_unique<PhoneGraph>(w.states, join_features(w.states, w.frames));
     std::int64_t t = 0;

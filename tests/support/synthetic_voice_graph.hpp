@@ -16,7 +16,8 @@ namespace fapcast::test {
 
 struct SyntheticVoiceGraph {
   std::vector<PhoneState> states;
-  Eigen::MatrixXf frames;  // corpus frames x k
+  // corpus frames x k, row-major as a voice maps them (PcaFrames): the benchmarks measure no copy
+  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> frames;
   std::unique_ptr<PhoneGraph> graph;
 };
 

@@ -9,10 +9,10 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
-#include <vector>
 #include <ctime>
 #include <iostream>
 #include <stdexcept>
+#include <vector>
 
 #include "fapcast/core/data_root.hpp"
 #include "fapcast/builder/voice_build.hpp"

@@ -503,25 +503,23 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   for (std::size_t t = 1; t < targets.size(); ++t) {
     const auto kept = step(t - 1);
     cap.clear();
-    // Within a recording: the next phone, free.
+    // Within a recording: the next phone, free. A unit left where its recording goes on in another
+    // class pays the context term, a constant per predecessor: it joins the predecessor's cost, so
+    // every join path (and its pruning) sees it alike.
+    const bool context = options.context_weight > 0.0;
+    if (context) leaving.assign(kept.begin(), kept.end());
     for (std::uint32_t a = 0; a < kept.size(); ++a) {
       const StateId i = kept[a].state;
       if (graph.child_viseme(i) == targets[t]) {
         const double cost = kept[a].cost + duration(i + 1, t);
         builder.add(i + 1, cost, a, false);
         cap.add(cost);
+      } else if (context) {
+        leaving[a].cost += options.context_weight;
       }
     }
-    // Across recordings: states whose parent looks like the phone we leave. A unit left where its
-    // recording went on in another class pays the context term, a constant per predecessor: it
-    // joins the predecessor's cost, so every join path (and its pruning) sees it alike.
-    std::span<const Active> prev = kept;
-    if (options.context_weight > 0.0) {
-      leaving.assign(kept.begin(), kept.end());
-      for (Active& x : leaving)
-        if (graph.child_viseme(x.state) != targets[t]) x.cost += options.context_weight;
-      prev = leaving;
-    }
+    // Across recordings: states whose parent looks like the phone we leave.
+    const std::span<const Active> prev = context ? std::span<const Active>(leaving) : kept;
     offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), Diviseme{targets[t - 1], targets[t]}, options,
                 duration, t, cap, builder, scratch);
     if (builder.empty()) {  // the voice never recorded this diviseme: join anywhere that matches

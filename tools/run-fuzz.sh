@@ -3,11 +3,11 @@
 #   tools/run-fuzz.sh NAME [SECONDS]     one target (default 300 s), e.g. tools/run-fuzz.sh fap_text_fuzz 600
 #   tools/run-fuzz.sh --all SECONDS      every target, one at a time (nice -n 19), then a table of
 #                                        executions, coverage and findings per target in
-#                                        build/fuzz/fuzz-figures.tsv (the figures of spec/fuzzing.md)
+#                                        build/ci/fuzz-figures.tsv (the figures of spec/fuzzing.md)
 # Each run starts from the seed corpus tests/fuzz/corpus/NAME with -seed=1; new inputs go to
-# build/fuzz/tests/fuzz-scratch/NAME. A crash leaves crash-* (or leak-*, timeout-*, oom-*) in
-# build/fuzz/findings/NAME: turn it into a named regression input and a test.
-# The build is tools/run-tests.sh's fuzz build (same flags, so one build serves both).
+# build/ci/tests/fuzz-scratch/NAME. A crash leaves crash-* (or leak-*, timeout-*, oom-*) in
+# build/ci/findings/NAME: turn it into a named regression input and a test.
+# The build is the test command's (tools/configure-ci.sh: build/ci), so one build serves both.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 usage="usage: tools/run-fuzz.sh NAME [SECONDS] | --all SECONDS"
@@ -20,31 +20,29 @@ else
   seconds=${2:-300}
 fi
 bash tools/setup.sh --tests
-cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_COMPILER=clang++ -DFAPCAST_FUZZ=ON \
-  -DFAPCAST_TESTS=OFF -DFAPCAST_WERROR=ON >/dev/null
+bash tools/configure-ci.sh
 
 # voice_structured_fuzz also starts from a real-size voice: the default voice (`fapcast say` builds
 # it on first use, named by the key of the tables it was built from: the newest such file) when it
-# exists, copied to build/fuzz/real-voice; inputs up to 16 MiB.
+# exists, copied to build/ci/real-voice; inputs up to 16 MiB.
 default_voice=$(ls -t "${FAPCAST_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/fapcast}"/reference-seed1-*.fapv 2>/dev/null | head -n 1)
 
 # run_one NAME: runs it for $seconds and prints "NAME<TAB>seconds<TAB>execs<TAB>cov<TAB>ft<TAB>corpus<TAB>findings".
 run_one() {
-  local target=$1 scratch=build/fuzz/tests/fuzz-scratch/$1 findings=build/fuzz/findings/$1 log rc=0
+  local target=$1 scratch=build/ci/tests/fuzz-scratch/$1 findings=build/ci/findings/$1 log rc=0
   local extra=()
   rm -rf "$findings"  # a finding counted is one of this run
   mkdir -p "$scratch" "$findings"
   if [ "$target" = voice_structured_fuzz ]; then
     extra=(-max_len=16777216 -rss_limit_mb=4096)
     if [ -f "$default_voice" ]; then
-      mkdir -p build/fuzz/real-voice
-      cp "$default_voice" build/fuzz/real-voice/
-      extra+=(build/fuzz/real-voice)
+      mkdir -p build/ci/real-voice
+      cp "$default_voice" build/ci/real-voice/
+      extra+=(build/ci/real-voice)
     fi
   fi
-  log=build/fuzz/findings/$target.log
-  nice -n 19 "build/fuzz/tests/$target" -max_total_time="$seconds" -seed=1 -rss_limit_mb=2048 -timeout=10 \
+  log=build/ci/findings/$target.log
+  nice -n 19 "build/ci/tests/$target" -max_total_time="$seconds" -seed=1 -rss_limit_mb=2048 -timeout=10 \
     -print_final_stats=1 -artifact_prefix="$findings/" "${extra[@]:0:2}" "$scratch" "tests/fuzz/corpus/$target" \
     "${extra[@]:2}" >"$log" 2>&1 || rc=$?
   local execs cov ft corpus found
@@ -58,13 +56,13 @@ run_one() {
 }
 
 if ! $all; then
-  cmake --build build/fuzz --target "$name"
+  cmake --build build/ci --target "$name"
   run_one "$name"
   exit 0
 fi
 
-cmake --build build/fuzz --target fapcast_fuzz_targets
-out=build/fuzz/fuzz-figures.tsv
+cmake --build build/ci --target fapcast_fuzz_targets
+out=build/ci/fuzz-figures.tsv
 printf 'target\tseconds\texecutions\tcov\tft\tcorpus\tfindings\n' >"$out"
 status=0
 for src in tests/fuzz/*_fuzz.cpp; do

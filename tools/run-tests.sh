@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The test command (README, .ci/run): installs what is missing (tools/setup.sh --tests), builds
-# everything with AddressSanitizer + UndefinedBehaviorSanitizer and -Werror, runs every GoogleTest
-# suite under CTest, then builds the libFuzzer targets with clang and runs each for a bounded time.
-#   FAPCAST_FUZZ_SECONDS=N  seconds per fuzz target (default 5; 0 skips the fuzz stage)
+# everything once with clang, AddressSanitizer + UndefinedBehaviorSanitizer, libFuzzer's coverage
+# and -Werror (tools/configure-ci.sh), runs every GoogleTest suite under CTest, then runs each
+# libFuzzer target for a bounded time, two at a time.
+#   FAPCAST_FUZZ_SECONDS=N  seconds per fuzz target (default 5; 0 skips the fuzz runs)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -14,25 +15,14 @@ bash tools/setup.sh --tests
 stage "set-up"
 
 jobs=$(nproc)
-fuzz_seconds=${FAPCAST_FUZZ_SECONDS:-5}
-
-# -g1: line tables are all a sanitizer report needs, and full debug info costs build time.
-cmake -S . -B build/ci -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-  -DFAPCAST_SANITIZE=ON -DFAPCAST_WERROR=ON -DFAPCAST_TESTS=ON -DFAPCAST_BENCH=ON
+bash tools/configure-ci.sh
 cmake --build build/ci -j "$jobs"
-stage "sanitizer build"
+stage "build"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-ctest --test-dir build/ci --output-on-failure -j "$jobs"
+ctest --test-dir build/ci --output-on-failure -j "$jobs" -LE fuzz
 stage "tests"
-
-if [ "$fuzz_seconds" != 0 ]; then
-  cmake -S . -B build/fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_CXX_COMPILER=clang++ -DFAPCAST_FUZZ=ON -DFAPCAST_TESTS=OFF -DFAPCAST_WERROR=ON \
-    -DFAPCAST_FUZZ_SECONDS="$fuzz_seconds"
-  cmake --build build/fuzz -j "$jobs" --target fapcast_fuzz_targets
-  stage "fuzz build"
-  ctest --test-dir build/fuzz --output-on-failure -L fuzz
+if [ "${FAPCAST_FUZZ_SECONDS:-5}" != 0 ]; then
+  ctest --test-dir build/ci --output-on-failure -j "$jobs" -L fuzz
   stage "fuzz runs"
 fi

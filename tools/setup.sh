@@ -54,7 +54,7 @@ install_viewer_packages() {
 
 # The tests, benchmarks and fuzz targets, on top.
 test_packages=(
-  clang                 # libFuzzer targets (tests/fuzz) are built with clang
+  clang                 # the test build (tools/configure-ci.sh): suites and libFuzzer targets
   libclang-rt-14-dev    # clang's sanitizer and libFuzzer runtimes
   libgtest-dev          # GoogleTest suites
   libgmock-dev          # GTest::gmock, which the suites link

@@ -12,7 +12,9 @@
 #include <random>
 // GCC 12 warns falsely (-Wmaybe-uninitialized) inside libstdc++'s <regex> at -O1 with ASan;
 // the regex parser here is only the naive baseline the TextGrid reader is compared against.
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <regex>
 #include <sstream>
 

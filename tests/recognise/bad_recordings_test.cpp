@@ -99,7 +99,8 @@ TEST(BadRecordings, RecognitionRefusesSilenceNoiseAndTooShort) {
       {"too-short", "too-short.wav: speech-empty: the recording is shorter than 0.1 s"}};
   for (const auto& [name, message] : expected) {
     SCOPED_TRACE(name);
-    const auto b = std::find_if(all.begin(), all.end(), [&](const BadRecording& r) { return r.name == name; });
+    const std::string& wanted = name;  // clang 14 cannot capture a structured binding
+    const auto b = std::find_if(all.begin(), all.end(), [&](const BadRecording& r) { return r.name == wanted; });
     ASSERT_NE(b, all.end());
     try {
       (void)aligner.recognise(b->audio, name + ".wav");

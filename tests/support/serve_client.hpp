@@ -126,7 +126,6 @@ class DroppingLiveClient {
   }
   // The close handshake, then the connection closed.
   void close() {
-    beast::error_code ec;
     beast::get_lowest_layer(ws_).expires_after(std::chrono::seconds(5));
     bool done = false;
     ws_.async_close(beast::websocket::close_code::normal, [&](beast::error_code) { done = true; });

@@ -5,6 +5,7 @@
 // active states; counters report seconds of animation per CPU second and active states.
 #include "fapcast/synthesis/unit_concatenation.hpp"
 #include "fapcast/select/unit_search.hpp"
+#include "fapcast/core/eigen_types.hpp"
 
 #include <benchmark/benchmark.h>
 #include <malloc.h>
@@ -25,7 +26,7 @@ constexpr int kTargetPhones = 120;  // ~10 s of speech
 
 struct World {
   std::vector<PhoneState> states;
-  Eigen::Matrix<float, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> frames;  // row-major, as a voice maps them
+  RowMajorMatrixXf frames;  // row-major, as a voice maps them
   std::unique_ptr<PhoneGraph> graph;
   std::vector<VisemeClass> targets;
   std::vector<TargetPhone> timing;

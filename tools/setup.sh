@@ -56,6 +56,7 @@ install_viewer_packages() {
 test_packages=(
   clang                 # the test build (tools/configure-ci.sh): suites and libFuzzer targets
   libclang-rt-14-dev    # clang's sanitizer and libFuzzer runtimes
+  lld                   # LLVM's linker: the test build links its 86 programs with it (tools/configure-ci.sh)
   libgtest-dev          # GoogleTest suites
   libgmock-dev          # GTest::gmock, which the suites link
   libbenchmark-dev      # Google Benchmark programs (tests/bench, FAPCAST_BENCH=ON)

@@ -17,7 +17,7 @@
 namespace {
 using namespace fapcast;
 
-const cli::Registration reg{"align", [](CLI::App& app) {
+const cli::Registration align_command{"align", [](CLI::App& app) {
   struct Args {
     std::string wav;
     cli::TranscriptArgs transcript;

@@ -31,7 +31,7 @@ void animate_from_transcript(const Args& args) {
   cli::synthesize_to_file(args.synthesis, phones, found.sample_rate, found.samples, args.wav, "fapcast animate");
 }
 
-const cli::Registration reg{"animate", [](CLI::App& app) {
+const cli::Registration animate_command{"animate", [](CLI::App& app) {
   struct Args {
     std::string wav;
     std::string align;

@@ -11,7 +11,7 @@
 
 namespace {
 
-const fapcast::cli::Registration reg{"corpus record-reference", [](CLI::App& app) {
+const fapcast::cli::Registration corpus_record_command{"corpus record-reference", [](CLI::App& app) {
   struct Args {
     std::string output;
     fapcast::ReferenceCorpusOptions options;

@@ -9,7 +9,7 @@
 
 namespace {
 
-const fapcast::cli::Registration reg{"corpus script", [](CLI::App& app) {
+const fapcast::cli::Registration corpus_script_command{"corpus script", [](CLI::App& app) {
   struct Args {
     std::string output;
     fapcast::cli::RecordingScriptInputs inputs;

@@ -17,7 +17,7 @@
 namespace {
 using namespace fapcast;
 
-const cli::Registration reg{"eval align", [](CLI::App& app) {
+const cli::Registration eval_align_command{"eval align", [](CLI::App& app) {
   struct Args {
     std::string data;                     // DATA
     std::vector<std::string> recordings;  // --recording, repeatable

@@ -32,7 +32,7 @@ std::string shell_word(const std::string& s) {
   return s.find_first_of(" \t\"'") == std::string::npos ? s : "\"" + s + "\"";
 }
 
-const cli::Registration reg{"eval articulography", [](CLI::App& app) {
+const cli::Registration eval_articulography_command{"eval articulography", [](CLI::App& app) {
   struct Args {
     std::string ema;
     std::string wav;

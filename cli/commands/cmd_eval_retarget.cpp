@@ -13,7 +13,7 @@
 
 namespace {
 
-const fapcast::cli::Registration reg{"eval retarget", [](CLI::App& app) {
+const fapcast::cli::Registration eval_retarget_command{"eval retarget", [](CLI::App& app) {
   struct Args {
     std::string voice;
     std::string corpus;

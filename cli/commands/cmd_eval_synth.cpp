@@ -35,7 +35,7 @@ NamedSystem variable_length_system(const Voice& voice, SynthesisOptions options)
           }};
 }
 
-const cli::Registration reg{"eval synth", [](CLI::App& app) {
+const cli::Registration eval_synth_command{"eval synth", [](CLI::App& app) {
   struct Args {
     std::string voice;
     std::size_t count = kHeldOutSentences.size();

@@ -37,7 +37,7 @@ FapJsonRead read_track(const std::string& path) {
   throw cli::UsageError("export: input '" + path + "' is neither .fap nor .json");
 }
 
-const cli::Registration reg{"export", [](CLI::App& app) {
+const cli::Registration export_command{"export", [](CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "export", "Export a FAP track (.fap or .json) as BVH (head, jaw, tongue-tip and lip joints "
                 "on a generic adult face, cm) or as JSON for web players");

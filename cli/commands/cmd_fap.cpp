@@ -167,7 +167,7 @@ void convert(const std::string& in, const std::string& out, const std::string& d
   if (d != FapTextDialect::kMask69) cli::print_notes(out, fap_text_player_notes(r.sequence, options));
 }
 
-const cli::Registration reg{"fap", [](CLI::App& app) {
+const cli::Registration fap_command{"fap", [](CLI::App& app) {
   auto* fap = app.add_subcommand("fap", "Inspect and convert .fap text files");
   fap->require_subcommand(1);
 

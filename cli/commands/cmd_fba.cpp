@@ -99,7 +99,7 @@ void decode(const DecodeArgs& a) {
   if (!report.ok()) throw std::runtime_error(a.in + ": decoded with losses; " + a.out + " holds what survived");
 }
 
-const cli::Registration reg{"encode", [](CLI::App& app) {
+const cli::Registration encode_command{"encode", [](CLI::App& app) {
   auto enc = std::make_shared<EncodeArgs>();
   auto* e = app.add_subcommand("encode", "Encode a .fap track as a binary MPEG-4 FBA stream (.fba)");
   e->add_option("IN", enc->in, "input .fap file")->required();
@@ -121,7 +121,7 @@ const cli::Registration reg{"encode", [](CLI::App& app) {
   e->callback([enc] { encode(*enc); });
 }};
 
-const cli::Registration decode_reg{"decode", [](CLI::App& app) {
+const cli::Registration decode_command{"decode", [](CLI::App& app) {
   auto dec = std::make_shared<DecodeArgs>();
   auto* d = app.add_subcommand("decode", "Decode a binary MPEG-4 FBA stream (.fba, either profile) to a .fap track");
   d->add_option("IN", dec->in, "input .fba file")->required();

@@ -34,7 +34,7 @@ WriteFile write_into(const fs::path& dir) {
   };
 }
 
-const cli::Registration adapt_reg{"adapt", [](CLI::App& app) {
+const cli::Registration mesh_adapt_command{"adapt", [](CLI::App& app) {
   struct Args {
     std::string generic, specific, targets, output;
   };
@@ -68,7 +68,7 @@ Eigen::MatrixXf expression_tour(int fps, double seconds) {
   return w;
 }
 
-const cli::Registration expressions_reg{"expressions", [](CLI::App& app) {
+const cli::Registration expressions_command{"expressions", [](CLI::App& app) {
   struct Args {
     std::string output, obj_frames;
     int intensity = kMaxExpressionIntensity;
@@ -116,7 +116,7 @@ const cli::Registration expressions_reg{"expressions", [](CLI::App& app) {
   });
 }};
 
-const cli::Registration render_reg{"render", [](CLI::App& app) {
+const cli::Registration render_command{"render", [](CLI::App& app) {
   struct Args {
     std::string input, output, view = "face";
     int width = 320, every = 1;

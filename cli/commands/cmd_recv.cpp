@@ -143,7 +143,7 @@ void run_recv(const RecvArgs& a) {
   cli::print_notes(a.output, out.notes);
 }
 
-const cli::Registration reg{"recv", [](CLI::App& app) {
+const cli::Registration recv_command{"recv", [](CLI::App& app) {
   auto args = std::make_shared<RecvArgs>();
   auto* cmd = app.add_subcommand("recv", "Receive a FAP track over RTP/UDP and write it to a file");
   cmd->add_option("URL", args->url, "Listen on udp://HOST:PORT (a multicast group joins it; RTCP on PORT+1)")->required();

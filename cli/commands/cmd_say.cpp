@@ -30,7 +30,7 @@ std::string read_stdin() {
   return bytes;
 }
 
-const cli::Registration reg{"say", [](CLI::App& app) {
+const cli::Registration say_command{"say", [](CLI::App& app) {
   struct Args {
     std::string text;
     std::string text_file;

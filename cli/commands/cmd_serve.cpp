@@ -94,7 +94,7 @@ void run_serve(const ServeArgs& a, const CLI::App& cmd) {
   server.reset();
 }
 
-const cli::Registration reg{"serve", [](CLI::App& app) {
+const cli::Registration serve_command{"serve", [](CLI::App& app) {
   auto args = std::make_shared<ServeArgs>();
   auto* cmd = app.add_subcommand(
       "serve", "Serve text-to-face live: HTTP + WebSocket API, RTP (SRTP) and a browser avatar page (spec/serve.md)");

@@ -116,7 +116,7 @@ void run_stream(const StreamArgs& a) {
             << " sender reports\n";
 }
 
-const cli::Registration reg{"stream", [](CLI::App& app) {
+const cli::Registration stream_command{"stream", [](CLI::App& app) {
   auto args = std::make_shared<StreamArgs>();
   auto* cmd = app.add_subcommand("stream", "Send a FAP track (and its audio) as RTP over UDP");
   cmd->add_option("IN", args->input, "Track to send: .fap, .fba or .json")->required();

@@ -38,7 +38,7 @@ std::string_view element_type_name(fapcast::ElementType type) {
   return "?";
 }
 
-const fapcast::cli::Registration build_reg{"voice build", [](CLI::App& app) {
+const fapcast::cli::Registration voice_build_command{"voice build", [](CLI::App& app) {
   struct Args {
     std::string corpus;
     std::string output;
@@ -90,7 +90,7 @@ const fapcast::cli::Registration build_reg{"voice build", [](CLI::App& app) {
   });
 }};
 
-const fapcast::cli::Registration info_reg{"voice info", [](CLI::App& app) {
+const fapcast::cli::Registration voice_info_command{"voice info", [](CLI::App& app) {
   auto path = std::make_shared<std::string>();
   auto* cmd = fapcast::cli::command_group(app, "voice", kVoiceGroupHelp)
                   ->add_subcommand("info", "Print a voice's provenance and the size of each section");
@@ -123,7 +123,7 @@ const fapcast::cli::Registration info_reg{"voice info", [](CLI::App& app) {
 
 namespace {
 
-const fapcast::cli::Registration default_reg{"voice default", [](CLI::App& app) {
+const fapcast::cli::Registration voice_default_command{"voice default", [](CLI::App& app) {
   auto quiet = std::make_shared<bool>(false);
   auto* cmd = fapcast::cli::command_group(app, "voice", kVoiceGroupHelp)
                   ->add_subcommand("default",
@@ -137,7 +137,7 @@ const fapcast::cli::Registration default_reg{"voice default", [](CLI::App& app) 
 
 namespace {
 
-const fapcast::cli::Registration adapt_reg{"voice adapt", [](CLI::App& app) {
+const fapcast::cli::Registration voice_adapt_command{"voice adapt", [](CLI::App& app) {
   struct Args {
     std::string voice, generic, specific, output, unit = "cm";
   };

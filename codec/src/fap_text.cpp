@@ -133,9 +133,9 @@ std::optional<std::uint64_t> parse_digits(std::string_view digits) {
 }
 
 // Everything one read needs to report: the source, the info being filled, warnings.
-class Reader {
+class FapTextReader {
  public:
-  Reader(std::string_view bytes, std::string_view source) : bytes_(bytes), source_(source) {}
+  FapTextReader(std::string_view bytes, std::string_view source) : bytes_(bytes), source_(source) {}
 
   FapTextRead run();
 
@@ -194,7 +194,7 @@ class Reader {
 
 // The next line that is neither blank nor a comment, with its line ending removed. Refuses
 // control bytes (NUL included): a text file has none but tab, CR before LF, and LF.
-std::optional<Reader::Line> Reader::next_line() {
+std::optional<FapTextReader::Line> FapTextReader::next_line() {
   while (pos_ < bytes_.size()) {
     const std::size_t end = bytes_.find('\n', pos_);
     const std::size_t stop = end == std::string_view::npos ? bytes_.size() : end;
@@ -228,7 +228,7 @@ std::optional<Reader::Line> Reader::next_line() {
   return std::nullopt;
 }
 
-Reader::Tokens Reader::split(std::string_view text) {
+FapTextReader::Tokens FapTextReader::split(std::string_view text) {
   Tokens t;
   std::size_t i = 0;
   while (i < text.size()) {
@@ -244,7 +244,7 @@ Reader::Tokens Reader::split(std::string_view text) {
 
 // "<version> <name ...> <fps> <count>": the first token is the version, the last two are the
 // fps and the frame count, and everything between them (spaces included) is the name.
-void Reader::read_header(const Line& line) {
+void FapTextReader::read_header(const Line& line) {
   header_line_ = line.number;
   std::string_view rest = line.text;
   auto take_first = [&] {
@@ -297,7 +297,7 @@ void Reader::read_header(const Line& line) {
 // fps: an integer or a decimal with at most 6 fractional digits, 0 < fps <= 1000. A decimal
 // that is N x 1000/1001 (N in kNtscBases) rounded to the digits written, with at least two
 // of them, is read as exactly N x 1000/1001; any other decimal as its exact value.
-FrameRate Reader::read_fps(std::string_view token, std::uint64_t line) {
+FrameRate FapTextReader::read_fps(std::string_view token, std::uint64_t line) {
   const auto d = parse_decimal(token);
   if (!d || d->fraction.size() > kMaxFpsDigits)
     fail(line, "header-fps",
@@ -320,7 +320,7 @@ FrameRate Reader::read_fps(std::string_view token, std::uint64_t line) {
   return FrameRate{static_cast<std::uint32_t>(raw / g), static_cast<std::uint32_t>(scale / g)};
 }
 
-FapMask Reader::read_mask(const Line& line) {
+FapMask FapTextReader::read_mask(const Line& line) {
   const Tokens t = split(line.text);
   if (mask_tokens_ == 0) {
     if (t.count != kMaskTokensStrict && t.count != kMaskTokens69)
@@ -349,7 +349,7 @@ FapMask Reader::read_mask(const Line& line) {
 
 // A value token: an integer, or a decimal rounded half away from zero (with a warning).
 // Exact digit arithmetic: no binary floating point is involved.
-std::int64_t Reader::number(std::string_view token, std::uint64_t line, std::string_view what) {
+std::int64_t FapTextReader::number(std::string_view token, std::uint64_t line, std::string_view what) {
   const auto d = parse_decimal(token);
   if (!d) fail(line, "value-token", std::string(what) + " " + quote(token) + " is not a number");
   const auto whole = parse_digits(d->whole);
@@ -367,7 +367,7 @@ std::int64_t Reader::number(std::string_view token, std::uint64_t line, std::str
   return v;
 }
 
-std::uint8_t Reader::field(std::string_view token, std::uint64_t line, const char* rule,
+std::uint8_t FapTextReader::field(std::string_view token, std::uint64_t line, const char* rule,
                            const char* name, int max) {
   const std::int64_t v = number(token, line, name);
   if (v < 0 || v > max)
@@ -378,7 +378,7 @@ std::uint8_t Reader::field(std::string_view token, std::uint64_t line, const cha
 
 // Fills the frames before `frame_number` that the file skipped: each holds the frame before it
 // (as players do); skipped frames before the first record are neutral (nothing masked).
-void Reader::hold_until(std::uint64_t frame_number, std::uint64_t line) {
+void FapTextReader::hold_until(std::uint64_t frame_number, std::uint64_t line) {
   auto& frames = out_.sequence.frames;
   if (frame_number - frames.size() > kFapTextMaxHeldFrames)
     fail(line, "frame-gap",
@@ -396,7 +396,7 @@ void Reader::hold_until(std::uint64_t frame_number, std::uint64_t line) {
   frames.resize(frame_number, held);
 }
 
-void Reader::read_frame(const FapMask& mask, std::uint64_t mask_line, const Line& values) {
+void FapTextReader::read_frame(const FapMask& mask, std::uint64_t mask_line, const Line& values) {
   const bool fap12 = mask.test(kVisemeFap) || mask.test(kExpressionFap);
   if (mask_tokens_ == kMaskTokens69) single_fap12_ = true;
   const auto expected_for = [&](bool single) {
@@ -493,7 +493,7 @@ void Reader::read_frame(const FapMask& mask, std::uint64_t mask_line, const Line
 // The header's count may exceed the frames the file holds by a little (a writer that counted
 // one too many): up to max(1, count/100) frames short is accepted with a warning. More than
 // that is a file that is not what its header says, and is refused.
-void Reader::check_count_against_file() {
+void FapTextReader::check_count_against_file() {
   const std::uint64_t claimed = out_.info.header_frame_count;
   const std::uint64_t held = out_.sequence.frames.size();
   if (claimed == held) return;
@@ -508,7 +508,7 @@ void Reader::check_count_against_file() {
            std::to_string(held) + ", which are used");
 }
 
-FapTextRead Reader::run() {
+FapTextRead FapTextReader::run() {
   constexpr std::string_view kBom = "\xEF\xBB\xBF";  // Windows editors write one
   if (bytes_.substr(0, kBom.size()) == kBom) {
     pos_ = kBom.size();
@@ -561,7 +561,7 @@ std::string FapTextInfo::describe() const {
 }
 
 FapTextRead read_fap_text(std::string_view bytes, std::string_view source) {
-  return Reader(bytes, source).run();
+  return FapTextReader(bytes, source).run();
 }
 
 std::string fap_text_name(std::string_view name) {

@@ -58,9 +58,9 @@ Json frame_json(std::uint64_t k, const FapFrame& f, FrameRate rate,
 }
 
 // Reading: every check names the JSON pointer of the value it refused.
-class Reader {
+class JsonTrackReader {
  public:
-  explicit Reader(std::string_view source) : source_(source) {}
+  explicit JsonTrackReader(std::string_view source) : source_(source) {}
 
   [[noreturn]] void fail(const std::string& rule, const std::string& pointer,
                          const std::string& detail) const {
@@ -119,7 +119,7 @@ class Reader {
   std::string_view source_;
 };
 
-FapFrame read_frame(const Reader& r, const Json& j, const std::string& at, std::uint64_t k,
+FapFrame read_frame(const JsonTrackReader& r, const Json& j, const std::string& at, std::uint64_t k,
                     FrameRate rate, const std::optional<SampleRate>& sample_rate) {
   r.object(j, at);
   r.only_keys(j, at, {"frame", "time_s", "sample", "faps", "viseme", "expression"});
@@ -227,7 +227,7 @@ FapJsonRead read_fap_json(std::string_view bytes, std::string_view source) {
     // The parser's other refusals (a number beyond double's range: out_of_range 406).
     throw InputError({std::string(source), std::nullopt, std::nullopt}, "json-syntax", e.what());
   }
-  const Reader r(source);
+  const JsonTrackReader r(source);
   r.object(doc, "");
   r.only_keys(doc, "", {"format", "version", "generator", "name", "frame_rate", "fps",
                         "frame_count", "sample_rate", "fapu", "frames"});

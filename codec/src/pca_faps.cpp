@@ -147,7 +147,7 @@ std::vector<FapFrame> pca_to_faps(const Eigen::MatrixXf& coefficients, const Fea
 
   std::vector<std::size_t> slot(drives.size());  // where FAP m's value goes in FapFrame::values
   for (std::size_t m = 0; m < drives.size(); ++m) {
-    slot[m] = static_cast<std::size_t>(drives[m].fap - 1);
+    slot[m] = fap_slot(drives[m].fap);
   }
   std::vector<FapFrame> frames;  // built a frame at a time, so each is written while in cache
   frames.reserve(static_cast<std::size_t>(coefficients.rows()));

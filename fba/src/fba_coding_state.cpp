@@ -59,7 +59,7 @@ std::optional<FbaRateFields> fba_rate_fields(FrameRate rate) {
 FbaCodedFaps::FbaCodedFaps(const FapMask& mask, const std::array<FbaRangeLevels, kFapCount>& ranges, int fap_quant) {
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
     if (!mask.test(fap)) continue;
-    const auto i = static_cast<std::size_t>(fap - 1);
+    const auto i = fap_slot(fap);
     const FbaRangeLevels& r = ranges[i];
     FbaCodedFap& f = faps_[static_cast<std::size_t>(count_++)];
     f.index = static_cast<std::uint8_t>(i);
@@ -75,8 +75,8 @@ void FbaCodingState::reset_models() {
   const bool escape = profile == FbaProfile::kFapcast;
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
     if (!mask.test(fap)) {
-      intra.fap[static_cast<std::size_t>(fap - 1)] = FrequencyModel{};
-      predicted.fap[static_cast<std::size_t>(fap - 1)] = FrequencyModel{};
+      intra.fap[fap_slot(fap)] = FrequencyModel{};
+      predicted.fap[fap_slot(fap)] = FrequencyModel{};
     }
   }
   for (const FbaCodedFap& f : coded) {
@@ -117,11 +117,11 @@ void FbaCodingState::begin_standard_intra(int new_fap_quant, const FapMask& new_
   const FbaRangeLevels& fap4 = ranges[3];
   if (fap4.i_min == 0 && fap4.i_max == 0) {
     for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap)
-      ranges[static_cast<std::size_t>(fap - 1)] = fba_default_range_levels(fap, fap_quant);
+      ranges[fap_slot(fap)] = fba_default_range_levels(fap, fap_quant);
   }
   for (int fap = kFirstLowLevelFap; fap <= kFapCount; ++fap) {
     if (!mask.test(fap)) continue;
-    const auto i = static_cast<std::size_t>(fap - 1);
+    const auto i = fap_slot(fap);
     FbaRangeLevels& r = ranges[i];
     const FbaRangeFields& f = fields[i];
     if (flags.i_max) r.i_max = fba_range_levels(f.i_max, fap_quant);
@@ -188,7 +188,7 @@ std::uint64_t FbaCodingState::checksum() const {
   f.add_signed(blend_levels);
   f.add_signed(increment);
   for (int fap = 1; fap <= kFapCount; ++fap) {
-    const auto i = static_cast<std::size_t>(fap - 1);
+    const auto i = fap_slot(fap);
     f.add(mask.test(fap));
     for (const std::int32_t r : {ranges[i].i_min, ranges[i].i_max, ranges[i].p_min, ranges[i].p_max}) f.add_signed(r);
     const FbaPrediction& p = prediction;

@@ -15,8 +15,6 @@ constexpr int kMarkersPerFlag = 18;  // markers before group positions 0, 4, 8, 
 constexpr int kFapcastIncrementLog2 = 3;
 constexpr int kMaxCoefficient = 64;
 
-std::size_t at(int fap) { return static_cast<std::size_t>(fap - 1); }
-
 std::int64_t ue_bits(std::uint64_t v) { return 2 * static_cast<std::int64_t>(std::bit_width(v + 1)) - 1; }
 std::int64_t se_bits(std::int64_t v) { return ue_bits(v > 0 ? 2 * static_cast<std::uint64_t>(v) - 1 : 2 * static_cast<std::uint64_t>(-v)); }
 
@@ -110,7 +108,7 @@ StandardPlan plan_standard_period(std::span<const FapFrame> frames, std::size_t 
   // The ranges in force when the decoder reads the fields (the default rule first).
   std::array<FbaRangeLevels, kFapCount> base = state.ranges;
   if (base[3].i_min == 0 && base[3].i_max == 0) {
-    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) base[at(n)] = fba_default_range_levels(n, q);
+    for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) base[fap_slot(n)] = fba_default_range_levels(n, q);
   }
   const FbaLevels intra = intra_levels(first, q);
   const auto ideal_intra = intra_range_fields(intra, mask, q);
@@ -211,7 +209,7 @@ FapcastIntraHeader plan_fapcast_period(std::span<const FapFrame> frames, std::si
   std::array<std::vector<std::int64_t>, kFapCount> levels;  // the chosen predictor's levels
   std::vector<std::int64_t> trial;
   for (const int n : order) {
-    const std::size_t i = at(n);
+    const std::size_t i = fap_slot(n);
     const int step = fba_step(n, q);
     std::int64_t best = std::numeric_limits<std::int64_t>::max();
     for (int predictor = 0; predictor <= (choose ? kMaxPredictor : 0); ++predictor) {
@@ -228,13 +226,13 @@ FapcastIntraHeader plan_fapcast_period(std::span<const FapFrame> frames, std::si
   // References: a FAP's level predicted from an earlier FAP's level in the same frame.
   std::array<std::vector<std::int64_t>, kFapCount> symbols = levels;
   for (std::size_t a = 0; a < order.size() && choose; ++a) {
-    const std::size_t i = at(order[a]);
+    const std::size_t i = fap_slot(order[a]);
     const std::vector<std::int64_t>& e = levels[i];
     if (e.empty()) break;
     const auto [lo0, hi0] = alphabet_for(e);
     std::int64_t best = alphabet_cost(e, lo0, hi0, increment, std::numeric_limits<std::int64_t>::max()) + kBit;
     for (std::size_t b = 0; b < a; ++b) {
-      const std::size_t m = at(order[b]);
+      const std::size_t m = fap_slot(order[b]);
       const std::vector<std::int64_t>& r = levels[m];
       double num = 0, den = 0;
       for (std::size_t j = 0; j < e.size(); ++j) {
@@ -260,7 +258,7 @@ FapcastIntraHeader plan_fapcast_period(std::span<const FapFrame> frames, std::si
     }
   }
   for (const int n : order) {
-    const std::size_t i = at(n);
+    const std::size_t i = fap_slot(n);
     const auto [lo, hi] = alphabet_for(symbols[i]);
     h.p_min[i] = lo;
     h.p_max[i] = hi;

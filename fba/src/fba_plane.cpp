@@ -18,8 +18,6 @@ constexpr int kMaxReferenceCoefficient = 64;  // fapcast: |c| <= 4 (in sixteenth
 // fapcast: a level is at most the difference of two int32 values (fap_quant 0, any predictor).
 constexpr std::int64_t kMaxLevel = std::int64_t{1} << 33;
 
-std::size_t at(int fap) { return static_cast<std::size_t>(fap - 1); }
-
 // --- group masks ----------------------------------------------------------------------------------
 
 void write_group_masks(const FapMask& mask, FbaBitWriter& out) {
@@ -294,7 +292,7 @@ void write_standard_intra_header(FbaCodingState& state, const FapFrame& frame, c
   out.put_bit(h.flags.p_min);
   auto fields = h.fields;
   for_each_range_field(frame.mask, h.flags, [&] { out.put_bit(1); },
-                       [&](int flag, int n) { out.put(field_of(fields[at(n)], flag), 5); });
+                       [&](int flag, int n) { out.put(field_of(fields[fap_slot(n)], flag), 5); });
   state.begin_standard_intra(h.fap_quant, frame.mask, h.flags, h.fields);
 }
 
@@ -310,7 +308,7 @@ bool read_standard_intra_header(FbaCodingState& state, FbaBitReader& in) {
   flags.p_min = in.get_bit() == 1;
   std::array<FbaRangeFields, kFapCount> fields{};
   for_each_range_field(mask, flags, [&] { in.marker(); },
-                       [&](int flag, int n) { field_of(fields[at(n)], flag) = static_cast<std::uint8_t>(in.get(5)); });
+                       [&](int flag, int n) { field_of(fields[fap_slot(n)], flag) = static_cast<std::uint8_t>(in.get(5)); });
   if (in.error()) return false;
   state.begin_standard_intra(fap_quant, mask, flags, fields);
   return true;
@@ -486,7 +484,7 @@ void read_fapcast_low_level(FbaCodingState& s, FbaBitReader& in, FapFrame& out) 
 FbaLevels intra_levels(const FapFrame& frame, int fap_quant) {
   FbaLevels levels{};
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
-    if (frame.mask.test(n)) levels[at(n)] = fba_quantise(frame.values[at(n)], fba_step(n, fap_quant));
+    if (frame.mask.test(n)) levels[fap_slot(n)] = fba_quantise(frame.values[fap_slot(n)], fba_step(n, fap_quant));
   }
   return levels;
 }
@@ -543,9 +541,9 @@ std::error_code check_codable(FbaProfile profile, const FapFrame& frame, int fap
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
     if (!frame.mask.test(n)) continue;
     const int step = fba_step(n, fap_quant);
-    const std::int64_t level = fba_quantise(frame.values[at(n)], step);
+    const std::int64_t level = fba_quantise(frame.values[fap_slot(n)], step);
     if (level > max_levels || level < -max_levels) {
-      msg << "FAP " << n << " " << fap_info(n).name << ": value " << frame.values[at(n)]
+      msg << "FAP " << n << " " << fap_info(n).name << ": value " << frame.values[fap_slot(n)]
           << " is beyond the standard syntax's codable range +/-" << std::int64_t{max_levels} * step << " at fap_quant "
           << fap_quant;
       return refuse("");
@@ -558,9 +556,9 @@ std::array<FbaRangeFields, kFapCount> intra_range_fields(const FbaLevels& levels
   std::array<FbaRangeFields, kFapCount> ranges{};
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
     if (!mask.test(n)) continue;
-    const std::int64_t level = levels[at(n)];
-    ranges[at(n)].i_max = static_cast<std::uint8_t>(fba_range_field(std::max<std::int64_t>(level, 0), fap_quant).value_or(kMaxRangeField));
-    ranges[at(n)].i_min = static_cast<std::uint8_t>(fba_range_field(std::max<std::int64_t>(-level, 0), fap_quant).value_or(kMaxRangeField));
+    const std::int64_t level = levels[fap_slot(n)];
+    ranges[fap_slot(n)].i_max = static_cast<std::uint8_t>(fba_range_field(std::max<std::int64_t>(level, 0), fap_quant).value_or(kMaxRangeField));
+    ranges[fap_slot(n)].i_min = static_cast<std::uint8_t>(fba_range_field(std::max<std::int64_t>(-level, 0), fap_quant).value_or(kMaxRangeField));
   }
   return ranges;
 }
@@ -576,11 +574,11 @@ bool size_predicted_fields(const LevelExtremes& extremes, const FapMask& mask, i
                            std::array<FbaRangeFields, kFapCount>& fields) {
   for (int n = kFirstLowLevelFap; n <= kFapCount; ++n) {
     if (!mask.test(n)) continue;
-    const auto hi = fba_range_field(extremes.max[at(n)], fap_quant);
-    const auto lo = fba_range_field(-extremes.min[at(n)], fap_quant);
+    const auto hi = fba_range_field(extremes.max[fap_slot(n)], fap_quant);
+    const auto lo = fba_range_field(-extremes.min[fap_slot(n)], fap_quant);
     if (!hi || !lo) return false;
-    fields[at(n)].p_max = static_cast<std::uint8_t>(*hi);
-    fields[at(n)].p_min = static_cast<std::uint8_t>(*lo);
+    fields[fap_slot(n)].p_max = static_cast<std::uint8_t>(*hi);
+    fields[fap_slot(n)].p_min = static_cast<std::uint8_t>(*lo);
   }
   return true;
 }

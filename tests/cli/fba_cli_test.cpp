@@ -3,6 +3,7 @@
 #include "fapcast/fba/fba_quantiser.hpp"
 #include "cli/fapcast_command.hpp"
 #include "support/run_command.hpp"
+#include "support/file_bytes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,13 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 const fs::path kXface = fs::path(FAPCAST_TEST_DATA) / "xface";
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 FapSequence read_fap(const fs::path& p) { return read_fap_text(slurp(p), p.string()).sequence; }
 

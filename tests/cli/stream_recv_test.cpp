@@ -5,6 +5,7 @@
 #include "fapcast/transport/track_file.hpp"
 #include "cli/fapcast_command.hpp"
 #include "support/run_command.hpp"
+#include "support/file_bytes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,13 +18,6 @@ namespace fapcast::test {
 namespace {
 
 using namespace std::chrono_literals;
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // A free loopback port (bound once by the OS, then released for the command to bind).
 int free_port() {

@@ -46,11 +46,7 @@ struct Variant {
 };
 std::ostream& operator<<(std::ostream& out, const Variant& v) { return out << v.name; }
 
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (auto at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
-    s.replace(at, from.size(), to);
-  return s;
-}
+using test::replace_all;
 
 class BvhTextVariant : public testing::TestWithParam<Variant> {};
 

@@ -5,6 +5,7 @@
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/core/file_io.hpp"
 #include "support/fap_sequences.hpp"
+#include "support/file_bytes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -143,18 +144,15 @@ std::string text_of(const Records& r, const std::string& sep = " ", const std::s
 }
 
 // A dialect variant: rewrites the file's records/text and the frames the reader must yield.
-struct Variant {
+struct FapTextVariant {
   const char* name;
   std::function<std::string(Records&, std::vector<FapFrame>&)> make;
   std::function<bool(const FapTextInfo&)> saw;  // what the reader must report
 };
 
-std::string replace_all(std::string s, const std::string& from, const std::string& to) {
-  for (std::size_t p = 0; (p = s.find(from, p)) != std::string::npos; p += to.size()) s.replace(p, from.size(), to);
-  return s;
-}
+using test::replace_all;
 
-const Variant kVariants[] = {
+const FapTextVariant kVariants[] = {
     {"Lf", [](Records& r, auto&) { return text_of(r); },
      [](const FapTextInfo& i) { return !i.crlf && !i.tabs && i.describe() == "68-token masks"; }},
     {"Crlf", [](Records& r, auto&) { return text_of(r, " ", "\r\n"); },
@@ -257,7 +255,7 @@ const Variant kVariants[] = {
      [](const FapTextInfo& i) { return i.header_count_short && i.warning_count == 1; }},
 };
 
-class XfaceDialect : public testing::TestWithParam<std::tuple<XfaceCase, Variant>> {};
+class XfaceDialect : public testing::TestWithParam<std::tuple<XfaceCase, FapTextVariant>> {};
 
 TEST_P(XfaceDialect, ReadsAsExpectedAndRoundTripsThroughBothWriters) {
   const auto& [c, variant] = GetParam();

@@ -7,7 +7,7 @@
 namespace fapcast {
 namespace {
 
-constexpr SampleRate kRate{1000};  // one sample a millisecond
+constexpr SampleRate kMillisecondRate{1000};  // one sample a millisecond
 
 std::vector<TimedPhone> phones(std::initializer_list<std::pair<Phone, std::int64_t>> starts, std::int64_t end) {
   std::vector<TimedPhone> out;
@@ -20,7 +20,7 @@ std::vector<TimedPhone> phones(std::initializer_list<std::pair<Phone, std::int64
 
 TEST(BoundaryAgreement, IdenticalAlignmentsAgreeExactly) {
   const auto a = phones({{Phone::SIL, 0}, {Phone::HH, 100}, {Phone::AY, 160}, {Phone::SIL, 300}}, 400);
-  const BoundaryAgreement r = boundary_agreement(a, a, kRate);
+  const BoundaryAgreement r = boundary_agreement(a, a, kMillisecondRate);
   EXPECT_EQ(r.errors_s, (std::vector<double>{0, 0, 0}));
   EXPECT_EQ(r.matched, 4u);
   EXPECT_DOUBLE_EQ(r.within(0.0), 1.0);
@@ -29,7 +29,7 @@ TEST(BoundaryAgreement, IdenticalAlignmentsAgreeExactly) {
 TEST(BoundaryAgreement, ShiftedBoundariesAreMeasuredInSeconds) {
   const auto ref = phones({{Phone::SIL, 0}, {Phone::HH, 100}, {Phone::AY, 160}, {Phone::SIL, 300}}, 400);
   const auto hyp = phones({{Phone::SIL, 0}, {Phone::HH, 110}, {Phone::AY, 130}, {Phone::SIL, 340}}, 400);
-  const BoundaryAgreement r = boundary_agreement(ref, hyp, kRate);
+  const BoundaryAgreement r = boundary_agreement(ref, hyp, kMillisecondRate);
   ASSERT_EQ(r.errors_s.size(), 3u);
   EXPECT_DOUBLE_EQ(r.errors_s[0], 0.010);
   EXPECT_DOUBLE_EQ(r.errors_s[1], 0.030);
@@ -42,7 +42,7 @@ TEST(BoundaryAgreement, IdenticalNeighboursMergeAndAnInsertionOffersTheNearestEd
   // the reference splits a silence in two; the hypothesis inserts a T between HH and AY
   const auto ref = phones({{Phone::SIL, 0}, {Phone::SIL, 50}, {Phone::HH, 100}, {Phone::AY, 160}}, 300);
   const auto hyp = phones({{Phone::SIL, 0}, {Phone::HH, 100}, {Phone::T, 140}, {Phone::AY, 170}}, 300);
-  const BoundaryAgreement r = boundary_agreement(ref, hyp, kRate);
+  const BoundaryAgreement r = boundary_agreement(ref, hyp, kMillisecondRate);
   EXPECT_EQ(r.reference_phones, 3u);
   ASSERT_EQ(r.errors_s.size(), 2u);
   EXPECT_DOUBLE_EQ(r.errors_s[0], 0.0);
@@ -52,7 +52,7 @@ TEST(BoundaryAgreement, IdenticalNeighboursMergeAndAnInsertionOffersTheNearestEd
 TEST(BoundaryAgreement, AWrongPhoneIsCountedAsSubstituted) {
   const auto ref = phones({{Phone::SIL, 0}, {Phone::P, 100}, {Phone::AA, 160}}, 300);
   const auto hyp = phones({{Phone::SIL, 0}, {Phone::B, 100}, {Phone::AA, 160}}, 300);
-  const BoundaryAgreement r = boundary_agreement(ref, hyp, kRate);
+  const BoundaryAgreement r = boundary_agreement(ref, hyp, kMillisecondRate);
   EXPECT_EQ(r.matched, 2u);
   EXPECT_EQ(r.substituted, 1u);
   EXPECT_EQ(r.deleted, 0u);

@@ -19,13 +19,13 @@ std::vector<TargetPhone> targets(const std::vector<std::pair<VisemeClass, std::i
 // Three recordings: sil AA sil, sil P AA sil, sil UW sil; k = 2; each phone's frames hold a
 // constant except the centre frame, which holds its class's value, so the targets must come from
 // the centre frames.
-struct Corpus {
+struct CentreCorpus {
   std::vector<PhoneState> states;
   Eigen::MatrixXf frames;
 };
 
-Corpus corpus() {
-  Corpus c;
+CentreCorpus centre_corpus() {
+  CentreCorpus c;
   const std::vector<std::vector<VisemeClass>> recordings{
       {VisemeClass::kSilence, VisemeClass::kOpenUnrounded, VisemeClass::kSilence},
       {VisemeClass::kSilence, VisemeClass::kBilabial, VisemeClass::kOpenUnrounded, VisemeClass::kSilence},
@@ -47,7 +47,7 @@ Corpus corpus() {
 }
 
 TEST(DominanceBaseline, TargetsAreTheMeanCentreFramesOfEachClass) {
-  const Corpus c = corpus();
+  const CentreCorpus c = centre_corpus();
   const auto t = viseme_targets(PhoneGraph(c.states), c.frames);
   ASSERT_EQ(t.coefficients.rows(), static_cast<Eigen::Index>(kVisemeClassCount));
   EXPECT_EQ(t.phones[static_cast<std::size_t>(VisemeClass::kSilence)], 6u);
@@ -59,7 +59,7 @@ TEST(DominanceBaseline, TargetsAreTheMeanCentreFramesOfEachClass) {
 }
 
 TEST(DominanceBaseline, ALongPhoneReachesItsTarget) {
-  const Corpus c = corpus();
+  const CentreCorpus c = centre_corpus();
   const auto vt = viseme_targets(PhoneGraph(c.states), c.frames);
   const auto phones = targets({{VisemeClass::kSilence, 30}, {VisemeClass::kCloseRounded, 60}, {VisemeClass::kSilence, 30}});
   const Eigen::MatrixXf y = dominance_interpolation(vt, phones);
@@ -72,7 +72,7 @@ TEST(DominanceBaseline, ALongPhoneReachesItsTarget) {
 }
 
 TEST(DominanceBaseline, ContactClassesWinShortPhones) {
-  const Corpus c = corpus();
+  const CentreCorpus c = centre_corpus();
   const auto vt = viseme_targets(PhoneGraph(c.states), c.frames);
   // A 4-frame /p/ between two open vowels: the vowels' dominance cannot pull it open.
   const auto phones = targets({{VisemeClass::kOpenUnrounded, 12}, {VisemeClass::kBilabial, 4},
@@ -90,7 +90,7 @@ TEST(DominanceBaseline, ContactClassesWinShortPhones) {
 }
 
 TEST(DominanceBaseline, RefusesWhatItCannotSay) {
-  const Corpus c = corpus();
+  const CentreCorpus c = centre_corpus();
   const auto vt = viseme_targets(PhoneGraph(c.states), c.frames);
   try {
     (void)dominance_interpolation(vt, targets({{VisemeClass::kSilence, 5}, {VisemeClass::kDental, 5}}));

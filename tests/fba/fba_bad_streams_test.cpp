@@ -18,6 +18,8 @@
 #include <random>
 #include <sstream>
 
+#include "support/file_bytes.hpp"
+
 namespace fapcast {
 namespace {
 
@@ -31,18 +33,8 @@ std::string describe(const FbaDecodeReport& report) {
   return out;
 }
 
-Bytes read_bytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return Bytes(std::istreambuf_iterator<char>(in), {});
-}
-
-// Where the runs begin (each with a plane start code; spec/fba.md §1).
-std::vector<std::size_t> run_offsets(const Bytes& b) {
-  std::vector<std::size_t> out;
-  for (std::size_t i = 0; i + 3 < b.size(); ++i)
-    if (b[i] == 0 && b[i + 1] == 0 && b[i + 2] == 1 && b[i + 3] == 0xBB) out.push_back(i);
-  return out;
-}
+using test::read_bytes;
+using test::run_offsets;
 
 void set_bit(Bytes& b, std::size_t byte, std::size_t bit, bool on) {  // bit counted from byte's MSB
   const std::size_t at = byte * 8 + bit;
@@ -50,11 +42,8 @@ void set_bit(Bytes& b, std::size_t byte, std::size_t bit, bool on) {  // bit cou
   b[at / 8] = static_cast<std::uint8_t>(on ? b[at / 8] | mask : b[at / 8] & ~mask);
 }
 
-FbaEncoderOptions options(FbaProfile profile, int q, int period) {
-  FbaEncoderOptions o;
-  o.profile = profile;
-  o.fap_quant = q;
-  o.intra_period = period;
+FbaEncoderOptions untimed_options(FbaProfile profile, int q, int period) {
+  FbaEncoderOptions o = test::encoder_options(profile, q, period);
   o.time_codes = false;  // the intra header's bit positions below are fixed
   return o;
 }
@@ -85,7 +74,7 @@ std::map<std::string, Bytes> make_bad_streams() {
   FapMask lips;
   for (int n = 3; n <= 18; ++n) lips.set(n);  // group 2 only: the intra header's bit positions are fixed
   const FapSequence seq{"synthetic", {25, 1}, test::smooth_track(rng, lips, 60, 400)};
-  const Bytes good = encode_fba(seq, options(FbaProfile::kStandard, 1, 25));
+  const Bytes good = encode_fba(seq, untimed_options(FbaProfile::kStandard, 1, 25));
   const auto runs = run_offsets(good);  // frames 0, 25, 50
   // Bit positions after run 0's start code (spec/fba.md §3, §4): is_intra 0, fba_object_mask
   // 1-2, is_frame_rate 3, frame_rate 4-11, seconds 12-15, frequency_offset 16, is_time_code 17,
@@ -95,7 +84,7 @@ std::map<std::string, Bytes> make_bad_streams() {
   // The same frames as access units of the frame-at-a-time coder; `edit` may change unit k (and
   // drop it by returning false) before it is appended.
   const auto from_units = [&](auto&& edit) {
-    FbaFrameEncoder encoder(options(FbaProfile::kStandard, 1, 25), {25, 1});
+    FbaFrameEncoder encoder(untimed_options(FbaProfile::kStandard, 1, 25), {25, 1});
     Bytes units = {0, 0, 1, 0xBA, 0x7F};
     for (std::size_t k = 0; k < seq.frames.size(); ++k) {
       FbaAccessUnit unit;
@@ -134,7 +123,7 @@ std::map<std::string, Bytes> make_bad_streams() {
     std::vector<FapFrame> frames(4);
     for (std::size_t k = 0; k < frames.size(); ++k)
       for (int n = 3; n <= 18; ++n) frames[k].set(n, k % 2 == 1 ? 1800 : 0);
-    b = encode_fba({"synthetic", {25, 1}, frames}, options(FbaProfile::kStandard, 0, 100));
+    b = encode_fba({"synthetic", {25, 1}, frames}, untimed_options(FbaProfile::kStandard, 0, 100));
     const auto zp = run_offsets(b);
     int run = 0;
     for (std::size_t at = (zp[0] + 4) * 8; at < (b.size() - 4) * 8; ++at) {
@@ -179,11 +168,11 @@ std::map<std::string, Bytes> make_bad_streams() {
   b.erase(b.begin() + 4);  // the next_start_code() byte between the object and the plane start code
   out["015.bad-stuffing"] = b;
   {
-    Bytes fapcast = encode_fba(seq, options(FbaProfile::kFapcast, 0, 25));
+    Bytes fapcast = encode_fba(seq, untimed_options(FbaProfile::kFapcast, 0, 25));
     const auto fr = run_offsets(fapcast);
     fapcast.erase(fapcast.begin() + static_cast<std::ptrdiff_t>(fr[1]), fapcast.begin() + static_cast<std::ptrdiff_t>(fr[2]));
     out["016.bad-frame-number"] = fapcast;  // a whole run gone: frames 25..49 counted lost
-    Bytes later = encode_fba(seq, options(FbaProfile::kFapcast, 0, 25));
+    Bytes later = encode_fba(seq, untimed_options(FbaProfile::kFapcast, 0, 25));
     later[11] = 2;
     out["017.bad-profile-version"] = later;
   }
@@ -192,7 +181,7 @@ std::map<std::string, Bytes> make_bad_streams() {
     FapFrame intra;
     intra.mask.set(kVisemeFap);
     intra.viseme = {14, 0, 63, false};
-    FbaFrameEncoder encoder(options(FbaProfile::kStandard, 1, 25), {25, 1});
+    FbaFrameEncoder encoder(untimed_options(FbaProfile::kStandard, 1, 25), {25, 1});
     FbaAccessUnit unit;
     encoder.encode(intra, unit);
     Bytes stream = {0, 0, 1, 0xBA, 0x7F};

@@ -16,6 +16,8 @@ namespace {
 
 using test::fba_seed;
 using test::reproduce;
+using test::run_offsets;
+using test::encoder_options;
 
 FapMask lip_jaw_tongue_mask() {
   FapMask m;
@@ -28,14 +30,6 @@ FapMask lip_jaw_tongue_mask() {
 
 FapSequence sequence_of(std::vector<FapFrame> frames, FrameRate rate = {25, 1}) {
   return FapSequence{"", rate, std::move(frames)};
-}
-
-FbaEncoderOptions options(FbaProfile profile, int q, int period = 0) {
-  FbaEncoderOptions o;
-  o.profile = profile;
-  o.fap_quant = q;
-  o.intra_period = period;
-  return o;
 }
 
 // Every value within step/2 of the input, masks and FAP 1/2 fields as sent (FAP 1/2 exactly at
@@ -107,7 +101,7 @@ TEST(FbaFile, RandomRoundTripsInBothProfiles) {
     for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
       SCOPED_TRACE(fba_profile_name(profile));
       FbaEncodeStats stats;
-      const auto bytes = encode_fba(seq, options(profile, q, 1 + static_cast<int>(rng() % 30)), &stats);
+      const auto bytes = encode_fba(seq, encoder_options(profile, q, 1 + static_cast<int>(rng() % 30)), &stats);
       const FbaDecodeResult result = decode_alike(bytes, stats, profile);
       EXPECT_EQ(result.sequence.rate, seq.rate);
       expect_within_half_a_step(seq, result.sequence, q);
@@ -132,7 +126,7 @@ TEST(FbaFile, LosslessAtQuantZero) {
   const FapSequence seq = sequence_of(frames);
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
     FbaEncodeStats stats;
-    EXPECT_EQ(decode_alike(encode_fba(seq, options(profile, 0), &stats), stats, profile).sequence, seq);
+    EXPECT_EQ(decode_alike(encode_fba(seq, encoder_options(profile, 0), &stats), stats, profile).sequence, seq);
   }
   std::uniform_int_distribution<std::int32_t> any(std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max());
   std::vector<FapFrame> wide = test::smooth_track(rng, FapMask::all().set(1, false).set(2, false), 80, 40000);
@@ -141,8 +135,8 @@ TEST(FbaFile, LosslessAtQuantZero) {
   wide[6].set(49, std::numeric_limits<std::int32_t>::max()).set(50, std::numeric_limits<std::int32_t>::min());
   const FapSequence far = sequence_of(wide);
   FbaEncodeStats stats;
-  EXPECT_EQ(decode_alike(encode_fba(far, options(FbaProfile::kFapcast, 0), &stats), stats, FbaProfile::kFapcast).sequence, far);
-  EXPECT_EQ(decode_alike(encode_fba(far, options(FbaProfile::kFapcast, 0, 7), &stats), stats, FbaProfile::kFapcast).sequence, far);
+  EXPECT_EQ(decode_alike(encode_fba(far, encoder_options(FbaProfile::kFapcast, 0), &stats), stats, FbaProfile::kFapcast).sequence, far);
+  EXPECT_EQ(decode_alike(encode_fba(far, encoder_options(FbaProfile::kFapcast, 0, 7), &stats), stats, FbaProfile::kFapcast).sequence, far);
 }
 
 // A value one unit beyond the standard range is refused, naming frame and FAP; never clipped.
@@ -152,7 +146,7 @@ TEST(FbaFile, ValueBeyond1860IsRefusedNotClipped) {
     for (auto& f : frames) f.set(48, 10);
     frames[3].set(48, bad);
     try {
-      encode_fba(sequence_of(frames), options(FbaProfile::kStandard, 0));
+      encode_fba(sequence_of(frames), encoder_options(FbaProfile::kStandard, 0));
       FAIL() << bad << " was accepted";
     } catch (const FbaEncodeError& e) {
       EXPECT_EQ(e.code(), fba_errc::uncodable_value);
@@ -167,14 +161,14 @@ TEST(FbaFile, ValueBeyond1860IsRefusedNotClipped) {
     EXPECT_NE(refusal->find("frame 3, FAP 48 head_pitch"), std::string::npos) << *refusal;
     EXPECT_FALSE(fba_standard_refusal(sequence_of(frames), 1));  // step 170 reaches 316200
     // The fapcast profile codes it.
-    EXPECT_EQ(decode_fba(encode_fba(sequence_of(frames), options(FbaProfile::kFapcast, 0))).sequence, sequence_of(frames));
+    EXPECT_EQ(decode_fba(encode_fba(sequence_of(frames), encoder_options(FbaProfile::kFapcast, 0))).sequence, sequence_of(frames));
   }
 }
 
 TEST(FbaFile, InvalidOptionsAreTheCallersMistake) {
   const FapSequence seq = sequence_of({FapFrame{}.set(3, 1)});
-  for (const FbaEncoderOptions o : {options(FbaProfile::kStandard, -1), options(FbaProfile::kStandard, 32),
-                                    options(FbaProfile::kFapcast, 1, -1)}) {
+  for (const FbaEncoderOptions o : {encoder_options(FbaProfile::kStandard, -1), encoder_options(FbaProfile::kStandard, 32),
+                                    encoder_options(FbaProfile::kFapcast, 1, -1)}) {
     try {
       encode_fba(seq, o);
       FAIL();
@@ -201,7 +195,7 @@ TEST_P(FbaQuantised, WithinHalfAStepWithoutDrift) {
   FapMask mask;
   mask.set(3).set(5).set(48);  // small mask: the test stays fast under ASan
   const FapSequence seq = sequence_of(test::smooth_track(rng, mask, GetParam().frames, 800));
-  const auto result = decode_fba(encode_fba(seq, options(GetParam().profile, q, 250)));
+  const auto result = decode_fba(encode_fba(seq, encoder_options(GetParam().profile, q, 250)));
   ASSERT_TRUE(result.report.ok()) << result.report.errors.front().message();
   expect_within_half_a_step(seq, result.sequence, q);
 }
@@ -211,14 +205,6 @@ INSTANTIATE_TEST_SUITE_P(Quant, FbaQuantised,
                                            QuantCase{FbaProfile::kStandard, 8, 100000}, QuantCase{FbaProfile::kStandard, 31, 10000},
                                            QuantCase{FbaProfile::kFapcast, 1, 30000}, QuantCase{FbaProfile::kFapcast, 4, 10000},
                                            QuantCase{FbaProfile::kFapcast, 31, 10000}));
-
-// The byte offsets of the plane start codes of a file.
-std::vector<std::size_t> run_offsets(const std::vector<std::uint8_t>& b) {
-  std::vector<std::size_t> out;
-  for (std::size_t i = 0; i + 3 < b.size(); ++i)
-    if (b[i] == 0 && b[i + 1] == 0 && b[i + 2] == 1 && b[i + 3] == 0xBB) out.push_back(i);
-  return out;
-}
 
 // The frames of each run: each run decoded alone (the file's opening, the run, the end code).
 std::vector<std::size_t> run_first_frames(const std::vector<std::uint8_t>& b) {
@@ -246,7 +232,7 @@ TEST(FbaFile, ResynchronisesAfterCorruptionAndCountsLostFrames) {
   const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 100, 300));
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
     SCOPED_TRACE(fba_profile_name(profile));
-    const auto good = encode_fba(seq, options(profile, 0, 25));
+    const auto good = encode_fba(seq, encoder_options(profile, 0, 25));
     const auto runs = run_offsets(good);
     ASSERT_EQ(runs.size(), 4u);  // intra planes 0, 25, 50, 75, one run each
     ASSERT_EQ(run_first_frames(good), (std::vector<std::size_t>{0, 25, 50, 75}));
@@ -292,13 +278,13 @@ TEST(FbaFile, ArchivePresetPutsAnIntraPlaneEveryTwentySeconds) {
   EXPECT_EQ(fba_archive_options(FbaProfile::kFapcast, 2, {1, 60}).intra_period, 1);          // one frame a minute
   EXPECT_EQ(fba_archive_options(FbaProfile::kFapcast, 3, {25, 1}).fap_quant, 3);
   EXPECT_EQ(fba_intra_period({}, {25, 1}, true), 250);  // the standard file default: 10 s
-  EXPECT_EQ(fba_intra_period(options(FbaProfile::kFapcast, 0), {25, 1}, true), 500);
+  EXPECT_EQ(fba_intra_period(encoder_options(FbaProfile::kFapcast, 0), {25, 1}, true), 500);
   EXPECT_EQ(fba_intra_period({}, {25, 1}, false), 25);  // frame-at-a-time: 1 s
   std::mt19937_64 rng(fba_seed());
   const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 1200, 600));
   const auto bytes = encode_fba(seq, fba_archive_options(FbaProfile::kStandard, 2, seq.rate));
   ASSERT_EQ(run_first_frames(bytes), (std::vector<std::size_t>{0, 500, 1000}));
-  EXPECT_LT(bytes.size(), encode_fba(seq, options(FbaProfile::kStandard, 2, 25)).size());
+  EXPECT_LT(bytes.size(), encode_fba(seq, encoder_options(FbaProfile::kStandard, 2, 25)).size());
   const auto result = decode_fba(bytes);
   ASSERT_TRUE(result.report.ok());
   expect_within_half_a_step(seq, result.sequence, 2);
@@ -310,7 +296,7 @@ TEST(FbaFile, AccessUnitsBackToBackDecodeAsAFile) {
   const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 60, 300));
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
     SCOPED_TRACE(fba_profile_name(profile));
-    FbaFrameEncoder encoder(options(profile, 0, 25), seq.rate);
+    FbaFrameEncoder encoder(encoder_options(profile, 0, 25), seq.rate);
     std::vector<std::uint8_t> bytes;
     if (profile == FbaProfile::kStandard) {
       bytes = {0, 0, 1, 0xBA, 0x7F};
@@ -351,7 +337,7 @@ TEST(FbaFile, StuffingPreventsStartCodeEmulation) {
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
     SCOPED_TRACE(fba_profile_name(profile));
     FbaEncodeStats stats;
-    const auto bytes = encode_fba(seq, options(profile, 0, 100), &stats);
+    const auto bytes = encode_fba(seq, encoder_options(profile, 0, 100), &stats);
     int run = 0, longest = 0;
     std::size_t start_codes = 0;
     for (std::size_t i = 0; i < bytes.size(); ++i) {
@@ -380,7 +366,7 @@ TEST_P(FbaIntraPeriod, HonouredAndMaskChangesForceIntra) {
   std::mt19937_64 rng(fba_seed());
   auto frames = test::smooth_track(rng, lip_jaw_tongue_mask(), 100, 200);
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
-    const auto plain = encode_fba(sequence_of(frames), options(profile, 1, period));
+    const auto plain = encode_fba(sequence_of(frames), encoder_options(profile, 1, period));
     std::vector<std::size_t> expected;
     for (std::size_t k = 0; k < 100; k += static_cast<std::size_t>(period)) expected.push_back(k);
     EXPECT_EQ(run_first_frames(plain), expected);
@@ -388,7 +374,7 @@ TEST_P(FbaIntraPeriod, HonouredAndMaskChangesForceIntra) {
   // Drop FAP 3 from frame 37 on: frame 37 must be intra, and the period restarts there.
   for (std::size_t k = 37; k < 100; ++k) frames[k].mask.set(3, false), frames[k].values[2] = 0;
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
-    const auto changed = encode_fba(sequence_of(frames), options(profile, 1, period));
+    const auto changed = encode_fba(sequence_of(frames), encoder_options(profile, 1, period));
     const auto planes = run_first_frames(changed);
     EXPECT_NE(std::find(planes.begin(), planes.end(), 37u), planes.end());
     for (std::size_t i = 1; i < planes.size(); ++i) EXPECT_LE(planes[i] - planes[i - 1], static_cast<std::size_t>(period));
@@ -404,7 +390,7 @@ TEST(FbaFile, EmptySequenceIsTheOpeningAndTheEndCode) {
   const auto result = decode_fba(bytes);
   EXPECT_TRUE(result.report.ok());
   EXPECT_TRUE(result.sequence.frames.empty());
-  const auto fapcast = encode_fba(sequence_of({}), options(FbaProfile::kFapcast, 0));
+  const auto fapcast = encode_fba(sequence_of({}), encoder_options(FbaProfile::kFapcast, 0));
   const auto opening = fba_fapcast_opening();
   EXPECT_TRUE(std::equal(opening.begin(), opening.end(), fapcast.begin()));
   EXPECT_EQ(fapcast.size(), opening.size() + 5);  // stuffing, then the end code
@@ -416,7 +402,7 @@ TEST(FbaFile, EmptySequenceIsTheOpeningAndTheEndCode) {
 TEST(FbaFile, StandardOnlyPathRefusesTheFapcastProfileAtItsFirstBytes) {
   std::mt19937_64 rng(fba_seed());
   const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 30, 300));
-  const auto bytes = encode_fba(seq, options(FbaProfile::kFapcast, 0));
+  const auto bytes = encode_fba(seq, encoder_options(FbaProfile::kFapcast, 0));
   EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + 12),
             (std::vector<std::uint8_t>{0, 0, 1, 0xB2, 'f', 'a', 'p', 'c', 'a', 's', 't', 1}));
   for (std::size_t i = 0; i + 3 < bytes.size(); ++i)
@@ -476,8 +462,8 @@ TEST(FbaPrediction, ChosenPredictorsShrinkARhythmicTrackWithinHalfAStep) {
   }
   const FapSequence seq = sequence_of(frames);
   for (const int q : {0, 1, 4}) {
-    const auto chosen = encode_fba(seq, options(FbaProfile::kFapcast, q));
-    FbaEncoderOptions plain_options = options(FbaProfile::kFapcast, q);
+    const auto chosen = encode_fba(seq, encoder_options(FbaProfile::kFapcast, q));
+    FbaEncoderOptions plain_options = encoder_options(FbaProfile::kFapcast, q);
     plain_options.choose_predictors = false;
     const auto plain = encode_fba(seq, plain_options);
     EXPECT_LT(static_cast<double>(chosen.size()), 0.85 * static_cast<double>(plain.size())) << "q " << q;
@@ -497,8 +483,8 @@ TEST(FbaPrediction, RightFromLeftOnASymmetricTrack) {
   for (FapFrame& f : frames)
     for (const int n : {6, 8, 10, 12, 19, 21, 39, 41, 53, 55, 57, 59}) f.set(n + 1, f.value(n));
   const FapSequence seq = sequence_of(frames);
-  const auto symmetric = encode_fba(seq, options(FbaProfile::kFapcast, 0));
-  const auto one_side = encode_fba(sequence_of(test::smooth_track(rng, left, 400, 600)), options(FbaProfile::kFapcast, 0));
+  const auto symmetric = encode_fba(seq, encoder_options(FbaProfile::kFapcast, 0));
+  const auto one_side = encode_fba(sequence_of(test::smooth_track(rng, left, 400, 600)), encoder_options(FbaProfile::kFapcast, 0));
   EXPECT_LT(static_cast<double>(symmetric.size()), 1.15 * static_cast<double>(one_side.size()));
   EXPECT_EQ(decode_fba(symmetric).sequence, seq);
 }

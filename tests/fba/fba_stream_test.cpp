@@ -14,14 +14,7 @@ namespace {
 
 using test::fba_seed;
 using test::reproduce;
-
-FbaEncoderOptions options(FbaProfile profile, int q, int period) {
-  FbaEncoderOptions o;
-  o.profile = profile;
-  o.fap_quant = q;
-  o.intra_period = period;
-  return o;
-}
+using test::encoder_options;
 
 // Encoder and decoder agree on the bit count and the whole coder state after every frame, in
 // both profiles; every value within step/2.
@@ -34,7 +27,7 @@ TEST(FbaStream, EncoderAndDecoderAgreeOnBitsAndStateAfterEveryFrame) {
     auto frames = test::random_track(rng, 200, 1500 / std::max(q, 1) * std::max(q, 1));
     for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
       SCOPED_TRACE(std::string(fba_profile_name(profile)) + " trial " + std::to_string(trial));
-      FbaFrameEncoder encoder(options(profile, q, 1 + static_cast<int>(rng() % 50)), {25, 1});
+      FbaFrameEncoder encoder(encoder_options(profile, q, 1 + static_cast<int>(rng() % 50)), {25, 1});
       FbaFrameDecoder decoder(profile);
       for (std::size_t k = 0; k < frames.size(); ++k) {
         FbaAccessUnit unit;
@@ -61,7 +54,7 @@ TEST(FbaStream, EncoderAndDecoderAgreeOnBitsAndStateAfterEveryFrame) {
 
 TEST(FbaStream, EveryUnitStartsWithThePlaneStartCode) {
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
-    FbaFrameEncoder encoder(options(profile, 1, 5), {25, 1});
+    FbaFrameEncoder encoder(encoder_options(profile, 1, 5), {25, 1});
     for (int k = 0; k < 12; ++k) {
       FbaAccessUnit unit;
       ASSERT_FALSE(encoder.encode(FapFrame{}.set(3, 10 * k), unit));
@@ -79,7 +72,7 @@ TEST(FbaStream, EveryUnitStartsWithThePlaneStartCode) {
 // range (the fapcast profile escapes it instead).
 TEST(FbaStream, IntraForcedOnMaskChangeAndOnRangeExit) {
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
-    FbaFrameEncoder encoder(options(profile, 1, 1000), {25, 1});
+    FbaFrameEncoder encoder(encoder_options(profile, 1, 1000), {25, 1});
     FbaAccessUnit unit;
     ASSERT_FALSE(encoder.encode(FapFrame{}.set(3, 0).set(4, 0), unit));
     EXPECT_TRUE(unit.intra);
@@ -99,7 +92,7 @@ TEST(FbaStream, IntraForcedOnMaskChangeAndOnRangeExit) {
 
 TEST(FbaStream, PredictedUnitsAreRefusedUntilTheNextIntraUnit) {
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
-    FbaFrameEncoder encoder(options(profile, 2, 4), {30000, 1001});
+    FbaFrameEncoder encoder(encoder_options(profile, 2, 4), {30000, 1001});
     std::vector<FbaAccessUnit> units(9);
     for (std::size_t k = 0; k < units.size(); ++k)
       ASSERT_FALSE(encoder.encode(FapFrame{}.set(5, static_cast<std::int32_t>(3 * k)), units[k]));
@@ -125,7 +118,7 @@ TEST(FbaStream, PredictedUnitsAreRefusedUntilTheNextIntraUnit) {
 // A decoder of one profile reads the other's units as garbage or refuses them; reset(profile)
 // switches it (what the RTP receiver does on the payload header's F bit).
 TEST(FbaStream, ResetSwitchesTheProfile) {
-  FbaFrameEncoder fapcast(options(FbaProfile::kFapcast, 0, 25), {25, 1});
+  FbaFrameEncoder fapcast(encoder_options(FbaProfile::kFapcast, 0, 25), {25, 1});
   FbaAccessUnit unit;
   ASSERT_FALSE(fapcast.encode(FapFrame{}.set(3, 100).set(47, 2955), unit));
   FbaFrameDecoder decoder;
@@ -147,10 +140,10 @@ TEST(FbaStream, CallersMistakeIsToldFromABadStream) {
   const std::error_code bad = decoder.decode(junk, out);
   EXPECT_EQ(bad, fba_errc::bad_start_code);
   EXPECT_EQ(bad.category(), fba_category());
-  FbaFrameEncoder encoder(options(FbaProfile::kStandard, 40, 25), {25, 1});
+  FbaFrameEncoder encoder(encoder_options(FbaProfile::kStandard, 40, 25), {25, 1});
   FbaAccessUnit unit;
   EXPECT_EQ(encoder.encode(FapFrame{}, unit), std::errc::invalid_argument);
-  FbaFrameEncoder odd_rate(options(FbaProfile::kStandard, 1, 25), {1000, 3});
+  FbaFrameEncoder odd_rate(encoder_options(FbaProfile::kStandard, 1, 25), {1000, 3});
   EXPECT_EQ(odd_rate.encode(FapFrame{}, unit), fba_errc::uncodable_frame_rate);
 }
 
@@ -158,7 +151,7 @@ TEST(FbaStream, CallersMistakeIsToldFromABadStream) {
 // stuffing is not next_start_code()'s is refused.
 TEST(FbaStream, EveryTruncationIsRefused) {
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
-    FbaFrameEncoder encoder(options(profile, 1, 25), {25, 1});
+    FbaFrameEncoder encoder(encoder_options(profile, 1, 25), {25, 1});
     FbaAccessUnit unit;
     FapFrame frame;
     for (int n = 3; n <= 40; ++n) frame.set(n, n * 7 - 150);

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers the FBA tests share: the seed from FAPCAST_SEED, and smooth random tracks.
 #include "fapcast/codec/fap_frame.hpp"
+#include "fapcast/fba/fba_stream.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,6 +58,23 @@ inline std::vector<FapFrame> random_track(std::mt19937_64& rng, std::size_t fram
                       static_cast<std::uint8_t>(rng() % 7), static_cast<std::uint8_t>(rng() % 64), rng() % 2 == 0,
                       rng() % 2 == 0};
   }
+  return out;
+}
+
+// Encoder options: a profile, fap_quant and intra period (0: one intra frame, at the start).
+inline FbaEncoderOptions encoder_options(FbaProfile profile, int fap_quant, int intra_period = 0) {
+  FbaEncoderOptions o;
+  o.profile = profile;
+  o.fap_quant = fap_quant;
+  o.intra_period = intra_period;
+  return o;
+}
+
+// Where the runs of an .fba file begin: the byte offsets of its plane start codes (spec/fba.md §1).
+inline std::vector<std::size_t> run_offsets(const std::vector<std::uint8_t>& b) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i + 3 < b.size(); ++i)
+    if (b[i] == 0 && b[i + 1] == 0 && b[i + 2] == 1 && b[i + 3] == 0xBB) out.push_back(i);
   return out;
 }
 

@@ -12,21 +12,16 @@
 #include <iterator>
 #include <sstream>
 
+#include "support/file_bytes.hpp"
+
 namespace fapcast {
 namespace {
 
 namespace fs = std::filesystem;
 const fs::path kVectors = fs::path(FAPCAST_TEST_DATA) / "fba" / "vectors";
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-std::vector<std::uint8_t> read_bytes(const fs::path& p) {
-  const std::string s = read_text(p);
-  return {s.begin(), s.end()};
-}
+using test::slurp;
+using test::read_bytes;
 
 struct Vector {
   const char* name;
@@ -40,7 +35,7 @@ TEST_P(FbaVectors, DecodeExactlyToTheirFap) {
   const Vector& v = GetParam();
   const auto bytes = read_bytes(kVectors / (std::string(v.name) + ".fba"));
   const fs::path fap = kVectors / (std::string(v.name) + ".fap");
-  const FapSequence expected = read_fap_text(read_text(fap), fap.string()).sequence;
+  const FapSequence expected = read_fap_text(slurp(fap), fap.string()).sequence;
   for (const bool fixed : {false, true}) {
     SCOPED_TRACE(fixed ? "fixed give-back of 14 raw bits" : "consumed bits given back");
     FbaDecodeOptions options;
@@ -61,7 +56,7 @@ TEST_P(FbaVectors, DecodeExactlyToTheirFap) {
 TEST_P(FbaVectors, FapcastsStandardEncodingOfTheTrackReadsBackAlike) {
   const Vector& v = GetParam();
   const fs::path fap = kVectors / (std::string(v.name) + ".fap");
-  FapSequence track = read_fap_text(read_text(fap), fap.string()).sequence;
+  FapSequence track = read_fap_text(slurp(fap), fap.string()).sequence;
   track.rate = v.rate;
   FbaEncoderOptions o;
   o.fap_quant = v.fap_quant;

@@ -34,7 +34,7 @@ std::size_t spoken_phones(const Speech& s) {
   return n;
 }
 
-std::string arpabet_of(const Speech& s) {
+std::string spoken_arpabet_of(const Speech& s) {
   std::string out;
   for (const TimedPhone& p : s.phones) {
     if (p.phone != Phone::SIL) out += std::string(arpabet(p.phone)) + " ";
@@ -80,7 +80,7 @@ TEST_P(NativeText, SpeaksWithPhonesFromIpaFeatures) {
   options.language = GetParam().language;
   const Speech s = speak(GetParam().text, options);
   expect_timeline(s, GetParam().text);
-  const std::string phones = arpabet_of(s);
+  const std::string phones = spoken_arpabet_of(s);
   for (const Phone p : GetParam().must_have) {
     EXPECT_NE(phones.find(std::string(arpabet(p)) + " "), std::string::npos) << arpabet(p) << " in " << phones;
   }
@@ -105,7 +105,7 @@ TEST(Languages, DefaultVoiceReadsOtherScriptsWithoutAborting) {
     expect_timeline(s, text);
     EXPECT_GE(spoken_phones(s), 3u) << text;
   }
-  const std::string moscow = arpabet_of(speak("Москва"));
+  const std::string moscow = spoken_arpabet_of(speak("Москва"));
   for (const char* p : {"M ", "S ", "K ", "V "}) EXPECT_NE(moscow.find(p), std::string::npos) << p << " in " << moscow;
 }
 
@@ -118,7 +118,7 @@ TEST(Languages, VariantChangesTheVoiceNotThePhones) {
   female.variant = "f2";
   const Speech a = speak("guten Tag", plain);
   const Speech b = speak("guten Tag", female);
-  EXPECT_EQ(arpabet_of(a), arpabet_of(b));
+  EXPECT_EQ(spoken_arpabet_of(a), spoken_arpabet_of(b));
   EXPECT_NE(a.audio.samples, b.audio.samples);
 }
 
@@ -143,7 +143,7 @@ TEST(Languages, EnglishDefaultStillUsesTheMnemonicMapAfterOtherLanguages) {
   ru.language = "ru";
   (void)speak("Москва", ru);
   const Speech after = speak("a pup");
-  EXPECT_EQ(arpabet_of(before), arpabet_of(after));
+  EXPECT_EQ(spoken_arpabet_of(before), spoken_arpabet_of(after));
   ASSERT_EQ(before.events.size(), after.events.size());
   for (std::size_t i = 0; i < before.events.size(); ++i) EXPECT_EQ(before.events[i].espeak, after.events[i].espeak) << i;
 }

@@ -12,13 +12,13 @@
 namespace fapcast {
 namespace {
 
-const std::string kEmu = std::string(FAPCAST_TEST_DATA) + "/speech/emu-ae/";
+const std::string kEmuAe = std::string(FAPCAST_TEST_DATA) + "/speech/emu-ae/";
 
 // A word the dictionary lacks ("beautifull" is no CMUdict entry) is aligned with espeak-ng's
 // pronunciation of it, and keeps its spelling in the output.
 TEST(SpeechAligner, AWordOutsideTheDictionaryGetsEspeakNgsPronunciation) {
   SpeechAligner aligner;
-  const Audio audio = read_wav(kEmu + "msajc003.wav");
+  const Audio audio = read_wav(kEmuAe + "msajc003.wav");
   const SpeechAlignment a =
       aligner.align(audio, parse_transcript("amongst her friends she was considered beautifull", "t.txt"), "msajc003.wav");
   ASSERT_EQ(a.words.size(), 7u);
@@ -39,9 +39,9 @@ TEST(SpeechAligner, AWordOutsideTheDictionaryGetsEspeakNgsPronunciation) {
 
 TEST(SpeechAligner, SegmentsCoverTheRecordingOnItsOwnTimeline) {
   SpeechAligner aligner;
-  const Audio audio = read_wav(kEmu + "msajc010.wav");
+  const Audio audio = read_wav(kEmuAe + "msajc010.wav");
   const SpeechAlignment a =
-      aligner.align(audio, parse_transcript(read_file(kEmu + "msajc010.txt"), "msajc010.txt"), "msajc010.wav");
+      aligner.align(audio, parse_transcript(read_file(kEmuAe + "msajc010.txt"), "msajc010.txt"), "msajc010.wav");
   EXPECT_EQ(a.sample_rate, audio.sample_rate);  // 20 kHz, not the decoder's 16
   EXPECT_EQ(a.samples, audio.instants());
   ASSERT_FALSE(a.segments.empty());
@@ -63,8 +63,8 @@ std::vector<Phone> word_phones(const SpeechAlignment& a, int word) {
 // "considered". The US dictionary has only K AH N S IH D ER D; read in en-gb, espeak-ng adds
 // k@ns'Id3d (its 3 a schwa here), and the aligner takes it.
 TEST(SpeechAligner, ReadInEnGbAWordGetsEspeakNgsNonRhoticVariantWhereItFitsBetter) {
-  const Audio audio = read_wav(kEmu + "msajc003.wav");
-  const Transcript t = parse_transcript(read_file(kEmu + "msajc003.txt"), "msajc003.txt");
+  const Audio audio = read_wav(kEmuAe + "msajc003.wav");
+  const Transcript t = parse_transcript(read_file(kEmuAe + "msajc003.txt"), "msajc003.txt");
   ASSERT_EQ(t.words[5].key, "considered");
   const std::vector<Phone> us = word_phones(SpeechAligner().align(audio, t, "msajc003.wav"), 5);
   const std::vector<Phone> gb = word_phones(SpeechAligner({.language = "en-gb"}).align(audio, t, "msajc003.wav"), 5);
@@ -78,15 +78,15 @@ TEST(SpeechAligner, ReadInEnGbAWordGetsEspeakNgsNonRhoticVariantWhereItFitsBette
 // form AH over CMUdict's HH ER; "he emphasized" has "h i:", and HH IY stays over the weak IY.
 TEST(SpeechAligner, AFunctionWordGetsItsWeakFormWhereTheTalkerSaysIt) {
   using enum Phone;
-  const Audio a003 = read_wav(kEmu + "msajc003.wav");
-  const Transcript t003 = parse_transcript(read_file(kEmu + "msajc003.txt"), "msajc003.txt");
+  const Audio a003 = read_wav(kEmuAe + "msajc003.wav");
+  const Transcript t003 = parse_transcript(read_file(kEmuAe + "msajc003.txt"), "msajc003.txt");
   ASSERT_EQ(t003.words[1].key, "her");
   EXPECT_EQ(word_phones(SpeechAligner().align(a003, t003, "msajc003.wav"), 1), (std::vector<Phone>{AH}));
   EXPECT_EQ(word_phones(SpeechAligner({.weak_forms = false}).align(a003, t003, "msajc003.wav"), 1),
             (std::vector<Phone>{HH, ER}));
 
-  const Audio a015 = read_wav(kEmu + "msajc015.wav");
-  const Transcript t015 = parse_transcript(read_file(kEmu + "msajc015.txt"), "msajc015.txt");
+  const Audio a015 = read_wav(kEmuAe + "msajc015.wav");
+  const Transcript t015 = parse_transcript(read_file(kEmuAe + "msajc015.txt"), "msajc015.txt");
   ASSERT_EQ(t015.words[0].key, "he");
   EXPECT_EQ(word_phones(SpeechAligner().align(a015, t015, "msajc015.wav"), 0), (std::vector<Phone>{HH, IY}));
 }

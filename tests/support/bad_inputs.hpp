@@ -10,15 +10,9 @@
 #include <string>
 #include <vector>
 
-namespace fapcast::test {
+#include "support/file_bytes.hpp"
 
-// The whole file, bytes as they are.
-inline std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+namespace fapcast::test {
 
 // The file names in `dir` ending in `ext` (".bvh"), sorted.
 inline std::vector<std::string> bad_input_names(const std::filesystem::path& dir,

@@ -46,12 +46,12 @@ TEST(FbaTrack, UnitsSitOnTheWavTimelineWithIntraAtThePeriod) {
   }
 }
 
-struct LossCase {
+struct FbaLossCase {
   double loss;
   FrameRate rate;
   std::int64_t clock;
 };
-class FbaOverLossyRtp : public testing::TestWithParam<LossCase> {};
+class FbaOverLossyRtp : public testing::TestWithParam<FbaLossCase> {};
 
 // Through RTP packets with random loss (no sockets): every frame the receiver decodes equals the
 // sent frame at the same position, and frames in gaps hold the frame before them.
@@ -107,9 +107,9 @@ TEST_P(FbaOverLossyRtp, DecodedFramesAreExactAndGapsHold) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Table, FbaOverLossyRtp,
-                         testing::Values(LossCase{0.0, {60, 1}, 48000}, LossCase{0.1, {25, 1}, 48000},
-                                         LossCase{0.3, {30000, 1001}, 44100},
-                                         LossCase{0.3, {24000, 1001}, 48000}));
+                         testing::Values(FbaLossCase{0.0, {60, 1}, 48000}, FbaLossCase{0.1, {25, 1}, 48000},
+                                         FbaLossCase{0.3, {30000, 1001}, 44100},
+                                         FbaLossCase{0.3, {24000, 1001}, 48000}));
 
 TEST(ReceivedTrack, HostileTimestampsCannotGrowTheTrack) {
   const auto seq = smooth_track(50, {60, 1});

@@ -71,12 +71,12 @@ ReceiverOptions fba_options() {
 }
 
 // Feeds datagrams 1 ms apart into a receiver and its track.
-struct Feed {
+struct TrackFeed {
   RtpStreamReceiver rx;
   ReceivedTrack track;
   std::vector<ReceivedUnit> out;
   Clock::time_point now = Clock::time_point{} + std::chrono::hours(1);
-  explicit Feed(ReceiverOptions o = fba_options(), double max_seconds = 3600)
+  explicit TrackFeed(ReceiverOptions o = fba_options(), double max_seconds = 3600)
       : rx(std::move(o)), track(SampleRate{48000}, max_seconds) {}
   std::error_code offer(const Bytes& p) {
     now += 1ms;
@@ -112,7 +112,7 @@ Bytes forged(std::uint32_t ssrc, std::uint16_t seq, std::uint32_t timestamp, Byt
 // receiver on its SSRC and refuse the real stream. Now it never passes probation.
 TEST(HostileReceiver, OneUndecodablePacketCannotTakeTheReceiver) {
   const SentStream s(108, {25, 1}, 10);
-  Feed f;
+  TrackFeed f;
   EXPECT_EQ(f.offer(forged(0xbad, 7, 0, {0x80})), make_error_code(RtpErrc::kUndecodable));
   for (const auto& p : s.packets) EXPECT_FALSE(f.offer(p));
   EXPECT_EQ(f.rx.locked_ssrc(), s.ids.ssrc);
@@ -126,7 +126,7 @@ TEST(HostileReceiver, OneUndecodablePacketCannotTakeTheReceiver) {
 TEST(HostileReceiver, OneDecodablePacketOfAnotherSourceIsNoRun) {
   const SentStream real(108, {25, 1}, 10);
   const SentStream intruder(5, {25, 1}, 1, {0xbad, 1, 0});
-  Feed f;
+  TrackFeed f;
   EXPECT_FALSE(f.offer(intruder.packets[0]));  // decodes: held on probation, not accepted
   for (const auto& p : real.packets) EXPECT_FALSE(f.offer(p));
   EXPECT_EQ(f.rx.locked_ssrc(), real.ids.ssrc);
@@ -138,7 +138,7 @@ TEST(HostileReceiver, OneDecodablePacketOfAnotherSourceIsNoRun) {
 TEST(HostileReceiver, AValidatedSourceIsNeverDisplaced) {
   const SentStream real(60, {25, 1}, 10);
   const SentStream intruder(40, {25, 1}, 1, {0xbad, 1, 0});
-  Feed f;
+  TrackFeed f;
   for (std::size_t i = 0; i < real.packets.size(); ++i) {
     EXPECT_FALSE(f.offer(real.packets[i]));
     if (i >= 10 && i < 50) {
@@ -154,7 +154,7 @@ TEST(HostileReceiver, AValidatedSourceIsNeverDisplaced) {
 TEST(HostileReceiver, ByeReleasesTheSourceAfterTheReorderDelay) {
   const SentStream first(30, {25, 1}, 10);
   const SentStream second(30, {25, 1}, 10, {0x5ec0, 100, 0});
-  Feed f;
+  TrackFeed f;
   for (const auto& p : first.packets) EXPECT_FALSE(f.offer(p));
   Bytes bye;
   pack_sender_report({0xbad, {}, 0, 1, 1}, bye);
@@ -187,7 +187,7 @@ TEST(HostileReceiver, ByeReleasesTheSourceAfterTheReorderDelay) {
 // Probation tolerates reordering: the first packets swapped still start at the first one.
 TEST(HostileReceiver, ProbationPutsSwappedFirstPacketsBackInOrder) {
   const SentStream s(50, {60, 1}, 25);
-  Feed f;
+  TrackFeed f;
   EXPECT_EQ(f.offer(s.packets[1]), make_error_code(RtpErrc::kUndecodable));  // P before intra
   for (std::size_t i = 0; i < s.packets.size(); ++i)
     if (i != 1) {
@@ -201,7 +201,7 @@ TEST(HostileReceiver, ProbationPutsSwappedFirstPacketsBackInOrder) {
 // Unconfirmed by the next packet, it is discarded and counted; the others all land.
 TEST(HostileReceiver, OneTimestampJumpDiscardsOneFrameNotTheRest) {
   const SentStream s(108, {25, 1}, 10);
-  Feed f;
+  TrackFeed f;
   for (std::size_t i = 0; i < s.packets.size(); ++i) {
     if (i == 51) {
       Bytes p = s.packets[i];
@@ -233,7 +233,7 @@ TEST(HostileReceiver, AConfirmedJumpContinuesTheTrack) {
     s.packets[i].clear();
     ASSERT_FALSE(pack_animation_packet(u, i, s.ids, 96, s.packets[i]));
   }
-  Feed f;
+  TrackFeed f;
   for (const auto& p : s.packets) EXPECT_FALSE(f.offer(p));
   EXPECT_EQ(f.finish().frames, s.track.frames);
   EXPECT_EQ(f.track.stats().discontinuities, 1u);
@@ -241,7 +241,7 @@ TEST(HostileReceiver, AConfirmedJumpContinuesTheTrack) {
 }
 
 // The sender's 100 frames with the first intra period lost: frames 25.. in place, 0..24 hold 25.
-void expect_start_held_from_frame_25(Feed& f, const SentStream& s) {
+void expect_start_held_from_frame_25(TrackFeed& f, const SentStream& s) {
   const auto& got = f.finish(100);
   ASSERT_EQ(got.frames.size(), 100u);
   for (std::size_t k = 25; k < 100; ++k) EXPECT_EQ(got.frames[k], s.track.frames[k]) << k;
@@ -255,7 +255,7 @@ void expect_start_held_from_frame_25(Feed& f, const SentStream& s) {
 // frame k.
 TEST(HostileReceiver, ALostStartKeepsEveryFrameInItsPlace) {
   const SentStream s(100, {25, 1}, 25, {0x5eed0001, 65500, 4'294'960'000u}, FbaProfile::kFapcast);
-  Feed f;
+  TrackFeed f;
   for (std::size_t i = 3; i < s.packets.size(); ++i) (void)f.offer(s.packets[i]);  // 0..2 lost
   expect_start_held_from_frame_25(f, s);
 }
@@ -264,7 +264,7 @@ TEST(HostileReceiver, ALostStartKeepsEveryFrameInItsPlace) {
 // at 1.5 s, the frames that started before it) places the first decoded frame instead.
 TEST(HostileReceiver, ALostStandardStartIsPlacedByASenderReport) {
   const SentStream s(100, {25, 1}, 25);
-  Feed f;
+  TrackFeed f;
   for (std::size_t i = 3; i < 40; ++i) (void)f.offer(s.packets[i]);  // 0..2 lost
   Bytes sr;
   pack_sender_report({s.ids.ssrc, {}, s.ids.first_timestamp + 72000, 38, 0}, sr);
@@ -276,7 +276,7 @@ TEST(HostileReceiver, ALostStandardStartIsPlacedByASenderReport) {
 // Lost last frames are held up to the sender's count from its final sender report.
 TEST(HostileReceiver, ALostEndIsHeldUpToTheSendersCount) {
   const SentStream s(100, {25, 1}, 25);
-  Feed f;
+  TrackFeed f;
   for (std::size_t i = 0; i < 93; ++i) EXPECT_FALSE(f.offer(s.packets[i]));
   const auto& got = f.finish(100);
   ASSERT_EQ(got.frames.size(), 100u);
@@ -288,7 +288,7 @@ TEST(HostileReceiver, ALostEndIsHeldUpToTheSendersCount) {
 // stream's own rate: 2 s at 25 fps are 50 frames, and hostile timestamps cannot grow the track.
 TEST(HostileReceiver, MaxSecondsIsFramesOfTheStatedRate) {
   const SentStream s(200, {25, 1}, 1);
-  Feed f(fba_options(), 2.0);
+  TrackFeed f(fba_options(), 2.0);
   for (std::size_t i = 0; i < s.packets.size(); ++i) {
     Bytes p = s.packets[i];
     if (i > 0 && i % 2 == 0) {  // every other timestamp 9 s ahead of the last: hold 225 frames
@@ -308,7 +308,7 @@ TEST(HostileReceiver, MaxSecondsIsFramesOfTheStatedRate) {
 // Junk flood from many SSRCs: probation state stays bounded and the stream still validates.
 TEST(HostileReceiver, AFloodOfSourcesStaysBounded) {
   const SentStream s(100, {25, 1}, 10);
-  Feed f;
+  TrackFeed f;
   std::mt19937_64 rng(test::test_seed());
   for (std::size_t i = 0; i < s.packets.size(); ++i) {
     for (int j = 0; j < 20; ++j) {

@@ -24,7 +24,7 @@ namespace vs = voice_section;
 using fapcast::test::TinyVoice;
 const std::filesystem::path kBad = std::filesystem::path(FAPCAST_TEST_DATA) / "voice" / "bad-voice";
 
-std::string refusal(const std::filesystem::path& file) {
+std::string full_voice_refusal(const std::filesystem::path& file) {
   try {
     (void)Voice::open(file);
   } catch (const InputError& e) {
@@ -67,7 +67,7 @@ TEST(Voice, OpensACompleteVoiceAndHandsOutItsParts) {
 
 // ---- named bad voices: tests/data/voice/bad-voice/bad.NNN.<rule>[.<what>].fapv ----
 
-struct BadVoice {
+struct BadFullVoiceCase {
   std::string name;
   std::function<std::string()> make;
 };
@@ -92,8 +92,8 @@ void reseal(std::string& b, std::size_t index) {
 // Section indices in TinyVoice::bytes() order.
 constexpr std::size_t kProvIndex = 0, kRparIndex = 8, kGrphIndex = 9;
 
-std::vector<BadVoice> bad_voices() {
-  std::vector<BadVoice> out;
+std::vector<BadFullVoiceCase> bad_full_voices() {
+  std::vector<BadFullVoiceCase> out;
   const auto with = [](std::function<void(TinyVoice&)> change) {
     return [change] {
       TinyVoice v;
@@ -142,30 +142,30 @@ std::vector<BadVoice> bad_voices() {
   return out;
 }
 
-std::map<std::string, std::string> golden() { return test::golden_lines(kBad / "EXPECTED.txt"); }
+std::map<std::string, std::string> full_voice_golden() { return test::golden_lines(kBad / "EXPECTED.txt"); }
 
-class BadFullVoice : public ::testing::TestWithParam<BadVoice> {};
+class BadFullVoice : public ::testing::TestWithParam<BadFullVoiceCase> {};
 
 TEST_P(BadFullVoice, IsRefusedWithTheGoldenMessage) {
-  const BadVoice& bad = GetParam();
+  const BadFullVoiceCase& bad = GetParam();
   const std::filesystem::path file = kBad / bad.name;
   if (std::getenv("FAPCAST_REGENERATE") != nullptr) {
     std::filesystem::create_directories(kBad);
     write_file_atomically(file, bad.make());
-    std::ofstream(kBad / "EXPECTED.txt", std::ios::app) << refusal(file).substr(kBad.string().size() + 1) << "\n";
+    std::ofstream(kBad / "EXPECTED.txt", std::ios::app) << full_voice_refusal(file).substr(kBad.string().size() + 1) << "\n";
     return;
   }
   ASSERT_EQ(read_file(file), bad.make()) << bad.name << " is stale: regenerate";
-  const std::string message = refusal(file);
+  const std::string message = full_voice_refusal(file);
   const std::string rule = bad.name.substr(8, bad.name.find('.', 8) - 8);
   EXPECT_NE(message.find(file.string() + ": byte "), std::string::npos) << message;
   EXPECT_NE(message.find(": " + rule + ": "), std::string::npos) << message;
-  const auto expected = golden();
+  const auto expected = full_voice_golden();
   ASSERT_TRUE(expected.count(bad.name)) << "no golden line for " << bad.name;
   EXPECT_EQ(message.substr(kBad.string().size() + 1), expected.at(bad.name));
 }
 
-INSTANTIATE_TEST_SUITE_P(Named, BadFullVoice, ::testing::ValuesIn(bad_voices()), [](const auto& info) {
+INSTANTIATE_TEST_SUITE_P(Named, BadFullVoice, ::testing::ValuesIn(bad_full_voices()), [](const auto& info) {
   std::string n = info.param.name;
   for (char& c : n)
     if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
@@ -181,7 +181,7 @@ TEST(Voice, RefusesTheContainersBadVoices) {
     ++seen;
     const std::string name = entry.path().filename().string();
     const std::string rule = name.substr(8, name.find('.', 8) - 8);
-    EXPECT_NE(refusal(entry.path()).find(": " + rule + ": "), std::string::npos) << name;
+    EXPECT_NE(full_voice_refusal(entry.path()).find(": " + rule + ": "), std::string::npos) << name;
   }
   EXPECT_GE(seen, 29);
 }

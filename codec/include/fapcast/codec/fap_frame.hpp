@@ -35,9 +35,9 @@ struct ExpressionField {
 // Which of FAPs 1..68 a frame carries.
 class FapMask {
  public:
-  bool test(int fap) const { return bits_.test(static_cast<std::size_t>(fap - 1)); }
+  bool test(int fap) const { return bits_.test(fap_slot(fap)); }
   FapMask& set(int fap, bool on = true) {
-    bits_.set(static_cast<std::size_t>(fap - 1), on);
+    bits_.set(fap_slot(fap), on);
     return *this;
   }
   int count() const { return static_cast<int>(bits_.count()); }
@@ -63,10 +63,10 @@ struct FapFrame {
   VisemeField viseme;                            // FAP 1, meaningful when mask.test(1)
   ExpressionField expression;                    // FAP 2, meaningful when mask.test(2)
 
-  std::int32_t value(int fap) const { return values[static_cast<std::size_t>(fap - 1)]; }
+  std::int32_t value(int fap) const { return values[fap_slot(fap)]; }
   // Sets a low-level FAP (3..68) and marks it in the mask.
   FapFrame& set(int fap, std::int32_t v) {
-    values[static_cast<std::size_t>(fap - 1)] = v;
+    values[fap_slot(fap)] = v;
     mask.set(fap);
     return *this;
   }

@@ -6,6 +6,7 @@
 #include "fapcast/codec/fapu.hpp"
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -14,6 +15,8 @@
 namespace fapcast {
 
 inline constexpr int kFapCount = 68;    // FAPs are numbered 1..68
+// FAP n's place in an array over all kFapCount FAPs (values[n - 1]).
+constexpr std::size_t fap_slot(int fap) { return static_cast<std::size_t>(fap - 1); }
 inline constexpr int kGroupCount = 10;  // FAP groups are numbered 1..10
 inline constexpr int kVisemeFap = 1;
 inline constexpr int kExpressionFap = 2;

@@ -368,7 +368,7 @@ std::int64_t FapTextReader::number(std::string_view token, std::uint64_t line, s
 }
 
 std::uint8_t FapTextReader::field(std::string_view token, std::uint64_t line, const char* rule,
-                           const char* name, int max) {
+                                  const char* name, int max) {
   const std::int64_t v = number(token, line, name);
   if (v < 0 || v > max)
     fail(line, rule,

@@ -16,7 +16,6 @@
 #include <iostream>
 #include <map>
 #include <random>
-#include <sstream>
 
 #include "support/file_bytes.hpp"
 

@@ -41,10 +41,11 @@ std::string format_evaluation_table(const EvaluationReport& report, const Evalua
       << "held-out sentences: " << report.utterances.size() << " (seed " << context.seed << "), "
       << report.phones << " phones, " << report.frames << " frames at 60 fps; voice " << context.voice << "\n"
       << "errors: mean |recorded - synthesised| of each curve normalised by its maximum (%, the paper's) "
-         "and in mm; r: correlation; RMS over feature-point positions on the target face\n";
+         "and in mm; r: correlation; jaw: the chin (FP 2.1) below the temples; RMS over feature-point "
+         "positions on the target face\n";
   const std::vector<std::string> header{"system",    "height %",  "width %",  "protr. %",   "height mm",
                                         "width mm",  "protr. mm", "r height", "r width",    "r protr.",
-                                        "lip RMS mm", "all RMS mm", "units/phone"};
+                                        "jaw mm",    "r jaw",     "lip RMS mm", "all RMS mm", "units/phone"};
   std::size_t name_width = header[0].size();
   for (const auto& s : report.systems) name_width = std::max(name_width, s.name.size());
   out << pad_right(header[0], name_width);
@@ -52,11 +53,14 @@ std::string format_evaluation_table(const EvaluationReport& report, const Evalua
   out << "\n";
   for (const auto& s : report.systems) {
     const auto& l = s.score.lips;
+    const bool jaw = s.score.jaw.frames > 0;  // the face has FP 2.1
     const std::vector<std::string> cells{fixed(l.height.mean_error_percent, 2), fixed(l.width.mean_error_percent, 2),
                                          fixed(l.protrusion.mean_error_percent, 2),
                                          fixed(mm(l.height.mean_abs_difference), 3), fixed(mm(l.width.mean_abs_difference), 3),
                                          fixed(mm(l.protrusion.mean_abs_difference), 3), fixed(l.height.correlation, 3),
                                          fixed(l.width.correlation, 3), fixed(l.protrusion.correlation, 3),
+                                         jaw ? fixed(mm(s.score.jaw.mean_abs_difference), 3) : "-",
+                                         jaw ? fixed(s.score.jaw.correlation, 3) : "-",
                                          fixed(s.score.lip_rms_mm, 2), fixed(s.score.all_rms_mm, 2),
                                          s.units_per_phone > 0 ? fixed(s.units_per_phone, 3) : "-"};
     out << pad_right(s.name, name_width);
@@ -74,6 +78,7 @@ nlohmann::json evaluation_json(const EvaluationReport& report, const EvaluationC
                        {"lip_height", agreement_json(s.score.lips.height)},
                        {"lip_width", agreement_json(s.score.lips.width)},
                        {"lip_protrusion", agreement_json(s.score.lips.protrusion)},
+                       {"jaw_opening_chin", s.score.jaw.frames > 0 ? agreement_json(s.score.jaw) : nlohmann::json()},
                        {"lip_fp_rms_mm", s.score.lip_rms_mm},
                        {"all_fp_rms_mm", s.score.all_rms_mm},
                        {"frames", s.score.frames},

@@ -15,6 +15,17 @@ bool is_lip_point(const std::string& label) {
   return false;
 }
 
+// The chin's drop below the temples' midpoint along +y, per frame of `tracks` (frames x 3V).
+void append_jaw(const Eigen::Ref<const Eigen::MatrixXf>& tracks, const EvaluationPoints& points,
+                std::vector<double>& out) {
+  const auto y = [](std::size_t point) { return 3 * static_cast<Eigen::Index>(point) + 1; };
+  const auto left = static_cast<std::size_t>(points.lip_measure[4]), right = static_cast<std::size_t>(points.lip_measure[5]);
+  for (Eigen::Index f = 0; f < tracks.rows(); ++f) {
+    const double temples = 0.5 * (double{tracks(f, y(left))} + double{tracks(f, y(right))});
+    out.push_back(temples - double{tracks(f, y(*points.chin))});
+  }
+}
+
 void check_tracks(const Eigen::MatrixXf& tracks, std::size_t vertices, const char* which) {
   if (static_cast<std::size_t>(tracks.cols()) != 3 * vertices)
     throw std::invalid_argument(std::string("synthesis score: ") + which + " tracks have " +
@@ -42,6 +53,7 @@ EvaluationPoints evaluation_points(std::span<const std::string> labels,
     p.vertices.push_back(vertices[i]);
     p.feature_points.push_back(i);
     if (is_lip_point(labels[i])) p.lip_points.push_back(i);
+    if (labels[i] == "2.1") p.chin = i;
   }
   p.labels.emplace_back("H.temple_l");
   p.vertices.push_back(temple_vertices[0]);
@@ -108,6 +120,10 @@ void SynthesisScorer::add(const Eigen::MatrixXf& recorded, const Eigen::MatrixXf
   const auto b = synthesised.topRows(n);
   recorded_.append(lip_curves(a, points_.lip_measure));
   synthesised_.append(lip_curves(b, points_.lip_measure));
+  if (points_.chin) {
+    append_jaw(a, points_, recorded_jaw_);
+    append_jaw(b, points_, synthesised_jaw_);
+  }
   auto sum_squared = [&](const std::vector<std::size_t>& which) {
     double s = 0;
     for (const std::size_t i : which)
@@ -124,6 +140,7 @@ void SynthesisScorer::add(const Eigen::MatrixXf& recorded, const Eigen::MatrixXf
 SynthesisScore SynthesisScorer::score() const {
   SynthesisScore s;
   s.lips = compare_lip_curves(recorded_, synthesised_);
+  if (!recorded_jaw_.empty()) s.jaw = compare_curves(recorded_jaw_, synthesised_jaw_);
   s.frames = frames_;
   s.utterances = utterances_;
   auto rms_mm = [&](double sum, std::size_t points) {

@@ -15,7 +15,7 @@ using test::file_bytes;
 class C3dRoundTrip : public ::testing::TestWithParam<std::pair<int, int>> {};
 
 TEST_P(C3dRoundTrip, FloatPositionsReadBackExactly) {
-  const std::uint64_t seed = test::test_seed();
+  const std::uint64_t seed = test::test_seed(test::kCorpusSeed);
   SCOPED_TRACE(test::reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   const auto [frames, markers] = GetParam();

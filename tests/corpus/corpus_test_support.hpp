@@ -3,9 +3,9 @@
 // sets (seed from FAPCAST_SEED, printed so a failure can be reproduced).
 #include "fapcast/corpus/alignment.hpp"
 #include "fapcast/corpus/marker_frames.hpp"
+#include "support/test_seed.hpp"
 
 #include <cstdint>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -22,15 +22,8 @@ inline std::string file_bytes(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// FAPCAST_SEED or a fixed default; tests print it with the reproduce command.
-inline std::uint64_t test_seed() {
-  const char* env = std::getenv("FAPCAST_SEED");
-  return env ? std::strtoull(env, nullptr, 10) : 20061001u;
-}
-
-inline std::string reproduce_hint(std::uint64_t seed) {
-  return "reproduce: FAPCAST_SEED=" + std::to_string(seed) + " fapcast_corpus_tests --gtest_filter=<this test>";
-}
+// The default seed of the random corpus-format tests (support/test_seed.hpp).
+inline constexpr std::uint64_t kCorpusSeed = 20061001;
 
 // A random label: ASCII, quotes, IPA, emoji and (for TextGrid) line breaks.
 inline std::string random_label(std::mt19937_64& rng, bool allow_space) {

@@ -46,7 +46,7 @@ TEST(LabFile, ForcedUnitOverridesDetection) {
 class LabRoundTrip : public ::testing::TestWithParam<LabTimeUnit> {};
 
 TEST_P(LabRoundTrip, RandomSegmentsReadBack) {
-  const std::uint64_t seed = test::test_seed();
+  const std::uint64_t seed = test::test_seed(test::kCorpusSeed);
   SCOPED_TRACE(test::reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   for (int round = 0; round < 100; ++round) {

@@ -14,6 +14,7 @@ EvaluationReport report() {
   r.frames = 120;
   SystemReport a{"variable-length", {}, 0.35};
   a.score.lips.height = {4.5, 0.91, 120, 0.000625};  // the scorer's curves are in metres
+  a.score.jaw = {7.5, 0.875, 120, 0.0003125};
   a.score.lip_rms_mm = 1.25;
   a.score.all_rms_mm = 0.75;
   SystemReport b{"dominance", {}, 0.0};
@@ -41,6 +42,10 @@ TEST(SynthesisReport, TableHasOneRowPerSystemAndSaysSynthetic) {
   EXPECT_NE(t.find("reproduce: fapcast eval synth --seed 2"), std::string::npos);
   const auto row = t.substr(t.find("\ndominance"));
   EXPECT_NE(row.find(" -\n"), std::string::npos) << "no units for the dominance model: " << row;
+  EXPECT_NE(t.find("r jaw"), std::string::npos);
+  EXPECT_NE(t.find("0.875"), std::string::npos) << "the jaw's r";
+  EXPECT_NE(t.find("0.312"), std::string::npos) << "the jaw's error in mm";
+  EXPECT_NE(row.find(" -  "), std::string::npos) << "no jaw scored for a face without FP 2.1: " << row;
 
   const auto j = evaluation_json(report(), {"v.fapv", 2, ""});
   EXPECT_TRUE(j["synthetic"].get<bool>());
@@ -48,6 +53,8 @@ TEST(SynthesisReport, TableHasOneRowPerSystemAndSaysSynthetic) {
   EXPECT_DOUBLE_EQ(j["systems"][0]["lip_height"]["error_percent"].get<double>(), 4.5);
   EXPECT_NEAR(j["systems"][0]["lip_height"]["mean_abs_difference_mm"].get<double>(), 0.625, 1e-12);
   EXPECT_DOUBLE_EQ(j["systems"][0]["lip_fp_rms_mm"].get<double>(), 1.25);
+  EXPECT_DOUBLE_EQ(j["systems"][0]["jaw_opening_chin"]["correlation"].get<double>(), 0.875);
+  EXPECT_TRUE(j["systems"][1]["jaw_opening_chin"].is_null());
 }
 
 TEST(SynthesisReport, LipPlotHasThreePanelsAndALinePerSystem) {

@@ -30,6 +30,8 @@ TEST(EvaluationPoints, FindsTheLipsAndTheTemples) {
   EXPECT_EQ(p.vertices.size(), f.vertices.size() + 2);
   EXPECT_EQ(p.feature_points.size(), f.vertices.size());
   EXPECT_EQ(p.lip_points.size(), 16u) << "inner lip 2.2-2.9 and outer lip 8.1-8.8";
+  ASSERT_TRUE(p.chin.has_value());
+  EXPECT_EQ(p.labels[*p.chin], "2.1");
   for (std::size_t i = 0; i < kLipMarkerLabels.size(); ++i)
     EXPECT_EQ(p.labels[static_cast<std::size_t>(p.lip_measure[i])], kLipMarkerLabels[i]);
 
@@ -41,6 +43,11 @@ TEST(EvaluationPoints, FindsTheLipsAndTheTemples) {
   auto twice = f;
   twice.labels[1] = twice.labels[0];
   EXPECT_THROW(evaluation_points(twice.labels, twice.vertices), std::invalid_argument);
+  auto without_chin = f;
+  const auto chin = std::find(without_chin.labels.begin(), without_chin.labels.end(), "2.1") - without_chin.labels.begin();
+  without_chin.labels.erase(without_chin.labels.begin() + chin);
+  without_chin.vertices.erase(without_chin.vertices.begin() + chin);
+  EXPECT_FALSE(evaluation_points(without_chin.labels, without_chin.vertices).chin.has_value());
 }
 
 TEST(VertexTracks, PcaTracksAreTheReconstructedMeshAtTheVertices) {
@@ -84,8 +91,8 @@ TEST(VertexTracks, RbfTracksAreTheMapAtTheVertices) {
 }
 
 // Tracks of a made-up face (a point cloud of the right size), in metres, whose mouth opens and
-// closes: 8.2 and 2.3 move down by up to 2 * amplitude.
-Eigen::MatrixXf talking(const EvaluationPoints& p, int frames, double amplitude_m) {
+// closes: 8.2 and 2.3 move down by up to 2 * amplitude, the chin 2.1 by `jaw` times that.
+Eigen::MatrixXf talking(const EvaluationPoints& p, int frames, double amplitude_m, double jaw = 0.5) {
   Eigen::MatrixXf t(frames, 3 * static_cast<Eigen::Index>(p.vertices.size()));
   for (int n = 0; n < frames; ++n)
     for (std::size_t i = 0; i < p.vertices.size(); ++i) {
@@ -94,6 +101,7 @@ Eigen::MatrixXf talking(const EvaluationPoints& p, int frames, double amplitude_
                         static_cast<float>(0.05 + 0.01 * std::sin(2.3 * a)));
       if (p.labels[i] == "8.2" || p.labels[i] == "2.3")
         x.y() -= static_cast<float>(amplitude_m * (1.0 - std::cos(0.3 * n)));
+      if (p.labels[i] == "2.1") x.y() -= static_cast<float>(jaw * amplitude_m * (1.0 - std::cos(0.3 * n)));
       t.block<1, 3>(n, 3 * static_cast<Eigen::Index>(i)) = x.transpose();
     }
   return t;
@@ -112,6 +120,9 @@ TEST(SynthesisScorer, PerfectAndShiftedSyntheses) {
   EXPECT_NEAR(s.lips.height.correlation, 1.0, 1e-9);
   EXPECT_EQ(s.lip_rms_mm, 0.0);
   EXPECT_EQ(s.all_rms_mm, 0.0);
+  EXPECT_EQ(s.jaw.frames, 60u);
+  EXPECT_NEAR(s.jaw.correlation, 1.0, 1e-9);
+  EXPECT_EQ(s.jaw.mean_abs_difference, 0.0);
 
   // The whole face moved 1 mm forward and 2 frames longer: RMS 1 mm, lips unchanged.
   Eigen::MatrixXf shifted = talking(p, 62, 0.004);
@@ -135,6 +146,41 @@ TEST(SynthesisScorer, PerfectAndShiftedSyntheses) {
   EXPECT_GT(h.lips.height.correlation, 0.8) << "same shape, half the size in one of two utterances";
   EXPECT_GT(h.lip_rms_mm, h.all_rms_mm) << "the error sits on the lips";
   EXPECT_THROW(half.add(recorded, Eigen::MatrixXf(60, 3)), std::invalid_argument);
+}
+
+// The jaw is scored apart from the lips: lips that move as recorded over a chin that does not
+// move score r 0 on the jaw (a constant curve) and 1 on lip height; a chin moving against the
+// recording's scores r -1; one that moves half as far keeps r 1, its error half the chin's travel.
+TEST(SynthesisScorer, ScoresTheJawAtTheChin) {
+  const auto f = feature_points();
+  const auto p = evaluation_points(f.labels, f.vertices);
+  const Eigen::MatrixXf recorded = talking(p, 60, 0.004, 1.0);
+
+  SynthesisScorer still(p);
+  still.add(recorded, talking(p, 60, 0.004, 0.0));
+  const auto s = still.score();
+  EXPECT_NEAR(s.lips.height.correlation, 1.0, 1e-9);
+  EXPECT_EQ(s.jaw.correlation, 0.0);
+  EXPECT_GT(s.jaw.mean_abs_difference, 0.003) << "the recorded chin travels 4 mm on average";
+
+  SynthesisScorer against(p);
+  against.add(recorded, talking(p, 60, 0.004, -1.0));
+  EXPECT_NEAR(against.score().jaw.correlation, -1.0, 1e-6);
+
+  SynthesisScorer half(p);
+  half.add(recorded, talking(p, 60, 0.004, 0.5));
+  const auto h = half.score();
+  EXPECT_NEAR(h.jaw.correlation, 1.0, 1e-6);
+  EXPECT_NEAR(h.jaw.mean_abs_difference, 0.5 * s.jaw.mean_abs_difference, 1e-6);
+
+  auto without_chin = f;
+  const auto chin = std::find(without_chin.labels.begin(), without_chin.labels.end(), "2.1") - without_chin.labels.begin();
+  without_chin.labels.erase(without_chin.labels.begin() + chin);
+  without_chin.vertices.erase(without_chin.vertices.begin() + chin);
+  const auto q = evaluation_points(without_chin.labels, without_chin.vertices);
+  SynthesisScorer no_chin(q);
+  no_chin.add(talking(q, 60, 0.004), talking(q, 60, 0.004));
+  EXPECT_EQ(no_chin.score().jaw.frames, 0u) << "no FP 2.1: the jaw is not scored";
 }
 
 }  // namespace

@@ -18,8 +18,8 @@ class FbaSegments : public testing::TestWithParam<FbaStuffing> {};
 // ends are counted in consumed bits, whatever stuffing (real, or only apparent to a reader that
 // counts on into the look-ahead) falls in the 14 bits given back.
 TEST_P(FbaSegments, SegmentsAndRawFieldsInterleaveEvenWithStuffingInTheLookahead) {
-  const std::uint64_t seed = test::fba_seed();
-  SCOPED_TRACE(test::reproduce(seed, "*FbaSegments.*"));
+  const std::uint64_t seed = test::test_seed(test::kFbaSeed);
+  SCOPED_TRACE(test::reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   int stuffed_in_lookahead = 0;
   for (int trial = 0; trial < 3000; ++trial) {
@@ -103,8 +103,8 @@ TEST(FbaArithmeticCoder, ModelsHalveAtTheTotalLimitAndStayUsable) {
 // 2^30, divisors the totals 1..16383) and beyond: every divisor up to 2^16 at the numerators
 // where a floor changes (k*d - 1, k*d), at both ends of the 32-bit range, and random pairs.
 TEST(ExactReciprocal, DividesExactlyAtEveryFloorStep) {
-  const std::uint64_t seed = test::fba_seed();
-  SCOPED_TRACE(test::reproduce(seed, "ExactReciprocal.*"));
+  const std::uint64_t seed = test::test_seed(test::kFbaSeed);
+  SCOPED_TRACE(test::reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   for (std::uint32_t d = 1; d <= 65536; ++d) {
     const ExactReciprocal r(d);
@@ -150,7 +150,7 @@ TEST(FbaArithmeticCoder, RenormalisationInOneStepMatchesTheShiftByShiftRule) {
   };
   for (std::uint32_t low = 0; low < 65536; low += 61)
     for (std::uint32_t high = low; high < 65536; high += 59) check(low, high);
-  std::mt19937_64 rng(test::fba_seed());
+  std::mt19937_64 rng(test::test_seed(test::kFbaSeed));
   for (int i = 0; i < 200000; ++i) {
     const auto a = static_cast<std::uint32_t>(rng() % 65536), b = static_cast<std::uint32_t>(rng() % 65536);
     const std::uint32_t width = static_cast<std::uint32_t>(rng() % 64);  // narrow intervals: long shift runs

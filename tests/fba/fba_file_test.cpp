@@ -14,8 +14,9 @@
 namespace fapcast {
 namespace {
 
-using test::fba_seed;
-using test::reproduce;
+using test::kFbaSeed;
+using test::reproduce_hint;
+using test::test_seed;
 using test::run_offsets;
 using test::encoder_options;
 
@@ -84,8 +85,8 @@ FbaDecodeResult decode_alike(const std::vector<std::uint8_t>& bytes, const FbaEn
 // and 2 included), rates, quantisers, intra periods, mask changes; both sides end in the same
 // coder state; the standard streams read alike under every reading.
 TEST(FbaFile, RandomRoundTripsInBothProfiles) {
-  const std::uint64_t seed = fba_seed();
-  SCOPED_TRACE(reproduce(seed, "FbaFile.RandomRoundTripsInBothProfiles"));
+  const std::uint64_t seed = test_seed(kFbaSeed);
+  SCOPED_TRACE(reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   std::uint64_t recoded = 0;
   for (int trial = 0; trial < 40; ++trial) {
@@ -114,8 +115,8 @@ TEST(FbaFile, RandomRoundTripsInBothProfiles) {
 // At fap_quant 0 every value inside +/-1860 comes back exactly in the standard syntax, and every
 // int32 value (FAP 47 and head rotations far beyond 1860 included) in the fapcast profile.
 TEST(FbaFile, LosslessAtQuantZero) {
-  const std::uint64_t seed = fba_seed();
-  SCOPED_TRACE(reproduce(seed, "FbaFile.LosslessAtQuantZero"));
+  const std::uint64_t seed = test_seed(kFbaSeed);
+  SCOPED_TRACE(reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> standard(-1860, 1860);
   std::vector<FapFrame> frames(60);
@@ -189,8 +190,8 @@ class FbaQuantised : public ::testing::TestWithParam<QuantCase> {};
 // (The long runs at two quantisers keep the suite fast under ASan.)
 TEST_P(FbaQuantised, WithinHalfAStepWithoutDrift) {
   const int q = GetParam().fap_quant;
-  const std::uint64_t seed = fba_seed() + static_cast<std::uint64_t>(q);
-  SCOPED_TRACE(reproduce(seed - static_cast<std::uint64_t>(q), "Quant/FbaQuantised.*"));
+  const std::uint64_t seed = test_seed(kFbaSeed) + static_cast<std::uint64_t>(q);
+  SCOPED_TRACE(reproduce_hint(seed - static_cast<std::uint64_t>(q)));
   std::mt19937_64 rng(seed);
   FapMask mask;
   mask.set(3).set(5).set(48);  // small mask: the test stays fast under ASan
@@ -228,7 +229,7 @@ std::vector<std::size_t> run_first_frames(const std::vector<std::uint8_t>& b) {
 // fapcast profile: the next intra plane's frame_number counts the frames lost exactly, even when
 // a run vanished without a trace; standard: the planes met are counted (it has no frame numbers).
 TEST(FbaFile, ResynchronisesAfterCorruptionAndCountsLostFrames) {
-  std::mt19937_64 rng(fba_seed());
+  std::mt19937_64 rng(test_seed(kFbaSeed));
   const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 100, 300));
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
     SCOPED_TRACE(fba_profile_name(profile));
@@ -280,7 +281,7 @@ TEST(FbaFile, ArchivePresetPutsAnIntraPlaneEveryTwentySeconds) {
   EXPECT_EQ(fba_intra_period({}, {25, 1}, true), 250);  // the standard file default: 10 s
   EXPECT_EQ(fba_intra_period(encoder_options(FbaProfile::kFapcast, 0), {25, 1}, true), 500);
   EXPECT_EQ(fba_intra_period({}, {25, 1}, false), 25);  // frame-at-a-time: 1 s
-  std::mt19937_64 rng(fba_seed());
+  std::mt19937_64 rng(test_seed(kFbaSeed));
   const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 1200, 600));
   const auto bytes = encode_fba(seq, fba_archive_options(FbaProfile::kStandard, 2, seq.rate));
   ASSERT_EQ(run_first_frames(bytes), (std::vector<std::size_t>{0, 500, 1000}));
@@ -292,7 +293,7 @@ TEST(FbaFile, ArchivePresetPutsAnIntraPlaneEveryTwentySeconds) {
 
 // The frame-at-a-time coder's units, back to back after a file's opening, are a file too.
 TEST(FbaFile, AccessUnitsBackToBackDecodeAsAFile) {
-  std::mt19937_64 rng(fba_seed());
+  std::mt19937_64 rng(test_seed(kFbaSeed));
   const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 60, 300));
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
     SCOPED_TRACE(fba_profile_name(profile));
@@ -363,7 +364,7 @@ class FbaIntraPeriod : public ::testing::TestWithParam<int> {};
 // The file encoder puts an intra plane every intra_period frames, and at every mask change.
 TEST_P(FbaIntraPeriod, HonouredAndMaskChangesForceIntra) {
   const int period = GetParam();
-  std::mt19937_64 rng(fba_seed());
+  std::mt19937_64 rng(test_seed(kFbaSeed));
   auto frames = test::smooth_track(rng, lip_jaw_tongue_mask(), 100, 200);
   for (const FbaProfile profile : {FbaProfile::kStandard, FbaProfile::kFapcast}) {
     const auto plain = encode_fba(sequence_of(frames), encoder_options(profile, 1, period));
@@ -400,7 +401,7 @@ TEST(FbaFile, EmptySequenceIsTheOpeningAndTheEndCode) {
 // The fapcast profile opens with user data, not the object start code: a standard decoder finds
 // no FBA object at all, and fapcast's standard-only path refuses it at byte 0 with the reason.
 TEST(FbaFile, StandardOnlyPathRefusesTheFapcastProfileAtItsFirstBytes) {
-  std::mt19937_64 rng(fba_seed());
+  std::mt19937_64 rng(test_seed(kFbaSeed));
   const FapSequence seq = sequence_of(test::smooth_track(rng, lip_jaw_tongue_mask(), 30, 300));
   const auto bytes = encode_fba(seq, encoder_options(FbaProfile::kFapcast, 0));
   EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + 12),
@@ -423,7 +424,7 @@ TEST(FbaFile, StandardOnlyPathRefusesTheFapcastProfileAtItsFirstBytes) {
 }
 
 TEST(FbaFile, GarbageIsReportedNeverThrown) {
-  std::mt19937_64 rng(fba_seed());
+  std::mt19937_64 rng(test_seed(kFbaSeed));
   for (int trial = 0; trial < 300; ++trial) {
     std::vector<std::uint8_t> bytes(rng() % 200);
     for (auto& b : bytes) b = static_cast<std::uint8_t>(rng() % 4 == 0 ? 0 : rng());
@@ -476,7 +477,7 @@ TEST(FbaPrediction, ChosenPredictorsShrinkARhythmicTrackWithinHalfAStep) {
 // Right-side FAPs predicted from the left: on a symmetric track (left and right equal, as in
 // `say` output) the references halve what the paired FAPs cost, losslessly.
 TEST(FbaPrediction, RightFromLeftOnASymmetricTrack) {
-  std::mt19937_64 rng(fba_seed());
+  std::mt19937_64 rng(test_seed(kFbaSeed));
   FapMask left;
   for (const int n : {6, 8, 10, 12, 19, 21, 39, 41, 53, 55, 57, 59}) left.set(n);
   std::vector<FapFrame> frames = test::smooth_track(rng, left, 400, 600);

@@ -11,8 +11,9 @@
 namespace fapcast {
 namespace {
 
-using test::fba_seed;
-using test::reproduce;
+using test::kFbaSeed;
+using test::reproduce_hint;
+using test::test_seed;
 
 // Ranges persist from intra plane to intra plane; the defaults are set at the first, at its
 // fap_quant, and again whenever FAP 4's I range is 0..0 (the published decoder's rule); viseme
@@ -87,8 +88,8 @@ TEST(FbaPlane, ReadsAlikeFindsWhereDecodersWouldDisagree) {
 // On zero-rich random tracks the standard encoder meets planes it must code otherwise; what it
 // writes then reads alike under both stuffing readings and the published decoder's give-back.
 TEST(FbaPlane, TheEncoderRecodesWhatDecodersWouldReadOtherwise) {
-  const std::uint64_t seed = fba_seed();
-  SCOPED_TRACE(reproduce(seed, "FbaPlane.TheEncoderRecodesWhatDecodersWouldReadOtherwise"));
+  const std::uint64_t seed = test_seed(kFbaSeed);
+  SCOPED_TRACE(reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   std::uint64_t recoded = 0;
   for (int trial = 0; trial < 400 && recoded < 3; ++trial) {

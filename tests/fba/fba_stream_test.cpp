@@ -12,15 +12,16 @@
 namespace fapcast {
 namespace {
 
-using test::fba_seed;
-using test::reproduce;
+using test::kFbaSeed;
+using test::reproduce_hint;
+using test::test_seed;
 using test::encoder_options;
 
 // Encoder and decoder agree on the bit count and the whole coder state after every frame, in
 // both profiles; every value within step/2.
 TEST(FbaStream, EncoderAndDecoderAgreeOnBitsAndStateAfterEveryFrame) {
-  const std::uint64_t seed = fba_seed();
-  SCOPED_TRACE(reproduce(seed, "FbaStream.EncoderAndDecoderAgreeOnBitsAndStateAfterEveryFrame"));
+  const std::uint64_t seed = test_seed(kFbaSeed);
+  SCOPED_TRACE(reproduce_hint(seed));
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 8; ++trial) {
     const int q = static_cast<int>(rng() % 6);

@@ -1,29 +1,20 @@
 #pragma once
-// Helpers the FBA tests share: the seed from FAPCAST_SEED, and smooth random tracks.
+// Helpers the FBA tests share: their default seed, and smooth random tracks.
 #include "fapcast/codec/fap_frame.hpp"
 #include "fapcast/fba/fba_stream.hpp"
+#include "support/test_seed.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace fapcast::test {
 
-// FAPCAST_SEED from the environment, or `fallback`.
-inline std::uint64_t fba_seed(std::uint64_t fallback = 20261122) {
-  const char* env = std::getenv("FAPCAST_SEED");
-  return env ? std::strtoull(env, nullptr, 10) : fallback;
-}
-
-// What to run to see a random failure again.
-inline std::string reproduce(std::uint64_t seed, const std::string& filter) {
-  return "reproduce: FAPCAST_SEED=" + std::to_string(seed) +
-         " build/dev/tests/fapcast_fba_tests --gtest_filter='" + filter + "'";
-}
+// The default seed of the random FBA tests (support/test_seed.hpp).
+inline constexpr std::uint64_t kFbaSeed = 20261122;
 
 // A smooth random walk per masked FAP (a low-passed random walk), values within +/-limit.
 inline std::vector<FapFrame> smooth_track(std::mt19937_64& rng, const FapMask& mask,

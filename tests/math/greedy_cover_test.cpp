@@ -1,20 +1,15 @@
 // Greedy coverage: on random instances every pick adds the most new weight of any candidate
 // (ties to the earliest), and the result covers everything coverable.
 #include "fapcast/math/greedy_cover.hpp"
+#include "support/test_seed.hpp"
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <random>
 #include <set>
 
 namespace fapcast {
 namespace {
-
-unsigned seed_from_env() {
-  const char* s = std::getenv("FAPCAST_SEED");
-  return s != nullptr ? static_cast<unsigned>(std::strtoul(s, nullptr, 10)) : 20060401u;
-}
 
 double gain(const std::vector<std::uint32_t>& c, const std::vector<double>& w, const std::vector<bool>& covered) {
   std::set<std::uint32_t> units(c.begin(), c.end());
@@ -24,9 +19,9 @@ double gain(const std::vector<std::uint32_t>& c, const std::vector<double>& w, c
 }
 
 TEST(GreedyCover, EachPickHasTheLargestGainOnRandomInstances) {
-  const unsigned seed = seed_from_env();
-  SCOPED_TRACE("reproduce with FAPCAST_SEED=" + std::to_string(seed));
-  std::mt19937 rng(seed);
+  const std::uint64_t seed = test::test_seed(20060401);
+  SCOPED_TRACE(test::reproduce_hint(seed));
+  std::mt19937 rng(static_cast<std::mt19937::result_type>(seed));
   for (int instance = 0; instance < 50; ++instance) {
     const std::size_t units = 1 + rng() % 60, count = 1 + rng() % 40;
     std::vector<double> weight(units);

@@ -14,12 +14,6 @@
 namespace fapcast {
 namespace {
 
-std::string reproduce(std::uint64_t seed) {
-  return "reproduce: FAPCAST_SEED=" + std::to_string(seed) +
-         " build/dev/tests/fapcast_pipeline_tests --gtest_filter='" +
-         ::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name() + ".*'";
-}
-
 Eigen::Matrix3d random_rotation(PortableRandom& random) {
   Eigen::Quaterniond q(random.normal(), random.normal(), random.normal(), random.normal());
   return q.normalized().toRotationMatrix();
@@ -35,8 +29,8 @@ const MarkerFrames<Centimetres>& clean_take() {
 }
 
 TEST(RigidFit, RecoversRandomMotionsExactlyAtAnyScale) {
-  const auto seed = test::test_seed();
-  SCOPED_TRACE(reproduce(seed));
+  const auto seed = test::test_seed(test::kTimelineSeed);
+  SCOPED_TRACE(test::reproduce_hint(seed));
   PortableRandom random(seed);
   for (const double scale : {1e-6, 1.0, 1e6}) {
     for (int trial = 0; trial < 50; ++trial) {
@@ -81,8 +75,8 @@ TEST(RigidFit, RefusesTooFewOrCollinearPoints) {
 // = 0.35 mm): the pose error of a fit on 5 rigid markers, seen at the mouth about 15 cm from
 // their centroid, adds about as much again (measured: 1.45-1.55 x).
 TEST(HeadPoseRemoval, RecoversFaceMotionToWithinTheNoise) {
-  const auto seed = test::test_seed();
-  SCOPED_TRACE(reproduce(seed));
+  const auto seed = test::test_seed(test::kTimelineSeed);
+  SCOPED_TRACE(test::reproduce_hint(seed));
   PortableRandom random(seed);
   const MarkerFrames<Centimetres>& clean = clean_take();
   const auto rigid = rigid_marker_rows();
@@ -207,8 +201,8 @@ TEST(GapFill, ReportsLongEdgeAndHopelessGapsWithoutFillingThem) {
 
 // The whole capture chain as record-reference runs it: capture_take, then preprocess_take.
 TEST(Preprocessing, CaptureChainRoundTrip) {
-  const auto seed = test::test_seed();
-  SCOPED_TRACE(reproduce(seed));
+  const auto seed = test::test_seed(test::kTimelineSeed);
+  SCOPED_TRACE(test::reproduce_hint(seed));
   PortableRandom random(seed);
   const MarkerFrames<Centimetres>& clean = clean_take();
   CaptureSettings settings;

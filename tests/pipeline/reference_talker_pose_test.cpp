@@ -6,38 +6,20 @@
 #include "fapcast/capture/head_pose.hpp"
 #include "fapcast/face/marker_map.hpp"
 
-#include <gtest/gtest.h>
+#include "support/reference_takes.hpp"
 
-#include <algorithm>
-#include <cmath>
+#include <gtest/gtest.h>
 
 namespace fapcast {
 namespace {
 
-ScriptItem word(const std::string& text) { return {ScriptSection::kCommonWord, text, {}, "", 0.0}; }
-
-const FaceModel& actor() {
-  static const FaceModel a = reference_actor(ict_face_model(), 7);
-  return a;
-}
-
-// RMS (cm) of the difference between two takes over the frames both have and the samples
-// present in both.
-double rms_difference(const MarkerFrames<Centimetres>& a, const MarkerFrames<Centimetres>& b) {
-  double sum = 0;
-  std::size_t n = 0;
-  for (Eigen::Index k = 0; k < std::min(a.frame_count(), b.frame_count()); ++k)
-    for (Eigen::Index m = 0; m < a.marker_count(); ++m)
-      if (a.present(m, k) && b.present(m, k)) {
-        sum += (a.at(m, k) - b.at(m, k)).squaredNorm();
-        ++n;
-      }
-  return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
-}
+using test::rms_difference;
+using test::script_word;
+using test::test_actor;
 
 TEST(ReferenceTalker, PoseRemovalRecoversTheFaceToWithinTheNoise) {
   PortableRandom random(12);
-  const ReferenceTake take = record_take(word("mushrooms"), "utt0002", actor(), random);
+  const ReferenceTake take = record_take(script_word("mushrooms"), "utt0002", test_actor(), random);
   const auto rigid = rigid_marker_rows();
   ASSERT_GE(rigid.size(), 4u);
   const PoseRemovalResult pose = remove_head_pose(take.captured, rigid, rigid_reference(take.clean, rigid, 0));

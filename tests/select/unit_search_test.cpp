@@ -1,12 +1,12 @@
 // The Viterbi unit search against brute force on small random graphs, and its contracts.
 #include "fapcast/select/unit_search.hpp"
 #include "support/synthetic_voice_graph.hpp"
+#include "support/test_seed.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <functional>
 #include <limits>
 #include <random>
@@ -22,10 +22,8 @@ std::vector<VisemeClass> Vs(std::initializer_list<int> classes) {
   return out;
 }
 
-std::uint64_t test_seed() {
-  const char* s = std::getenv("FAPCAST_SEED");
-  return s ? std::strtoull(s, nullptr, 10) : 20061;
-}
+// The default seed of the random search tests (support/test_seed.hpp).
+constexpr std::uint64_t kSearchSeed = 20061;
 
 // Utterances given as viseme strings; each phone one frame long, PCA frames random.
 struct Toy {
@@ -108,7 +106,7 @@ class UnitSearchBruteForce : public ::testing::TestWithParam<std::tuple<double, 
 
 TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
   const auto [beta, context] = GetParam();
-  const auto seed = test_seed();
+  const auto seed = test::test_seed(kSearchSeed);
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> visemes(0, 2), length(2, 5), count(2, 4), tlen(1, 5);
   int compared = 0;
@@ -138,7 +136,7 @@ TEST_P(UnitSearchBruteForce, FindsTheMinimumCostOnRandomSmallGraphs) {
     }
     ++compared;
     ASSERT_NEAR(r.cost, expected, 1e-4 * (1 + expected))
-        << "trial " << trial << "; reproduce with FAPCAST_SEED=" << seed;
+        << "trial " << trial << "; " << test::reproduce_hint(seed);
     EXPECT_EQ(r.stats.hard_joins, 0u);
     // The path is real: visemes match and units are runs within one recording.
     ASSERT_EQ(r.states.size(), targets.size());
@@ -163,7 +161,7 @@ INSTANTIATE_TEST_SUITE_P(BetasAndContext, UnitSearchBruteForce,
 // The duration term: phones of random lengths, targets of random lengths; the search's cost is
 // the brute-force minimum, and its path's cost written out term by term is that cost.
 TEST(UnitSearch, DurationTermFindsTheMinimumCostOnRandomSmallGraphs) {
-  const auto seed = test_seed();
+  const auto seed = test::test_seed(kSearchSeed);
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> visemes(0, 2), length(2, 5), count(2, 4), tlen(1, 5), frames(1, 9);
   int compared = 0, moved = 0;
@@ -186,7 +184,7 @@ TEST(UnitSearch, DurationTermFindsTheMinimumCostOnRandomSmallGraphs) {
     const double expected = brute_force(g, targets, beta, weight, lengths);
     if (std::isinf(expected)) continue;
     const SearchResult r = unit_search(g, targets, lengths, with_duration(beta, weight));
-    const std::string where = "trial " + std::to_string(trial) + "; reproduce with FAPCAST_SEED=" + std::to_string(seed);
+    const std::string where = "trial " + std::to_string(trial) + "; " + test::reproduce_hint(seed);
     ASSERT_NEAR(r.cost, expected, 1e-9 * (1 + expected)) << where;
     double path = static_cast<double>(r.units.size());
     for (std::size_t t = 0; t < targets.size(); ++t) {
@@ -240,7 +238,7 @@ TEST(UnitSearch, DurationTermRejectsBadLengthsAndWeights) {
 // and spread, with and without caps and hard joins; on every other graph phones and targets have
 // random lengths and the duration term is on.
 TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
-  const auto seed = test_seed();
+  const auto seed = test::test_seed(kSearchSeed);
   std::mt19937_64 rng(seed);
   std::uniform_int_distribution<int> classes(3, 9), k(1, 9), recordings(6, 24), phones(3, 12), tlen(1, 30);
   const std::optional<std::size_t> caps[] = {std::nullopt, 1, 3, 16, 64};
@@ -269,7 +267,7 @@ TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
           const std::string where = "graph " + std::to_string(graph) + " target " + std::to_string(target) +
                                     " beta " + std::to_string(beta) + " cap " + (cap ? std::to_string(*cap) : "none") +
                                     " duration weight " + std::to_string(weight) +
-                                    "; reproduce with FAPCAST_SEED=" + std::to_string(seed);
+                                    "; " + test::reproduce_hint(seed);
           ASSERT_EQ(pruned.cost, reference.cost) << where;
           ASSERT_EQ(pruned.states, reference.states) << where;
           ASSERT_EQ(pruned.units, reference.units) << where;
@@ -289,7 +287,7 @@ TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultToTheBit) {
 // shapes under light and heavy noise, as the synthesis benchmark has them; under heavy noise with
 // the duration term on.
 TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultOnLargeSteps) {
-  std::mt19937_64 rng(test_seed());
+  std::mt19937_64 rng(test::test_seed(kSearchSeed));
   int searches = 0;
   for (float noise : {0.1f, 1.0f}) {
     // Under heavy noise the phones have random lengths and the duration term is on.
@@ -305,7 +303,7 @@ TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultOnLargeSteps) {
       const SearchResult reference = unit_search(*voice.graph, targets, lengths, {0.1, cap, false, weight});
       const SearchResult pruned = unit_search(*voice.graph, targets, lengths, {0.1, cap, true, weight});
       const std::string where = "noise " + std::to_string(noise) + " cap " + (cap ? std::to_string(*cap) : "none") +
-                                "; reproduce with FAPCAST_SEED=" + std::to_string(test_seed());
+                                "; " + test::reproduce_hint(test::test_seed(kSearchSeed));
       ASSERT_EQ(pruned.cost, reference.cost) << where;
       ASSERT_EQ(pruned.states, reference.states) << where;
       ASSERT_EQ(pruned.units, reference.units) << where;
@@ -320,7 +318,7 @@ TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultOnLargeSteps) {
 // they bound: every admissible join of random graphs, at scales from 1e-6 to 1e6 and far from the
 // origin.
 TEST(JoinBound, NeverExceedsTheJoinCost) {
-  std::mt19937_64 rng(test_seed());
+  std::mt19937_64 rng(test::test_seed(kSearchSeed));
   int pairs = 0, tight = 0;
   for (float scale : {1e-6f, 1.0f, 1e6f})
     for (float offset : {0.0f, 1e3f})

@@ -2,19 +2,16 @@
 // Generated FAP sequences for tests and benchmarks (header-only: the benchmarks link no test
 // support library). SYNTHETIC data: random or patterned, not measured from any face.
 #include "fapcast/codec/fap_frame.hpp"
+#include "support/test_seed.hpp"
 
 #include <cstdint>
-#include <cstdlib>
 #include <random>
 #include <string>
 
 namespace fapcast::test {
 
-// The seed for random tests: env FAPCAST_SEED, else a fixed default. Tests print it.
-inline std::uint64_t test_seed() {
-  const char* s = std::getenv("FAPCAST_SEED");
-  return s != nullptr ? std::strtoull(s, nullptr, 10) : 20061201ull;
-}
+// The default seed of the random FAP-sequence tests (support/test_seed.hpp).
+inline constexpr std::uint64_t kFapSequenceSeed = 20061201;
 
 // A random frame: any mask (FAP 1 and 2 with valid fields), values anywhere in int32 with
 // extremes and small values both likely.

@@ -3,24 +3,19 @@
 // articulation (jaw opening, lip rounding, lip spreading) moving smoothly in time drives p source
 // markers and N target vertices through fixed smooth non-linear maps. It is SYNTHETIC test data,
 // not the reference talker: its only job is to give the RBF and PCA code data whose truth is known.
+#include "support/test_seed.hpp"
+
 #include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace fapcast::test {
 
-// The seed of random tests: env FAPCAST_SEED, or a fixed default.
-inline std::uint64_t test_seed() {
-  const char* s = std::getenv("FAPCAST_SEED");
-  return s != nullptr ? std::strtoull(s, nullptr, 10) : 20261122u;
-}
-inline std::string reproduce_hint(std::uint64_t seed) {
-  return "reproduce with FAPCAST_SEED=" + std::to_string(seed);
-}
+// The default seed of the voice-math tests (support/test_seed.hpp).
+inline constexpr std::uint64_t kTalkingMarkerSeed = 20261122;
 
 // 3 x n articulation trajectory in [-1, 1]^3: sums of slow sines with random phases.
 inline Eigen::MatrixXd articulation(Eigen::Index n, std::uint64_t seed) {

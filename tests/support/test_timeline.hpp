@@ -1,12 +1,12 @@
 #pragma once
 // Builds phone timelines for the talker tests: phones with durations in milliseconds, at 22050 Hz.
 #include <cstdint>
-#include <cstdlib>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "fapcast/talker/coarticulation.hpp"
+#include "support/test_seed.hpp"
 
 namespace fapcast::test {
 
@@ -29,10 +29,7 @@ inline double centre_s(const PhoneTimeline& t, std::size_t i) {
   return 0.5 * static_cast<double>(t.phones[i].start_sample + t.phones[i].end_sample) / static_cast<double>(t.sample_rate.hz);
 }
 
-// The random seed for randomised tests: $FAPCAST_SEED, default 20061.
-inline std::uint64_t test_seed() {
-  const char* s = std::getenv("FAPCAST_SEED");
-  return s != nullptr ? std::strtoull(s, nullptr, 10) : 20061u;
-}
+// The default seed of the randomised talker and preprocessing tests (support/test_seed.hpp).
+inline constexpr std::uint64_t kTimelineSeed = 20061;
 
 }  // namespace fapcast::test

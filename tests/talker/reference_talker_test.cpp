@@ -8,11 +8,11 @@
 #include "fapcast/core/synthetic_label.hpp"
 #include "fapcast/corpus/textgrid.hpp"
 
+#include "support/reference_takes.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -20,31 +20,13 @@
 namespace fapcast {
 namespace {
 
-ScriptItem word(const std::string& text) { return {ScriptSection::kCommonWord, text, {}, "", 0.0}; }
-
-const FaceModel& actor() {
-  static const FaceModel a = reference_actor(ict_face_model(), 7);
-  return a;
-}
-
-// RMS (cm) of the difference between two takes over the frames both have and the samples
-// present in both (another seed also draws another speaking rate, so lengths may differ).
-double rms_difference(const MarkerFrames<Centimetres>& a, const MarkerFrames<Centimetres>& b, std::size_t* samples = nullptr) {
-  double sum = 0;
-  std::size_t n = 0;
-  for (Eigen::Index k = 0; k < std::min(a.frame_count(), b.frame_count()); ++k)
-    for (Eigen::Index m = 0; m < a.marker_count(); ++m)
-      if (a.present(m, k) && b.present(m, k)) {
-        sum += (a.at(m, k) - b.at(m, k)).squaredNorm();
-        ++n;
-      }
-  if (samples) *samples = n;
-  return n ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
-}
+using test::rms_difference;
+using test::script_word;
+using test::test_actor;
 
 TEST(ReferenceTalker, C3dAndTextGridReadBackWhatWasRecorded) {
   PortableRandom random(11);
-  const ReferenceTake take = record_take(word("a pup"), "utt0001", actor(), random);
+  const ReferenceTake take = record_take(script_word("a pup"), "utt0001", test_actor(), random);
   ASSERT_GT(take.captured.frame_count(), 20);
 
   const C3dFile c3d = read_c3d(write_c3d(to_millimetres(take.captured), {c3d_synthetic_parameter()}), "utt0001.c3d");
@@ -73,13 +55,13 @@ TEST(ReferenceTalker, C3dAndTextGridReadBackWhatWasRecorded) {
 // calls): tests/cli/corpus_cli_test.cpp records the same corpus twice and compares the bytes.
 TEST(ReferenceTalker, AnotherSeedGivesAnotherTake) {
   PortableRandom a(5), c(6);
-  const ReferenceTake ta = record_take(word("moon"), "x", actor(), a);
-  const ReferenceTake tc = record_take(word("moon"), "x", actor(), c);
+  const ReferenceTake ta = record_take(script_word("moon"), "x", test_actor(), a);
+  const ReferenceTake tc = record_take(script_word("moon"), "x", test_actor(), c);
   EXPECT_GT(rms_difference(ta.captured, tc.captured), 1e-3);
 }
 
 TEST(ReferenceTalker, ActorIsNotTheGenericFace) {
-  const double moved = (actor().neutral_cm - ict_face_model().neutral_cm).colwise().norm().maxCoeff();
+  const double moved = (test_actor().neutral_cm - ict_face_model().neutral_cm).colwise().norm().maxCoeff();
   EXPECT_GT(moved, 0.1) << "cm: the identity mix must change the face";
 }
 
@@ -87,7 +69,7 @@ TEST(ReferenceTalker, CorpusDirectoryHasManifestAndSaysSynthetic) {
   const auto dir = std::filesystem::temp_directory_path() / "fapcast-refcorpus-test";
   std::filesystem::remove_all(dir);
   RecordingScript script;
-  script.items = {word("a bob"), word("strewn"), {ScriptSection::kNonsense, "B AA D", {}, "[[b'A:d]]", 1.0}};
+  script.items = {script_word("a bob"), script_word("strewn"), {ScriptSection::kNonsense, "B AA D", {}, "[[b'A:d]]", 1.0}};
   std::map<std::string, std::string> files;
   const auto summary = record_reference_corpus(script, dir, {.count = 0, .seed = 3, .script = {}},
                                                [&](const std::string& name, std::string_view bytes) {

@@ -67,7 +67,7 @@ class LossyLoopback : public testing::TestWithParam<LossCase> {};
 // start) only an intra unit resumes delivery.
 TEST_P(LossyLoopback, RecoversAtTheNextIntraUnitAndCountsTheLoss) {
   const LossCase& c = GetParam();
-  const std::uint64_t seed = test::test_seed();
+  const std::uint64_t seed = test::test_seed(test::kTransportSeed);
   const int n = 400;
   const int iperiod = 10;
   const auto units = test::synthetic_units(n, iperiod);
@@ -164,7 +164,7 @@ TEST(Loopback, HostileDatagramsDoNotDisturbTheStream) {
   rx.start(400ms);
   asio::io_context io;
   UdpSender attacker(io, rx.receiver.local_endpoint());
-  std::mt19937_64 rng(test::test_seed());
+  std::mt19937_64 rng(test::test_seed(test::kTransportSeed));
   const std::vector<std::vector<std::uint8_t>> hostile{
       {},                                                                  // empty
       {0x80, 96, 0, 1},                                                    // truncated

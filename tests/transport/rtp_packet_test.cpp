@@ -114,7 +114,9 @@ TEST(RtpPacket, RefusesDatagramsLargerThanOnePacket) {
 // Every prefix and every single-byte corruption of a valid packet parses or is refused, and a
 // successful parse never points outside the datagram.
 TEST(RtpPacket, CorruptionsStayInBounds) {
-  std::mt19937_64 rng(test::test_seed());
+  const std::uint64_t seed = test::test_seed(test::kTransportSeed);
+  SCOPED_TRACE(test::reproduce_hint(seed));
+  std::mt19937_64 rng(seed);
   RtpHeader h = with_csrcs(RtpHeader{}, 3);
   Bytes packet;
   ASSERT_FALSE(pack_rtp(h, Bytes(40, 0x55), packet, 4));

@@ -1,9 +1,9 @@
 #pragma once
 // Scoring synthesised visual speech against a recording (Ma et al. 2006, section 4.1), on the
 // target face: lip height, width and protrusion curves (lip_measures.hpp: normalised error and
-// correlation) and feature-point trajectories (RMS distance in mm over the lip feature points and
-// over all of them). Used by `fapcast eval synth` for the variable-length search and its
-// baselines alike.
+// correlation), the jaw's opening at the chin, and feature-point trajectories (RMS distance in mm
+// over the lip feature points and over all of them). Used by `fapcast eval synth` for the
+// variable-length search and its baselines alike.
 #include "fapcast/eval/lip_measures.hpp"
 #include "fapcast/math/rbf_retarget.hpp"
 #include "fapcast/voice/voice_file.hpp"
@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <optional>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -26,6 +27,7 @@ struct EvaluationPoints {
   std::vector<std::size_t> feature_points;    // indices into `vertices`: every feature point
   std::vector<std::size_t> lip_points;        // indices of the lip feature points (2.x inner, 8.x outer)
   std::array<std::int32_t, 6> lip_measure{};  // indices of kLipMarkerLabels, for lip_curves()
+  std::optional<std::size_t> chin;            // index of FP 2.1 (bottom of the chin), when the face has it
 };
 
 // The temple vertices of the ICT-FaceKit topology (H.temple_l, H.temple_r of marker_sites()),
@@ -55,6 +57,9 @@ Eigen::MatrixXf vertex_tracks(const RbfMap& map, const Eigen::MatrixXd& sources,
 
 struct SynthesisScore {
   LipAgreement lips;         // normalised error % and correlation, all utterances as one curve
+  // The jaw's opening: how far the chin (FP 2.1) sits below the temple reference, along the
+  // face's up axis (+y), in metres like the lip curves; frames 0 when the face has no FP 2.1.
+  CurveAgreement jaw;
   double lip_rms_mm = 0;     // RMS distance over the lip feature points and frames
   double all_rms_mm = 0;     // RMS distance over every feature point and frame
   std::size_t frames = 0;    // frames compared
@@ -74,6 +79,7 @@ class SynthesisScorer {
  private:
   EvaluationPoints points_;
   LipCurves recorded_, synthesised_;
+  std::vector<double> recorded_jaw_, synthesised_jaw_;
   double lip_sum_squared_m2_ = 0, all_sum_squared_m2_ = 0;
   std::size_t frames_ = 0, utterances_ = 0;
 };

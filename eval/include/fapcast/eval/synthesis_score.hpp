@@ -11,8 +11,8 @@
 #include <Eigen/Core>
 
 #include <array>
-#include <optional>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>

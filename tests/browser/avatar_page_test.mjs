@@ -5,7 +5,7 @@
 // (the open mouth's cavity) in the mouth's box, projected from the lip landmarks of
 // spec/markers.tsv. Asserts the mouth is open at the vowel and closed at the closure, and that the
 // page's measured audio/face offset stays within one frame. Chromium is driven over the DevTools
-// protocol on a pipe (no port, no npm package).
+// protocol on a pipe (chromium_pipe.mjs: no port, no npm package).
 //
 // node avatar_page_test.mjs --fapcast EXE --chromium EXE --markers spec/markers.tsv --out DIR
 //                           [--picture FILE]   (also write the vowel's screenshot there)
@@ -15,6 +15,7 @@ import fs from 'node:fs';
 import path from 'node:path';
 import readline from 'node:readline';
 import zlib from 'node:zlib';
+import {launchChromium} from './chromium_pipe.mjs';
 
 const TEXT = 'Papa may come home, and Bob made a map.';
 const VOWELS = new Set(['AA', 'AE', 'AH', 'AO', 'AW', 'AY', 'EH', 'ER', 'EY', 'IH', 'IY', 'OW', 'OY', 'UH', 'UW']);
@@ -81,47 +82,16 @@ const base = await new Promise((resolve) => {
 console.log(`server up: ${elapsed()}`);
 if (!/^http:\/\/127\.0\.0\.1:\d+\/?$/.test(base)) abort(`fapcast serve's first line is not its URL: ${base}`);
 
-// --- Chromium, DevTools protocol over fds 3 (to it) and 4 (from it), NUL-separated JSON.
-const chrome = spawn(args.chromium, [
-  '--headless=new', '--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--disable-gpu-sandbox',
-  '--no-first-run', '--disable-background-networking', '--disable-component-update', '--disable-sync',
-  '--disable-background-timer-throttling', '--disable-renderer-backgrounding', '--autoplay-policy=no-user-gesture-required',
-  '--user-data-dir=' + path.join(args.out, 'profile'), '--window-size=480,480', '--remote-debugging-pipe', 'about:blank',
-], {stdio: ['ignore', 'ignore', fs.openSync(path.join(args.out, 'chromium.log'), 'w'), 'pipe', 'pipe']});
-children.push(chrome);
-let nextId = 0, inbox = Buffer.alloc(0);
-const pending = new Map(), pageLog = [];
-chrome.stdio[4].on('data', (chunk) => {
-  inbox = Buffer.concat([inbox, chunk]);
-  for (let end; (end = inbox.indexOf(0)) >= 0; inbox = inbox.subarray(end + 1)) {
-    const m = JSON.parse(inbox.subarray(0, end).toString('utf8'));
-    if (m.id !== undefined && pending.has(m.id)) {
-      const {resolve, reject, method} = pending.get(m.id);
-      pending.delete(m.id);
-      m.error ? reject(new Error(method + ': ' + m.error.message)) : resolve(m.result);
-    } else if (m.method === 'Runtime.consoleAPICalled') {
-      pageLog.push(m.params.args.map((a) => a.value ?? a.description).join(' '));
-    } else if (m.method === 'Runtime.exceptionThrown') {
-      pageLog.push('exception: ' + (m.params.exceptionDetails.exception?.description ?? m.params.exceptionDetails.text));
-    }
-  }
+// --- Chromium over the DevTools protocol (chromium_pipe.mjs).
+const browser = launchChromium({
+  executable: args.chromium, profile: path.join(args.out, 'profile'), log: path.join(args.out, 'chromium.log'),
+  flags: ['--autoplay-policy=no-user-gesture-required'],
+  onExit: (status) => { if (!stopping) abort(`chromium exited (${status}): see ${args.out}/chromium.log`); },
 });
-chrome.on('exit', (code, signal) => { if (!stopping) abort(`chromium exited (${code ?? signal}): see ${args.out}/chromium.log`); });
-function cdp(method, params = {}, sessionId = undefined) {
-  return new Promise((resolve, reject) => {
-    const id = ++nextId;
-    pending.set(id, {resolve, reject, method});
-    chrome.stdio[3].write(JSON.stringify({id, method, params, sessionId}) + '\0');
-  });
-}
-const {targetId} = await cdp('Target.createTarget', {url: 'about:blank'});
-const {sessionId} = await cdp('Target.attachToTarget', {targetId, flatten: true});
-const page = (method, params) => cdp(method, params, sessionId);
-async function evaluate(expression) {
-  const r = await page('Runtime.evaluate', {expression, returnByValue: true, awaitPromise: true});
-  if (r.exceptionDetails) throw new Error(`${expression}: ${r.exceptionDetails.exception?.description ?? r.exceptionDetails.text}`);
-  return r.result.value;
-}
+children.push(browser.process);
+const pageLog = browser.pageLog;
+const {call: page, evaluate} = await browser.openPage();
+
 async function waitFor(expression, what, ms = 20000) {
   for (const until = Date.now() + ms; Date.now() < until;) {
     const v = await evaluate(expression);
@@ -134,7 +104,6 @@ async function waitFor(expression, what, ms = 20000) {
         JSON.stringify(await evaluate('window.fapcastStats')));
 }
 
-await page('Runtime.enable');
 await page('Emulation.setDeviceMetricsOverride', {width: 480, height: 480, deviceScaleFactor: 1, mobile: false});
 await page('Page.navigate', {url: `${base.replace(/\/$/, '')}/?channel=browser-test&token=${token}`});
 await waitFor(`window.fapcastStats && fapcastStats.state === 'ready'`, 'face loaded and live stream open');
@@ -209,7 +178,7 @@ fs.writeFileSync(path.join(args.out, 'result.json'), JSON.stringify({shots, stat
 
 // --- Clean shutdown: the server exits 0 on SIGTERM.
 stopping = true;
-chrome.kill('SIGTERM');
+browser.process.kill('SIGTERM');
 server.kill('SIGTERM');
 const status = await new Promise((resolve) => server.exitCode !== null ? resolve(server.exitCode) : server.once('exit', (code) => resolve(code)));
 check(status === 0, `fapcast serve exits 0 on SIGTERM (${status})`);

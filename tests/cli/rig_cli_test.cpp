@@ -207,28 +207,22 @@ TEST_F(RigCli, AvatarSpeaksInThreeJsAndChromium) {
   fs::copy_file(kViewer + "/avatar_frames.html", www + "/avatar_frames.html");
   fs::create_directory_symlink(kViewer + "/node_modules", www + "/node_modules");
   fs::copy_file(out("avatar.glb"), www + "/avatar.glb");
+  // tests/browser/page_result.mjs drives Chromium over the DevTools protocol and waits in real time
+  // for the page's result (Chromium's --virtual-time-budget ran out before the loader's callback
+  // on a loaded machine, and --dump-dom then printed the page without it).
   const std::string page_command =
       "(cd " + q(www) + " && (python3 -u -m http.server 0 --bind 127.0.0.1 > http.log 2>&1 & echo $! > http.pid) && "
       "for i in $(seq 50); do grep -q 'port' http.log && break; sleep 0.1; done && "
       "port=$(sed -n 's/.* port \\([0-9]*\\).*/\\1/p' http.log | head -1) && " +
-      q(FAPCAST_CHROMIUM) + " --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader "
-      "--disable-gpu-sandbox --no-first-run --disable-background-networking --disable-component-update --disable-sync "
-      "--user-data-dir=" + q(www + "/profile") + " --window-size=1600,400 --virtual-time-budget=30000 --dump-dom "
-      "\"http://127.0.0.1:$port/avatar_frames.html?glb=/avatar.glb&size=100&times=" + vowel_frames + "," + pbm_frames +
-      "\" 2>chromium.log; status=$?; kill $(cat http.pid); exit $status)";
-  // Headless Chromium's virtual time can run out before the loader's callback on a loaded machine
-  // (the page is dumped with its result still empty): up to three tries, each a fresh browser.
-  CommandResult page;
-  for (int attempt = 1; attempt <= 3; ++attempt) {
-    fs::remove_all(www + "/profile");
-    page = run_command(page_command);
-    ASSERT_EQ(page.exit_code, 0) << page.err;
-    if (page.out.find("{\"times\"") != std::string::npos || page.out.find("{\"error\"") != std::string::npos) break;
-    std::cout << "three.js page: no result in try " << attempt << "\n";
-  }
-  const auto from = page.out.find("{\"times\""), to = page.out.find("</pre>", from);
-  ASSERT_NE(from, std::string::npos) << page_command << "\n" << page.out.substr(0, 1500);
-  const auto dark = nlohmann::json::parse(page.out.substr(from, to - from))["dark"];
+      q(FAPCAST_NODE) + " " + q(std::string(FAPCAST_SOURCE_DIR) + "/tests/browser/page_result.mjs") +
+      " --chromium " + q(FAPCAST_CHROMIUM) + " --out " + q(www + "/browser") + " --window 1600,400 --seconds 150 "
+      "--url \"http://127.0.0.1:$port/avatar_frames.html?glb=/avatar.glb&size=100&times=" + vowel_frames + "," + pbm_frames +
+      "\"; status=$?; kill $(cat http.pid); exit $status)";
+  const CommandResult page = run_command(page_command);
+  ASSERT_EQ(page.exit_code, 0) << page_command << "\n" << page.err;
+  const auto result = nlohmann::json::parse(page.out);
+  ASSERT_TRUE(result.contains("dark")) << "the page's result: " << page.out;
+  const auto dark = result["dark"];
   ASSERT_EQ(dark.size(), static_cast<std::size_t>(vowels + closures));
   double open = 0, shut = 0;
   for (int i = 0; i < vowels; ++i) open += dark[i].get<double>() / vowels;

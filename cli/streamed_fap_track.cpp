@@ -34,6 +34,7 @@ StreamedFapTrack::StreamedFapTrack(const SynthesisArgs& args, SampleRate sample_
       sample_rate_(sample_rate),
       source_(std::move(source)),
       voice_(open_synthesis_voice(args)),
+      jaw_guide_(jaw_guide_for(voice_, args.options)),
       speech_(speech_basis(voice_, args.expression)),
       basis_(face_basis(speech_, voice_, synthesis_voice_name(args))),
       animation_(animation_options(args, std::move(name))),
@@ -122,7 +123,8 @@ void StreamedFapTrack::synthesize_piece(std::span<const TimedPhone> phones, std:
                            : (timeline.phones.back().first_frame + timeline.phones.back().end_frame) / 2;
   phones_ += targets - (pieces_ > 0 && targets > 0 ? 1 : 0);  // the pause it starts in was counted
   dropped_ += timeline.dropped;
-  SynthesizedTrack track = synthesize(voice_.graph(), voice_.frame_coefficients(), std::move(timeline), args_.options);
+  SynthesizedTrack track = synthesize(voice_.graph(), voice_.frame_coefficients(), std::move(timeline), args_.options,
+                                      jaw_guide_ ? &*jaw_guide_ : nullptr);
   units_ += track.search.units.size();
   substituted_ += track.substituted;
   ++pieces_;

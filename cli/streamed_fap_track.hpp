@@ -58,6 +58,7 @@ class StreamedFapTrack {
   SampleRate sample_rate_;
   std::string source_;
   Voice voice_;
+  std::optional<JawGuide> jaw_guide_;  // with the jaw term on
   SpeechBasis speech_;
   FeaturePointBasis basis_;
   AnimationOptions animation_;

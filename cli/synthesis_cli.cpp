@@ -37,6 +37,14 @@ void add_synthesis_options(CLI::App& cmd, SynthesisOptions& options) {
                  "went on in another viseme class (>= 0)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
+  cmd.add_option("--jaw-weight", options.search.jaw_weight,
+                 "Weight of the jaw term in the unit search's cost: each unit's recorded jaw against the jaw its "
+                 "phones want in context (>= 0)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd.add_option("--jaw-cutoff", options.jaw_cutoff_hz, "How fast the wanted jaw may move (Hz, low-pass)")
+      ->check(CLI::Range(0.5, 30.0))
+      ->capture_default_str();
   cmd.add_flag_function(
       "--boundary-joins", [&options](std::int64_t) { options.concatenation.join_mid_phone = false; },
       options.concatenation.join_mid_phone
@@ -54,6 +62,8 @@ std::string synthesis_options_text(const SynthesisOptions& options) {
     text << " --duration-weight " << options.search.duration_weight;
   if (options.search.context_weight != shipped.search.context_weight)
     text << " --context-weight " << options.search.context_weight;
+  if (options.search.jaw_weight != shipped.search.jaw_weight) text << " --jaw-weight " << options.search.jaw_weight;
+  if (options.jaw_cutoff_hz != shipped.jaw_cutoff_hz) text << " --jaw-cutoff " << options.jaw_cutoff_hz;
   if (options.concatenation.join_mid_phone != shipped.concatenation.join_mid_phone && !options.concatenation.join_mid_phone)
     text << " --boundary-joins";
   return text.str();
@@ -201,8 +211,9 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
   const SpeechBasis speech = speech_basis(voice, args.expression);
   const SynthesisOptions& options = args.options;
   const auto start = std::chrono::steady_clock::now();
-  SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones,
-                                                    sample_rate, audio_samples, options, source);
+  const auto jaw_guide = jaw_guide_for(voice, options);
+  SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones, sample_rate, audio_samples,
+                                      options, source, jaw_guide ? &*jaw_guide : nullptr);
   std::size_t frames = 0;
   int fps = args.fps;
   double seconds = 0;

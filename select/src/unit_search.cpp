@@ -13,29 +13,40 @@ namespace {
 
 constexpr std::uint32_t kNoBack = std::numeric_limits<std::uint32_t>::max();
 
-// The duration term of SearchOptions: weight * ln^2(frames of state j / frames of target t).
-// A state's part depends only on its frame count, so ln n is tabled by count as counts appear.
-class DurationTerm {
+// The target terms of SearchOptions, what state j costs as target phone t whatever came before:
+// the duration term, weight * ln^2(frames of state j / frames of target t) (a state's part depends
+// only on its frame count, so ln n is tabled by count as counts appear), and the jaw term,
+// weight * (recorded jaw of j - wanted jaw of t)^2.
+class TargetTerm {
  public:
-  DurationTerm(const PhoneGraph& graph, std::span<const std::int64_t> target_frames, double weight)
-      : graph_(graph), weight_(target_frames.empty() ? 0.0 : weight) {
+  TargetTerm(const PhoneGraph& graph, const SearchTargets& targets, const SearchOptions& options)
+      : graph_(graph), weight_(targets.frames.empty() ? 0.0 : options.duration_weight),
+        jaw_weight_(targets.jaw.empty() ? 0.0 : options.jaw_weight), state_jaw_(targets.state_jaw),
+        jaw_(targets.jaw) {
     if (weight_ == 0.0) return;
-    log_target_.reserve(target_frames.size());
-    for (std::size_t t = 0; t < target_frames.size(); ++t) {
-      if (target_frames[t] < 1)
+    log_target_.reserve(targets.frames.size());
+    for (std::size_t t = 0; t < targets.frames.size(); ++t) {
+      if (targets.frames[t] < 1)
         throw std::invalid_argument("unit search: target phone " + std::to_string(t) + " lasts " +
-                                    std::to_string(target_frames[t]) + " frames (the duration term needs >= 1)");
-      log_target_.push_back(std::log(static_cast<double>(target_frames[t])));
+                                    std::to_string(targets.frames[t]) + " frames (the duration term needs >= 1)");
+      log_target_.push_back(std::log(static_cast<double>(targets.frames[t])));
     }
   }
 
-  bool on() const { return weight_ != 0.0; }
+  bool on() const { return weight_ != 0.0 || jaw_weight_ != 0.0; }
 
-  // What state j costs as target phone t (0 when the term is off).
+  // What state j costs as target phone t (0 when the terms are off).
   double operator()(StateId j, std::size_t t) {
-    if (weight_ == 0.0) return 0.0;
-    const double d = log_count(graph_.state(j).frames.count) - log_target_[t];
-    return weight_ * d * d;
+    double cost = 0.0;
+    if (weight_ != 0.0) {
+      const double d = log_count(graph_.state(j).frames.count) - log_target_[t];
+      cost += weight_ * d * d;
+    }
+    if (jaw_weight_ != 0.0) {
+      const double d = static_cast<double>(state_jaw_[j]) - static_cast<double>(jaw_[t]);
+      cost += jaw_weight_ * d * d;
+    }
+    return cost;
   }
 
  private:
@@ -47,6 +58,9 @@ class DurationTerm {
 
   const PhoneGraph& graph_;
   double weight_;
+  double jaw_weight_;
+  std::span<const float> state_jaw_;
+  std::span<const float> jaw_;
   std::vector<double> log_target_;  // ln n_t per target
   std::vector<double> log_of_;      // ln n by count n
 };
@@ -197,7 +211,7 @@ struct JoinScratch {
   std::vector<std::int16_t> sketch_buffer;  // where those are made until the class is tabled
   std::vector<double> floor;           // per target
   std::vector<double> lead_cost;       // per target: its join from the predecessor of least key
-  std::vector<double> duration;        // per target: its duration term at this step
+  std::vector<double> duration;        // per target: its target terms (duration, jaw) at this step
 };
 
 // A join's predecessor: the cheapest (cost, state), as `better` orders them.
@@ -236,9 +250,9 @@ void join_with_width(Eigen::Index width, Loop&& loop) {
 double clearly_above(double cost) { return cost + 1e-12 * (1.0 + std::abs(cost)); }
 
 // Offers every state in `targets` as a join from its best predecessor, at 1 + beta * C(i, j),
-// plus the entry's duration term at target phone t. The reference: every pair evaluated.
+// plus the entry's target terms at target phone t. The reference: every pair evaluated.
 void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
-                      std::span<const StateId> targets, double beta, DurationTerm& duration, std::size_t t,
+                      std::span<const StateId> targets, double beta, TargetTerm& target_cost, std::size_t t,
                       StepBuilder& step) {
   const auto& f = graph.join_features();
   const auto dims = f.entry.cols();
@@ -248,7 +262,7 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
     for (std::uint32_t a = 0; a < prev.size(); ++a)
       best.consider(prev[a].cost + 1.0 + beta * join_cost(f.entry.row(j).data(), f.exit.row(prev[a].state).data(), dims),
                     a, prev[a].state);
-    step.join(b, j, best.cost + duration(j, t), best.back);
+    step.join(b, j, best.cost + target_cost(j, t), best.back);
   }
 }
 
@@ -270,7 +284,7 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
 // after a few. Without the bound, key_n = base_n and floor_j = 0 (C >= 0). A predecessor read is
 // passed over when the sketch bound (join_sketch.hpp) of its join exceeds the best so far.
 //
-// The duration term d_j of an entry does not depend on the predecessor: the best predecessor is
+// The target terms d_j of an entry (duration, jaw) do not depend on the predecessor: the best predecessor is
 // chosen on the join's cost alone and d_j is added to what is offered (as the reference does), so
 // the cap's limit L bounds the join's own cost by L - d_j (loosened by rounding: a join offered in
 // excess is dropped by the cap as the reference drops it; one left out never could have survived).
@@ -281,7 +295,7 @@ void offer_every_join(const PhoneGraph& graph, std::span<const Active> prev,
 // only those that some target can reach being sorted.
 void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
                         std::span<const StateId> targets, std::optional<Diviseme> diviseme, double beta,
-                        DurationTerm& duration, std::size_t t, CapLimit& cap, StepBuilder& step,
+                        TargetTerm& target_cost, std::size_t t, CapLimit& cap, StepBuilder& step,
                         JoinScratch& scratch) {
   const auto& f = graph.join_features();
   const auto dims = f.entry.cols();
@@ -349,12 +363,12 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
   });
   auto& dur = scratch.duration;
   dur.assign(targets.size(), 0.0);
-  if (duration.on())
-    for (std::size_t b = 0; b < targets.size(); ++b) dur[b] = duration(targets[b], t);
+  if (target_cost.on())
+    for (std::size_t b = 0; b < targets.size(); ++b) dur[b] = target_cost(targets[b], t);
   for (std::size_t b = 0; b < targets.size(); ++b)
     if (!step.has_target(b)) cap.add(lead_cost[b] + dur[b]);  // a continuation's cost is in already
   const double limit = cap.limit();
-  // What target b's join itself may cost to be kept (its duration term comes on top).
+  // What target b's join itself may cost to be kept (its target terms come on top).
   const auto join_limit = [&](std::size_t b) { return std::isinf(limit) ? limit : clearly_above(limit - dur[b]); };
   // The others in ascending key (ties in any order: a choice never depends on reading order, see
   // Choice), as far as any target could read: its best starts at most at its lead cost.
@@ -403,7 +417,7 @@ void offer_pruned_joins(const PhoneGraph& graph, std::span<const Active> prev,
 // Offers the joins into `targets` (the entries of `diviseme` when set, else any states).
 // With beta = 0 (or no features) C drops out and the cheapest active wins every join.
 void offer_joins(const PhoneGraph& graph, std::span<const Active> prev, std::span<const StateId> targets,
-                 std::optional<Diviseme> diviseme, const SearchOptions& options, DurationTerm& duration, std::size_t t,
+                 std::optional<Diviseme> diviseme, const SearchOptions& options, TargetTerm& target_cost, std::size_t t,
                  CapLimit& cap, StepBuilder& step, JoinScratch& scratch) {
   if (targets.empty() || prev.empty()) return;
   step.begin_joins(targets);
@@ -411,11 +425,11 @@ void offer_joins(const PhoneGraph& graph, std::span<const Active> prev, std::spa
     const auto best = std::min_element(prev.begin(), prev.end(), better);
     const auto back = static_cast<std::uint32_t>(best - prev.begin());
     for (std::size_t b = 0; b < targets.size(); ++b)
-      step.join(b, targets[b], best->cost + 1.0 + duration(targets[b], t), back);
+      step.join(b, targets[b], best->cost + 1.0 + target_cost(targets[b], t), back);
     return;
   }
-  if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, duration, t, step);
-  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, duration, t, cap, step, scratch);
+  if (!options.prune_joins) return offer_every_join(graph, prev, targets, options.beta, target_cost, t, step);
+  offer_pruned_joins(graph, prev, targets, diviseme, options.beta, target_cost, t, cap, step, scratch);
 }
 
 // Keeps the cap's worth of cheapest actives. `limit` is at least the cap-th smallest cost (see
@@ -452,11 +466,17 @@ void prune_first_step(const PhoneGraph& graph, std::vector<Active>& actives, std
 
 SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
                          const SearchOptions& options) {
-  return unit_search(graph, targets, {}, options);
+  return unit_search(graph, targets, SearchTargets{}, options);
 }
 
 SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
                          std::span<const std::int64_t> target_frames, const SearchOptions& options) {
+  return unit_search(graph, targets, SearchTargets{target_frames, {}, {}}, options);
+}
+
+SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
+                         const SearchTargets& shape, const SearchOptions& options) {
+  const auto target_frames = shape.frames;
   SearchResult result;
   if (!target_frames.empty() && target_frames.size() != targets.size())
     throw std::invalid_argument("unit search: " + std::to_string(target_frames.size()) + " target lengths for " +
@@ -467,7 +487,11 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
     throw std::invalid_argument("unit search: the duration weight must be finite and >= 0");
   if (!(options.context_weight >= 0.0) || std::isinf(options.context_weight))
     throw std::invalid_argument("unit search: the context weight must be finite and >= 0");
-  DurationTerm duration(graph, target_frames, options.duration_weight);
+  if (!(options.jaw_weight >= 0.0) || std::isinf(options.jaw_weight))
+    throw std::invalid_argument("unit search: the jaw weight must be finite and >= 0");
+  if (!shape.jaw.empty() && (shape.jaw.size() != targets.size() || shape.state_jaw.size() != graph.size()))
+    throw std::invalid_argument("unit search: the jaw term needs one value per target phone and one per state");
+  TargetTerm target_cost(graph, shape, options);
   for (std::size_t t = 0; t < targets.size(); ++t)
     if (graph.with_viseme(targets[t]).empty())
       throw std::invalid_argument("unit search: the voice has no phone of viseme class " +
@@ -495,7 +519,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
   };
   const auto step = [&](std::size_t t) { return std::span(trail).subspan(begin[t], begin[t + 1] - begin[t]); };
   result.stats.active_per_step.reserve(targets.size());
-  for (StateId j : graph.with_viseme(targets[0])) builder.add(j, 1.0 + duration(j, 0), kNoBack, true);
+  for (StateId j : graph.with_viseme(targets[0])) builder.add(j, 1.0 + target_cost(j, 0), kNoBack, true);
   close_step(true);
 
   JoinScratch scratch;
@@ -511,7 +535,7 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
     for (std::uint32_t a = 0; a < kept.size(); ++a) {
       const StateId i = kept[a].state;
       if (graph.child_viseme(i) == targets[t]) {
-        const double cost = kept[a].cost + duration(i + 1, t);
+        const double cost = kept[a].cost + target_cost(i + 1, t);
         builder.add(i + 1, cost, a, false);
         cap.add(cost);
       } else if (context) {
@@ -521,10 +545,10 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
     // Across recordings: states whose parent looks like the phone we leave.
     const std::span<const Active> prev = context ? std::span<const Active>(leaving) : kept;
     offer_joins(graph, prev, graph.entries(targets[t - 1], targets[t]), Diviseme{targets[t - 1], targets[t]}, options,
-                duration, t, cap, builder, scratch);
+                target_cost, t, cap, builder, scratch);
     if (builder.empty()) {  // the voice never recorded this diviseme: join anywhere that matches
       ++result.stats.hard_joins;
-      offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, duration, t, cap, builder,
+      offer_joins(graph, prev, graph.with_viseme(targets[t]), std::nullopt, options, target_cost, t, cap, builder,
                   scratch);
     }
     close_step(false);

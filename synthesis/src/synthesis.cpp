@@ -58,15 +58,21 @@ VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v) {
                        " nor of its substitutes (" + names + ")");
 }
 
-SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
-                            std::span<const TimedPhone> phones, SampleRate sample_rate,
-                            std::int64_t end_sample, const SynthesisOptions& options,
-                            const std::string& source) {
-  return synthesize(graph, frame_coefficients, place_on_voice_grid(phones, sample_rate, end_sample, source), options);
+std::optional<JawGuide> jaw_guide_for(const Voice& voice, const SynthesisOptions& options) {
+  if (!(options.search.jaw_weight > 0.0)) return std::nullopt;
+  return make_jaw_guide(voice);
 }
 
 SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
-                            TargetTimeline timeline, const SynthesisOptions& options) {
+                            std::span<const TimedPhone> phones, SampleRate sample_rate,
+                            std::int64_t end_sample, const SynthesisOptions& options,
+                            const std::string& source, const JawGuide* jaw_guide) {
+  return synthesize(graph, frame_coefficients, place_on_voice_grid(phones, sample_rate, end_sample, source), options,
+                    jaw_guide);
+}
+
+SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
+                            TargetTimeline timeline, const SynthesisOptions& options, const JawGuide* jaw_guide) {
   SynthesizedTrack out;
   out.timeline = std::move(timeline);
   const auto& targets = out.timeline.phones;
@@ -85,7 +91,15 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coef
     covered[t].viseme = classes[t] = c;
     lengths[t] = covered[t].end_frame - covered[t].first_frame;
   }
-  out.search = unit_search(graph, classes, lengths, options.search);
+  std::vector<float> jaw;
+  if (options.search.jaw_weight > 0.0) {
+    if (jaw_guide == nullptr || jaw_guide->state_opening.size() != graph.size())
+      throw std::invalid_argument("synthesis: the jaw term needs the voice's jaw guide (jaw_guide_for)");
+    jaw = wanted_jaw(*jaw_guide, out.timeline, options.jaw_cutoff_hz);
+  }
+  out.search = unit_search(graph, classes,
+                           SearchTargets{lengths, jaw, jaw.empty() ? std::span<const float>{} : std::span<const float>(jaw_guide->state_opening)},
+                           options.search);
   out.pca_frames = concatenate_units(graph, frame_coefficients, out.search, covered, options.concatenation);
   out.tongue = tongue_track(targets, out.timeline.phone_of);
   return out;

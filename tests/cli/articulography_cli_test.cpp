@@ -124,15 +124,18 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
   // --talker adds the SYNTHETIC reference talker's own articulation of the same phones, after the
   // voice's animations (whose order and effect table stay): the same real side, a face that is not
   // the voice's, and, as calibrated (spec/talker.md), lips that open about as far as the real
-  // talker's and move with them.
+  // talker's and move with them. The same run weighs the search's jaw term (spec/search.md): the
+  // voice's units change, the talker's articulation does not depend on them.
   const auto k = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha +
-                                     ".lab --talker --voice " + voice() + " --json-out " + out("k.json") + " -q"));
+                                     ".lab --talker --jaw-weight 3 --voice " + voice() + " --json-out " + out("k.json") + " -q"));
   ASSERT_EQ(k.exit_code, 0) << k.err;
-  EXPECT_NE(k.out.find(" --talker\n"), std::string::npos) << k.out;
+  EXPECT_NE(k.out.find(" --jaw-weight 3 --talker\n"), std::string::npos) << k.out;
   EXPECT_NE(k.out.find("## the reference talker (SYNTHETIC), reference alignment, no voice"), std::string::npos) << k.out;
   const auto kj = nlohmann::json::parse(read_file(out("k.json")));
   ASSERT_EQ(kj["animations"].size(), 2u);
   EXPECT_EQ(kj["animations"][0]["animated_by"], "voice");
+  EXPECT_NE(kj["animations"][0]["curves"]["ours_mm"]["jaw_opening"], j["animations"][0]["curves"]["ours_mm"]["jaw_opening"])
+      << "the jaw term chose other units";
   const auto& talker = kj["animations"][1];
   EXPECT_EQ(talker["animated_by"], "reference talker (SYNTHETIC)");
   EXPECT_EQ(talker["synthesis"]["units"], 0);

@@ -76,10 +76,13 @@ TEST(Cli, SynthesisDefaultsAreTheLibrarysInEveryCommand) {
     EXPECT_EQ(std::stod(shown_default(r.out, "--beta")), shipped.search.beta) << r.out;
     EXPECT_EQ(shown_default(r.out, "--max-active"), std::to_string(*shipped.search.max_active)) << r.out;
     EXPECT_EQ(std::stod(shown_default(r.out, "--duration-weight")), shipped.search.duration_weight) << r.out;
+    EXPECT_EQ(std::stod(shown_default(r.out, "--jaw-weight")), shipped.search.jaw_weight) << r.out;
+    EXPECT_EQ(std::stod(shown_default(r.out, "--jaw-cutoff")), shipped.jaw_cutoff_hz) << r.out;
     EXPECT_NE(r.out.find("--boundary-joins"), std::string::npos) << r.out;
   }
   EXPECT_EQ(shipped.search.beta, 0.1);  // spec/cli.md, spec/search.md
   EXPECT_EQ(*shipped.search.max_active, 64u);
+  EXPECT_EQ(shipped.search.jaw_weight, 0.0);  // the jaw term is opt-in (spec/search.md)
   EXPECT_TRUE(shipped.concatenation.join_mid_phone);
 }
 

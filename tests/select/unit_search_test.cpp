@@ -67,8 +67,10 @@ double duration_term(const PhoneGraph& g, StateId j, std::int64_t target_frames,
 // Minimum cost over every admissible state sequence, or +inf when there is none; with `lengths`,
 // each state also pays its duration term at `weight`.
 // A join from i at target t also pays `context` when i's recording does not go on in class targets[t].
+// With `jaw`, each state also pays jaw_weight * (state_jaw[j] - jaw[t])^2.
 double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, double beta, double weight = 0.0,
-                   std::span<const std::int64_t> lengths = {}, double context = 0.0) {
+                   std::span<const std::int64_t> lengths = {}, double context = 0.0,
+                   std::span<const float> state_jaw = {}, std::span<const float> jaw = {}, double jaw_weight = 0.0) {
   double best = std::numeric_limits<double>::infinity();
   std::vector<StateId> path;
   std::function<void(std::size_t, double)> go = [&](std::size_t t, double cost) {
@@ -92,6 +94,7 @@ double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, do
         else continue;
       }
       if (!lengths.empty()) step += duration_term(g, j, lengths[t], weight);
+      if (!jaw.empty()) step += jaw_weight * std::pow(static_cast<double>(state_jaw[j]) - static_cast<double>(jaw[t]), 2);
       path.push_back(j);
       go(t + 1, cost + step);
       path.pop_back();
@@ -99,6 +102,57 @@ double brute_force(const PhoneGraph& g, std::span<const VisemeClass> targets, do
   };
   go(0, 0.0);
   return best;
+}
+
+// A path's cost written out term by term (no context term): its units, its joins, and each state's
+// duration and jaw terms.
+double written_out_cost(const PhoneGraph& g, const SearchResult& r, const SearchOptions& options,
+                        std::span<const std::int64_t> lengths, std::span<const float> state_jaw = {},
+                        std::span<const float> jaw = {}) {
+  double path = static_cast<double>(r.units.size());
+  for (std::size_t t = 0; t < r.states.size(); ++t) {
+    path += duration_term(g, r.states[t], lengths[t], options.duration_weight);
+    if (!jaw.empty()) path += options.jaw_weight * std::pow(static_cast<double>(state_jaw[r.states[t]]) - jaw[t], 2);
+    if (t > 0 && r.states[t] != r.states[t - 1] + 1) path += options.beta * join_cost(g, r.states[t - 1], r.states[t]);
+  }
+  return path;
+}
+
+// Two takes of one word, classes 0 1 0, still frames (every join costs 0): the vowel lasts
+// `first_vowel` frames in the first take, `second_vowel` in the second; the rests 3 each.
+PhoneGraph two_takes_of_one_word(std::uint32_t first_vowel, std::uint32_t second_vowel) {
+  std::vector<PhoneState> states;
+  std::uint32_t at = 0;
+  for (std::uint32_t take = 0; take < 2; ++take)
+    for (const auto& [v, n] : {std::pair{0, 3u}, std::pair{1, take == 0 ? first_vowel : second_vowel}, std::pair{0, 3u}}) {
+      states.push_back({take, V(v), {at, n}});
+      at += n;
+    }
+  return PhoneGraph(states, join_features(states, Eigen::MatrixXf::Zero(at, 2)));
+}
+
+// A small random graph whose phones last 1-6 frames, and 1-5 random target phones of 1-9 frames.
+struct TimedSearch {
+  PhoneGraph graph;
+  std::vector<VisemeClass> targets;
+  std::vector<std::int64_t> lengths;
+  bool covered = true;  // the graph has a state of every target class
+};
+TimedSearch random_timed_search(std::mt19937_64& rng) {
+  std::uniform_int_distribution<int> visemes(0, 2), length(2, 5), count(2, 4), tlen(1, 5), frames(1, 9);
+  std::vector<std::vector<int>> utts(static_cast<std::size_t>(count(rng)));
+  for (auto& u : utts) {
+    u.resize(static_cast<std::size_t>(length(rng)));
+    for (auto& v : u) v = visemes(rng);
+  }
+  const Toy toy = make_toy(utts, rng, 3, 1, 6);
+  TimedSearch out{PhoneGraph(toy.states, join_features(toy.states, toy.frames)), {}, {}};
+  out.targets.resize(static_cast<std::size_t>(tlen(rng)));
+  out.lengths.resize(out.targets.size());
+  for (auto& v : out.targets) v = V(visemes(rng));
+  for (auto& n : out.lengths) n = frames(rng);
+  for (auto v : out.targets) out.covered = out.covered && !out.graph.with_viseme(v).empty();
+  return out;
 }
 
 // (beta, context weight): the paper's cost (context 0) and with the right-context term.
@@ -163,36 +217,21 @@ INSTANTIATE_TEST_SUITE_P(BetasAndContext, UnitSearchBruteForce,
 TEST(UnitSearch, DurationTermFindsTheMinimumCostOnRandomSmallGraphs) {
   const auto seed = test::test_seed(kSearchSeed);
   std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<int> visemes(0, 2), length(2, 5), count(2, 4), tlen(1, 5), frames(1, 9);
   int compared = 0, moved = 0;
   for (int trial = 0; trial < 300; ++trial) {
-    std::vector<std::vector<int>> utts(static_cast<std::size_t>(count(rng)));
-    for (auto& u : utts) {
-      u.resize(static_cast<std::size_t>(length(rng)));
-      for (auto& v : u) v = visemes(rng);
-    }
-    const Toy toy = make_toy(utts, rng, 3, 1, 6);
-    const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
-    std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
-    std::vector<std::int64_t> lengths(targets.size());
-    for (auto& v : targets) v = V(visemes(rng));
-    for (auto& n : lengths) n = frames(rng);
-    bool covered = true;
-    for (auto v : targets) covered = covered && !g.with_viseme(v).empty();
-    if (!covered) continue;
+    const TimedSearch timed = random_timed_search(rng);
+    if (!timed.covered) continue;
+    const PhoneGraph& g = timed.graph;
+    const auto& targets = timed.targets;
+    const auto& lengths = timed.lengths;
     const double beta = trial % 2 ? 0.05 : 0.0, weight = 0.5;
     const double expected = brute_force(g, targets, beta, weight, lengths);
     if (std::isinf(expected)) continue;
     const SearchResult r = unit_search(g, targets, lengths, with_duration(beta, weight));
     const std::string where = "trial " + std::to_string(trial) + "; " + test::reproduce_hint(seed);
     ASSERT_NEAR(r.cost, expected, 1e-9 * (1 + expected)) << where;
-    double path = static_cast<double>(r.units.size());
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-      ASSERT_EQ(g.state(r.states[t]).viseme, targets[t]) << where;
-      path += duration_term(g, r.states[t], lengths[t], weight);
-      if (t > 0 && r.states[t] != r.states[t - 1] + 1) path += beta * join_cost(g, r.states[t - 1], r.states[t]);
-    }
-    EXPECT_NEAR(path, r.cost, 1e-9 * (1 + path)) << where;
+    for (std::size_t t = 0; t < targets.size(); ++t) ASSERT_EQ(g.state(r.states[t]).viseme, targets[t]) << where;
+    EXPECT_NEAR(written_out_cost(g, r, with_duration(beta, weight), lengths), r.cost, 1e-9 * (1 + r.cost)) << where;
     ++compared;
     moved += unit_search(g, targets, lengths, with_duration(beta, 0.0)).states != r.states;
   }
@@ -203,10 +242,7 @@ TEST(UnitSearch, DurationTermFindsTheMinimumCostOnRandomSmallGraphs) {
 // Two recordings of the same word, one with its vowel as long as the target's: the term picks it;
 // without the term the search takes the first (lowest state ids) as ties are broken.
 TEST(UnitSearch, DurationTermPrefersTheUnitThatNeedsLessWarping) {
-  std::vector<PhoneState> states{{0, V(0), {0, 3}}, {0, V(1), {3, 2}}, {0, V(0), {5, 3}},
-                                 {1, V(0), {8, 3}}, {1, V(1), {11, 12}}, {1, V(0), {23, 3}}};
-  Eigen::MatrixXf frames = Eigen::MatrixXf::Zero(26, 2);
-  const PhoneGraph g(states, join_features(states, frames));
+  const PhoneGraph g = two_takes_of_one_word(2, 12);
   const std::vector<VisemeClass> targets = Vs({0, 1, 0});
   const std::vector<std::int64_t> lengths{3, 11, 3};
   const SearchResult plain = unit_search(g, targets, lengths, with_duration(0.1, 0.0));
@@ -231,6 +267,120 @@ TEST(UnitSearch, DurationTermRejectsBadLengthsAndWeights) {
   EXPECT_THROW(unit_search(g, targets, good, with_duration(0.0, std::numeric_limits<double>::infinity())),
                std::invalid_argument);
   EXPECT_THROW(unit_search(g, targets, good, with_duration(0.0, std::nan(""))), std::invalid_argument);
+}
+
+// The jaw term: every state has a recorded opening, every target a wanted one; the search's cost
+// is the brute-force minimum (with the duration and context terms on as well), and its path's
+// cost written out term by term is that cost.
+TEST(UnitSearch, JawTermFindsTheMinimumCostOnRandomSmallGraphs) {
+  const auto seed = test::test_seed(kSearchSeed);
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<float> opening;
+  int compared = 0, moved = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const TimedSearch timed = random_timed_search(rng);
+    const PhoneGraph& g = timed.graph;
+    const auto& targets = timed.targets;
+    const auto& lengths = timed.lengths;
+    std::vector<float> jaw(targets.size()), state_jaw(g.size());
+    for (auto& a : jaw) a = opening(rng);
+    for (auto& a : state_jaw) a = opening(rng);
+    if (!timed.covered) continue;
+    SearchOptions options = with_duration(trial % 2 ? 0.05 : 0.0, trial % 3 == 0 ? 0.5 : 0.0);
+    options.context_weight = trial % 4 == 0 ? 0.3 : 0.0;
+    options.jaw_weight = 0.4;
+    const double expected = brute_force(g, targets, options.beta, options.duration_weight, lengths,
+                                        options.context_weight, state_jaw, jaw, options.jaw_weight);
+    if (std::isinf(expected)) continue;
+    const SearchResult r = unit_search(g, targets, SearchTargets{lengths, jaw, state_jaw}, options);
+    const std::string where = "trial " + std::to_string(trial) + "; " + test::reproduce_hint(seed);
+    ASSERT_NEAR(r.cost, expected, 1e-9 * (1 + expected)) << where;
+    if (options.context_weight == 0.0) {
+      EXPECT_NEAR(written_out_cost(g, r, options, lengths, state_jaw, jaw), r.cost, 1e-9 * (1 + r.cost)) << where;
+    }
+    ++compared;
+    options.jaw_weight = 0.0;
+    moved += unit_search(g, targets, SearchTargets{lengths, jaw, state_jaw}, options).states != r.states;
+  }
+  EXPECT_GT(compared, 100) << "too few comparable trials to mean anything";
+  EXPECT_GT(moved, 10) << "the jaw term never changed a path: the trials do not exercise it";
+}
+
+// Two recordings of the same word, the second with its vowel's jaw as open as wanted: without the
+// term the search takes the first (lowest state ids, as ties are broken), with it the second.
+TEST(UnitSearch, JawTermPrefersTheUnitWhoseJawIsWanted) {
+  const PhoneGraph g = two_takes_of_one_word(3, 3);
+  const std::vector<VisemeClass> targets = Vs({0, 1, 0});
+  const std::vector<float> state_jaw{0.f, -1.f, 0.f, 0.f, 1.f, 0.f}, jaw{0.f, 1.f, 0.f};
+  SearchOptions options = with_duration(0.1, 0.0);
+  EXPECT_EQ(unit_search(g, targets, SearchTargets{{}, jaw, state_jaw}, options).states, (std::vector<StateId>{0, 1, 2}))
+      << "off, the tie goes to the lowest state ids";
+  options.jaw_weight = 0.5;
+  const SearchResult r = unit_search(g, targets, SearchTargets{{}, jaw, state_jaw}, options);
+  EXPECT_EQ(r.states, (std::vector<StateId>{3, 4, 5}));
+  EXPECT_DOUBLE_EQ(r.cost, 1.0);
+}
+
+TEST(UnitSearch, JawTermRejectsBadInputsAndWeights) {
+  std::mt19937_64 rng(7);
+  const Toy toy = make_toy({{0, 1}}, rng);
+  const PhoneGraph g(toy.states, join_features(toy.states, toy.frames));
+  const std::vector<VisemeClass> targets = Vs({0, 1});
+  const std::vector<float> jaw{0.f, 1.f}, short_jaw{0.f}, state_jaw(g.size(), 0.f), short_states(g.size() - 1, 0.f);
+  SearchOptions options;
+  options.jaw_weight = 1.0;
+  EXPECT_NO_THROW(unit_search(g, targets, SearchTargets{{}, jaw, state_jaw}, options));
+  EXPECT_THROW(unit_search(g, targets, SearchTargets{{}, short_jaw, state_jaw}, options), std::invalid_argument);
+  EXPECT_THROW(unit_search(g, targets, SearchTargets{{}, jaw, short_states}, options), std::invalid_argument);
+  for (double bad : {-1.0, std::numeric_limits<double>::infinity(), std::nan("")}) {
+    options.jaw_weight = bad;
+    EXPECT_THROW(unit_search(g, targets, SearchTargets{{}, jaw, state_jaw}, options), std::invalid_argument) << bad;
+  }
+}
+
+// The pruned joins against the reference with the jaw term on (random openings, every cap).
+TEST(UnitSearch, PrunedJoinsGiveTheReferenceResultWithTheJawTerm) {
+  const auto seed = test::test_seed(kSearchSeed);
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> classes(3, 9), k(1, 9), recordings(6, 24), phones(3, 12), tlen(1, 30);
+  std::normal_distribution<float> opening;
+  const std::optional<std::size_t> caps[] = {std::nullopt, 1, 3, 16, 64};
+  int searches = 0;
+  for (int graph = 0; graph < 20; ++graph) {
+    std::vector<VisemeClass> alphabet;
+    for (int c = 0, n = classes(rng); c < n; ++c) alphabet.push_back(V(c));
+    const auto voice = test::synthetic_voice_graph(static_cast<std::uint32_t>(recordings(rng)), phones(rng), 1 + graph % 3, k(rng),
+                                                   rng(), graph % 2 ? 1.0f : 0.05f, alphabet, true, 9);
+    std::vector<float> state_jaw(voice.graph->size());
+    for (auto& a : state_jaw) a = opening(rng);
+    for (int target = 0; target < 5; ++target) {
+      std::vector<VisemeClass> targets(static_cast<std::size_t>(tlen(rng)));
+      for (auto& v : targets) v = alphabet[std::uniform_int_distribution<std::size_t>(0, alphabet.size() - 1)(rng)];
+      std::vector<std::int64_t> lengths(targets.size());
+      for (auto& n : lengths) n = std::uniform_int_distribution<std::int64_t>(1, 12)(rng);
+      std::vector<float> jaw(targets.size());
+      for (auto& a : jaw) a = opening(rng);
+      bool covered = true;
+      for (auto v : targets) covered = covered && !voice.graph->with_viseme(v).empty();
+      if (!covered) continue;
+      for (auto cap : caps) {
+        SearchOptions options{0.1, cap, false, graph % 2 ? 0.3 : 0.0};
+        options.jaw_weight = graph % 3 == 0 ? 3.0 : 0.3;
+        const SearchTargets shape{lengths, jaw, state_jaw};
+        const SearchResult reference = unit_search(*voice.graph, targets, shape, options);
+        options.prune_joins = true;
+        const SearchResult pruned = unit_search(*voice.graph, targets, shape, options);
+        const std::string where = "graph " + std::to_string(graph) + " target " + std::to_string(target) + " cap " +
+                                  (cap ? std::to_string(*cap) : "none") + "; " + test::reproduce_hint(seed);
+        ASSERT_EQ(pruned.cost, reference.cost) << where;
+        ASSERT_EQ(pruned.states, reference.states) << where;
+        ASSERT_EQ(pruned.units, reference.units) << where;
+        ASSERT_EQ(pruned.stats.active_per_step, reference.stats.active_per_step) << where;
+        ++searches;
+      }
+    }
+  }
+  EXPECT_GT(searches, 300) << "too few searches to mean anything";
 }
 
 // The pruned join evaluation (the default) against the reference that evaluates every pair:

@@ -12,7 +12,7 @@ using Clock = std::chrono::steady_clock;
 }
 
 Speaker::Speaker(const Voice& voice, SpeakerSettings settings, const std::string& source)
-    : voice_(voice), settings_(std::move(settings)), source_(source) {
+    : voice_(voice), jaw_guide_(jaw_guide_for(voice, settings.synthesis)), settings_(std::move(settings)), source_(source) {
   check_voice_phone_set(voice_, source_);
   basis_ = speech_basis(voice_, settings_.expression);
   face_ = face_basis(basis_, voice_, source_);
@@ -29,7 +29,8 @@ SpokenSentence Speaker::speak(std::string_view text) const {
   if (out.phones.empty()) return out;
   const auto samples = static_cast<std::int64_t>(out.audio.samples.size());
   SynthesizedTrack track = synthesize(voice_.graph(), voice_.frame_coefficients(), out.phones,
-                                      out.audio.sample_rate, samples, settings_.synthesis, source_);
+                                      out.audio.sample_rate, samples, settings_.synthesis, source_,
+                                      jaw_guide_ ? &*jaw_guide_ : nullptr);
   AnimationOptions animation;
   animation.rate = settings_.rate;
   animation.viseme = settings_.viseme;

@@ -38,6 +38,17 @@ struct SearchOptions {
   // phone anticipates the rest after the word). 0 = the paper's cost; 0.3 (below one unit: it
   // never buys a unit, it chooses among paths of as many units) measured in spec/evaluation.md.
   double context_weight = 0.3;
+  // Weight of the jaw term: state j serving target phone t adds jaw_weight * (a_j - w_t)^2, a_j
+  // the jaw opening recorded in j and w_t the opening wanted at t, both in the caller's units
+  // (SearchTargets). 0 = the paper's cost.
+  double jaw_weight = 0.0;
+};
+
+// What the target terms weigh besides the classes (each span empty = that term off).
+struct SearchTargets {
+  std::span<const std::int64_t> frames;  // per target phone, its length in voice frames (>= 1)
+  std::span<const float> jaw;            // per target phone, the jaw opening wanted
+  std::span<const float> state_jaw;      // per graph state, the jaw opening recorded
 };
 
 // A run of consecutive states of one recording that covers consecutive target phones.
@@ -76,5 +87,8 @@ SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> t
 // not match the targets or one is below 1 while the term is on.
 SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
                          std::span<const std::int64_t> target_frames, const SearchOptions& options);
+// The same with every target term's inputs.
+SearchResult unit_search(const PhoneGraph& graph, std::span<const VisemeClass> targets,
+                         const SearchTargets& shape, const SearchOptions& options);
 
 }  // namespace fapcast

@@ -6,6 +6,7 @@
 // feature point 2.1 is on the mesh); codec turns both into FAPs.
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/select/phone_graph.hpp"
+#include "fapcast/synthesis/jaw_guide.hpp"
 #include "fapcast/synthesis/unit_concatenation.hpp"
 #include "fapcast/select/unit_search.hpp"
 #include "fapcast/voice/voice_frame_grid.hpp"
@@ -13,6 +14,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -36,6 +38,9 @@ VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v);
 struct SynthesisOptions {
   SearchOptions search;  // beta, max_active, duration term
   ConcatenationOptions concatenation;  // where units hand over, cross-fade, smoothing, hold weight
+  // The jaw term's wanted opening (jaw_guide.hpp) is low-passed at this frequency: about the rate
+  // of syllables in speech (4-5 per second), so that a phone shares its neighbours' jaw.
+  double jaw_cutoff_hz = 4.0;
 };
 
 struct SynthesizedTrack {
@@ -48,20 +53,26 @@ struct SynthesizedTrack {
   std::size_t substituted = 0; // target phones whose class the voice lacked (covered_viseme)
 };
 
+// The voice's jaw guide when the options weigh the jaw term (search.jaw_weight > 0), else none:
+// what the synthesize() calls below take as `jaw_guide`. Throws InputError as make_jaw_guide.
+std::optional<JawGuide> jaw_guide_for(const Voice& voice, const SynthesisOptions& options);
+
 // Synthesises the animation of `phones` (sample positions at `sample_rate`, see
 // place_on_voice_grid for the rules and `end_sample`) on a voice: `graph` indexes the rows of
 // `frame_coefficients` (corpus frames x k PCA coefficients, 60 fps). Throws InputError for
 // phones breaking the rules or classes the voice cannot cover; an empty phone list gives an
-// empty track.
+// empty track. With the jaw term weighed, `jaw_guide` must be the voice's (jaw_guide_for), else
+// std::invalid_argument.
 SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
                             std::span<const TimedPhone> phones, SampleRate sample_rate,
                             std::int64_t end_sample = 0, const SynthesisOptions& options = {},
-                            const std::string& source = "phones");
+                            const std::string& source = "phones", const JawGuide* jaw_guide = nullptr);
 
 // The same for target phones already on the voice grid (place_on_voice_grid's rules). They
 // need not start at frame 0: the search, the concatenation and the tongue see only the phones'
 // classes, lengths and frames relative to each other (the pieces of a long text, spec/synthesis.md).
 SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
-                            TargetTimeline timeline, const SynthesisOptions& options = {});
+                            TargetTimeline timeline, const SynthesisOptions& options = {},
+                            const JawGuide* jaw_guide = nullptr);
 
 }  // namespace fapcast

@@ -59,6 +59,7 @@ class Speaker {
 
  private:
   const Voice& voice_;
+  std::optional<JawGuide> jaw_guide_;  // with the jaw term on
   SpeakerSettings settings_;
   SpeechBasis basis_;
   FeaturePointBasis face_;

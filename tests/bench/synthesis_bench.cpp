@@ -5,18 +5,23 @@
 // stand-in for a voice's search data, not a voice. Counters: seconds of animation per CPU second,
 // mean active states per phone. Baselines in the same run: no cap on the active states, and
 // PCA -> FAP through the whole mesh (mean + c * components over 3N columns) instead of the basis
-// restricted to the feature points.
+// restricted to the feature points. The jaw term of the search against the same synthesis
+// without it, and the cost of making its guide from a voice of the default voice's size.
 #include "fapcast/codec/face_geometry.hpp"
 #include "fapcast/codec/pca_faps.hpp"
+#include "fapcast/core/file_io.hpp"
+#include "fapcast/synthesis/jaw_guide.hpp"
 #include "fapcast/synthesis/synthesis.hpp"
 #include "fapcast/synthesis/tongue.hpp"
 #include "fapcast/transport/track_resample.hpp"
 #include "support/synthetic_voice_graph.hpp"
+#include "support/tiny_voice.hpp"
 
 #include <benchmark/benchmark.h>
 #include <malloc.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <numeric>
 #include <optional>
 #include <random>
@@ -214,6 +219,67 @@ void BM_FapsAt25(benchmark::State& state) {
       benchmark::Counter(kSentenceS * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_FapsAt25)->Unit(benchmark::kMillisecond);
+
+// The jaw term (spec/search.md) against the same synthesis without it, in one run: the `say`
+// default with a guide of random openings (SYNTHETIC: the graph is no voice), Arg 1 = on at
+// weight 0.1, 0 = off. What it adds is the wanted openings (low-pass over the sentence's frames)
+// and one more term per offered state.
+void BM_Synthesize_JawTerm(benchmark::State& state) {
+  const World& w = world();
+  std::mt19937_64 rng(11);
+  std::normal_distribution<float> normal;
+  JawGuide guide;
+  guide.state_opening.resize(w.voice.graph->size());
+  for (float& a : guide.state_opening) a = normal(rng);
+  for (float& a : guide.phone_opening) a = normal(rng);
+  guide.spread_mm = 1.0;
+  SynthesisOptions options;
+  options.search.jaw_weight = state.range(0) != 0 ? 0.1 : 0.0;
+  SynthesizedTrack s;
+  for (auto _ : state) {
+    s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options, "bench", &guide);
+    benchmark::DoNotOptimize(s.pca_frames.data());
+  }
+  report(state, s);
+}
+BENCHMARK(BM_Synthesize_JawTerm)->ArgName("jaw")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// Making the guide from a voice the size of the default one (66,103 frames, k = 17, 6,892 phone
+// states, SYNTHETIC values): done once per command when the term is on.
+void BM_MakeJawGuide_DefaultVoiceSize(benchmark::State& state) {
+  static const std::filesystem::path file = [] {
+    constexpr std::uint32_t kFrames = 66'103, kStates = 6'892;
+    test::TinyVoice t;
+    t.vertices = 8;  // the guide reads one column of the components: the mesh's size does not matter
+    t.components = kK;
+    std::mt19937_64 rng(5);
+    std::normal_distribution<float> normal;
+    t.coefficients = RowMajorMatrixXf(kFrames, kK);
+    for (Eigen::Index i = 0; i < t.coefficients.size(); ++i) t.coefficients.data()[i] = normal(rng);
+    t.graph.utterances = {{0, kFrames}};
+    t.graph.frame_count = kFrames;
+    t.graph.states.clear();
+    t.graph.phones.clear();
+    for (std::uint32_t j = 0, at = 0; j < kStates; ++j) {
+      const std::uint32_t n = j + 1 < kStates ? kFrames / kStates : kFrames - at;
+      const auto phone = static_cast<Phone>(j % kPhoneCount);
+      t.graph.states.push_back({0, search_viseme(phone), {at, n}});
+      t.graph.phones.push_back(phone);
+      at += n;
+    }
+    t.feature_points = voice_feature_points_json(
+        std::vector<VoiceFeaturePoint>{{"2.1", 0, {0.0, -0.06, 0.08}}},
+        std::vector<VoiceRigidMarker>{{"H.temple_l", 1, {0.07, 0.03, 0.0}, {0.07, 0.03, 0.01}},
+                                      {"H.temple_r", 2, {-0.07, 0.03, 0.0}, {-0.07, 0.03, 0.01}},
+                                      {"H.nose_bridge", 3, {0.0, 0.04, 0.09}, {0.0, 0.04, 0.1}}});
+    const auto path = std::filesystem::temp_directory_path() / "fapcast_synthesis_bench_voice.fapv";
+    write_file_atomically(path, t.bytes());
+    return path;
+  }();
+  const Voice voice = Voice::open(file);
+  for (auto _ : state) benchmark::DoNotOptimize(make_jaw_guide(voice).spread_mm);
+}
+BENCHMARK(BM_MakeJawGuide_DefaultVoiceSize)->Unit(benchmark::kMillisecond);
 
 // The search is over the whole utterance (Viterbi back-trace), so the first frame exists only
 // when the sentence is synthesised: time to first frame = synthesis + one frame of FAPs.

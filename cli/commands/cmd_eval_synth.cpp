@@ -27,12 +27,11 @@ using namespace fapcast;
 // The method under test: synthesize() - the Viterbi search over the voice's phone graph and
 // concatenate_units - from the utterance's own timed phones, as `fapcast say` runs it.
 NamedSystem variable_length_system(const Voice& voice, SynthesisOptions options) {
-  auto guide = std::make_shared<const std::optional<JawGuide>>(jaw_guide_for(voice, options));
-  return {"variable-length", [&voice, options, guide](const HeldOutUtterance& u) {
+  return {"variable-length", [&voice, options, guide = jaw_guide_for(voice, options)](const HeldOutUtterance& u) {
             const auto track = synthesize(voice.graph(), voice.frame_coefficients(), u.speech.phones,
                                                  u.speech.audio.sample_rate,
                                                  static_cast<std::int64_t>(u.speech.audio.samples.size()), options, u.id,
-                                                 *guide ? &**guide : nullptr);
+                                                 guide ? &*guide : nullptr);
             return SystemOutput{track.pca_frames, track.search.units.size()};
           }};
 }

@@ -10,7 +10,9 @@ namespace fapcast {
 JawGuide make_jaw_guide(const Voice& voice) {
   const auto points = voice.feature_points();
   const auto chin = std::find_if(points.begin(), points.end(), [](const VoiceFeaturePoint& p) { return p.label == "2.1"; });
-  if (chin == points.end()) throw InputError(InputLocation{"voice", {}, {}}, "jaw-guide", "the voice has no chin feature point (FP 2.1)");
+  if (chin == points.end())
+    throw InputError(InputLocation{voice.file().source(), {}, {}}, "jaw-guide",
+                     "the voice has no chin feature point (FP 2.1), which the jaw term measures");
   const Eigen::Index y = 3 * static_cast<Eigen::Index>(chin->vertex) + 1;
   const auto components = voice.pca_components();
   Eigen::VectorXf down(components.rows());  // chin travel downwards per unit of each coefficient, metres
@@ -37,7 +39,8 @@ JawGuide make_jaw_guide(const Voice& voice) {
   const double centre = speech == 0 ? 0.0 : speech_sum / static_cast<double>(speech);
   const double spread = speech < 2 ? 0.0 : std::sqrt(std::max(0.0, speech_square / static_cast<double>(speech) - centre * centre));
   if (!(spread > 1e-6))  // a micrometre: a still chin gives the search nothing to follow
-    throw InputError(InputLocation{"voice", {}, {}}, "jaw-guide", "the chin (FP 2.1) does not move across the voice's phones");
+    throw InputError(InputLocation{voice.file().source(), {}, {}}, "jaw-guide",
+                     "the chin (FP 2.1) does not move across the voice's phones: the jaw term has nothing to follow");
   for (float& v : guide.state_opening) v = static_cast<float>((v - centre) / spread);
   for (std::size_t p = 0; p < kPhoneCount; ++p)
     guide.phone_opening[p] = count[p] == 0 ? 0.0f : static_cast<float>((sum[p] / static_cast<double>(count[p]) - centre) / spread);

@@ -24,13 +24,12 @@ struct JawGuide {
 };
 
 // The opening is how far the chin (FP 2.1) lies below its place on the PCA mean face, along the
-// face's up axis (the frames are stabilised on the head). Throws InputError (source "voice", rule
-// "jaw-guide") for a voice without FP 2.1 or whose chin never moves.
+// face's up axis (the frames are stabilised on the head). Throws InputError (the voice file, rule
+// "jaw-guide") for a voice without FP 2.1 or whose chin does not move across its speech states.
 JawGuide make_jaw_guide(const Voice& voice);
 
 // The opening wanted at each target phone: each phone's mean on its frames, low-passed at
 // `cutoff_hz` with zero phase (spec/search.md), averaged over the phone's frames.
 std::vector<float> wanted_jaw(const JawGuide& guide, const TargetTimeline& timeline, double cutoff_hz);
-
 
 }  // namespace fapcast

@@ -36,7 +36,7 @@ VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v);
 // Everything that shapes a synthesised track; the default value is what fapcast ships (the CLI's
 // defaults are these members' defaults, so `eval synth` scores what `say` and `animate` make).
 struct SynthesisOptions {
-  SearchOptions search;  // beta, max_active, duration term
+  SearchOptions search;  // beta, max_active, the duration, context and jaw terms
   ConcatenationOptions concatenation;  // where units hand over, cross-fade, smoothing, hold weight
   // The jaw term's wanted opening (jaw_guide.hpp) is low-passed at this frequency: about the rate
   // of syllables in speech (4-5 per second), so that a phone shares its neighbours' jaw.

@@ -42,8 +42,10 @@ void add_synthesis_options(CLI::App& cmd, SynthesisOptions& options) {
                  "phones want in context (>= 0)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
-  cmd.add_option("--jaw-cutoff", options.jaw_cutoff_hz, "How fast the wanted jaw may move (Hz, low-pass)")
-      ->check(CLI::Range(0.5, 30.0))
+  cmd.add_option("--jaw-cutoff", options.jaw_cutoff_hz,
+                 "How fast the jaw term's wanted jaw may move (Hz, low-pass; 0.5-20: a jaw moves below 10 Hz, and the "
+                 "filter needs less than half the 60 fps frame rate)")
+      ->check(CLI::Range(0.5, 20.0))
       ->capture_default_str();
   cmd.add_flag_function(
       "--boundary-joins", [&options](std::int64_t) { options.concatenation.join_mid_phone = false; },

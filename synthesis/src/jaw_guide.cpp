@@ -45,7 +45,6 @@ JawGuide make_jaw_guide(const Voice& voice) {
   for (std::size_t p = 0; p < kPhoneCount; ++p)
     guide.phone_opening[p] = count[p] == 0 ? 0.0f : static_cast<float>((sum[p] / static_cast<double>(count[p]) - centre) / spread);
   guide.spread_mm = 1000.0 * spread;
-
   return guide;
 }
 

@@ -42,9 +42,14 @@ void add_synthesis_options(CLI::App& cmd, SynthesisOptions& options) {
                  "phones want in context (>= 0)")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
+  cmd.add_option("--jaw-level", options.jaw_level,
+                 "How much of the animation's slow jaw moves to the jaw its phones want in context, the lips' shape "
+                 "held as far as the face allows (0: the units' own jaw, as recorded; 1: the wanted jaw)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd.add_option("--jaw-cutoff", options.jaw_cutoff_hz,
-                 "How fast the jaw term's wanted jaw may move (Hz, low-pass; 0.5-20: a jaw moves below 10 Hz, and the "
-                 "filter needs less than half the 60 fps frame rate)")
+                 "How fast the wanted jaw may move, for the jaw term and the jaw's level (Hz, low-pass; 0.5-20: a jaw "
+                 "moves below 10 Hz, and the filter needs less than half the 60 fps frame rate)")
       ->check(CLI::Range(0.5, 20.0))
       ->capture_default_str();
   cmd.add_flag_function(
@@ -65,6 +70,7 @@ std::string synthesis_options_text(const SynthesisOptions& options) {
   if (options.search.context_weight != shipped.search.context_weight)
     text << " --context-weight " << options.search.context_weight;
   if (options.search.jaw_weight != shipped.search.jaw_weight) text << " --jaw-weight " << options.search.jaw_weight;
+  if (options.jaw_level != shipped.jaw_level) text << " --jaw-level " << options.jaw_level;
   if (options.jaw_cutoff_hz != shipped.jaw_cutoff_hz) text << " --jaw-cutoff " << options.jaw_cutoff_hz;
   if (options.concatenation.join_mid_phone != shipped.concatenation.join_mid_phone && !options.concatenation.join_mid_phone)
     text << " --boundary-joins";
@@ -213,9 +219,7 @@ void synthesize_to_file(const SynthesisArgs& args, std::span<const TimedPhone> p
   const SpeechBasis speech = speech_basis(voice, args.expression);
   const SynthesisOptions& options = args.options;
   const auto start = std::chrono::steady_clock::now();
-  const auto jaw_guide = jaw_guide_for(voice, options);
-  SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones, sample_rate, audio_samples,
-                                      options, source, jaw_guide ? &*jaw_guide : nullptr);
+  SynthesizedTrack track = synthesize(voice, phones, sample_rate, audio_samples, options, source);
   std::size_t frames = 0;
   int fps = args.fps;
   double seconds = 0;

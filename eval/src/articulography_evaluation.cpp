@@ -384,9 +384,7 @@ ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>
                                                  const SynthesisOptions& options, const std::string& phones_source,
                                                  const ArticulographySettings& settings) {
   check_articulography_inputs(ema, ema_source, phones, sample_rate, phones_source);
-  const auto jaw_guide = jaw_guide_for(voice, options);
-  const SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones, sample_rate,
-                                            audio_samples, options, phones_source, jaw_guide ? &*jaw_guide : nullptr);
+  const SynthesizedTrack track = synthesize(voice, phones, sample_rate, audio_samples, options, phones_source);
   return compare_with_face(ema, ema_source, voice.pca_mean(), voice.pca_mean(), voice.pca_components(), track.pca_frames, track,
                            neutral_mns_mm(voice), phones_source, settings);
 }
@@ -400,8 +398,9 @@ ArticulographyEvaluation evaluate_talker_articulography(const MarkerFrames<Milli
   check_articulography_inputs(ema, ema_source, phones, sample_rate, phones_source);
   // The tongue is the parametric tongue of the same phones (the talker's tongue channels drive no
   // face shape), so that only the face differs from the voice's animation.
-  SynthesisOptions tongue_only = options;  // no unit of this search is shown: no jaw term to weigh
+  SynthesisOptions tongue_only = options;  // no unit of this search is shown: no jaw to weigh or level
   tongue_only.search.jaw_weight = 0.0;
+  tongue_only.jaw_level = 0.0;
   const SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), phones, sample_rate,
                                             audio_samples, tongue_only, phones_source);
   const FaceModel& face = ict_face_model();

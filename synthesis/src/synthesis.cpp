@@ -3,6 +3,7 @@
 #include "fapcast/core/input_error.hpp"
 #include "fapcast/synthesis/tongue.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -59,7 +60,10 @@ VisemeClass covered_viseme(const PhoneGraph& graph, VisemeClass v) {
 }
 
 std::optional<JawGuide> jaw_guide_for(const Voice& voice, const SynthesisOptions& options) {
-  if (!(options.search.jaw_weight > 0.0)) return std::nullopt;
+  if (options.search.jaw_weight > 0.0) return make_jaw_guide(voice);
+  const auto points = voice.feature_points();
+  const bool chin = std::any_of(points.begin(), points.end(), [](const VoiceFeaturePoint& p) { return p.label == "2.1"; });
+  if (!(options.jaw_level > 0.0) || !chin) return std::nullopt;
   return make_jaw_guide(voice);
 }
 
@@ -69,6 +73,13 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coef
                             const std::string& source, const JawGuide* jaw_guide) {
   return synthesize(graph, frame_coefficients, place_on_voice_grid(phones, sample_rate, end_sample, source), options,
                     jaw_guide);
+}
+
+SynthesizedTrack synthesize(const Voice& voice, std::span<const TimedPhone> phones, SampleRate sample_rate,
+                            std::int64_t end_sample, const SynthesisOptions& options, const std::string& source) {
+  const auto guide = jaw_guide_for(voice, options);
+  return synthesize(voice.graph(), voice.frame_coefficients(), phones, sample_rate, end_sample, options, source,
+                    guide ? &*guide : nullptr);
 }
 
 SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coefficients,
@@ -91,16 +102,21 @@ SynthesizedTrack synthesize(const PhoneGraph& graph, const PcaFrames& frame_coef
     covered[t].viseme = classes[t] = c;
     lengths[t] = covered[t].end_frame - covered[t].first_frame;
   }
+  if (jaw_guide != nullptr && jaw_guide->state_opening.size() != graph.size())
+    throw std::invalid_argument("synthesis: the jaw guide is another voice's (jaw_guide_for)");
   std::vector<float> jaw;
   if (options.search.jaw_weight > 0.0) {
-    if (jaw_guide == nullptr || jaw_guide->state_opening.size() != graph.size())
-      throw std::invalid_argument("synthesis: the jaw term needs the voice's jaw guide (jaw_guide_for)");
+    if (jaw_guide == nullptr) throw std::invalid_argument("synthesis: the jaw term needs the voice's jaw guide (jaw_guide_for)");
     jaw = wanted_jaw(*jaw_guide, out.timeline, options.jaw_cutoff_hz);
   }
   out.search = unit_search(graph, classes,
                            SearchTargets{lengths, jaw, jaw.empty() ? std::span<const float>{} : std::span<const float>(jaw_guide->state_opening)},
                            options.search);
   out.pca_frames = concatenate_units(graph, frame_coefficients, out.search, covered, options.concatenation);
+  if (options.jaw_level > 0.0 && jaw_guide != nullptr && !jaw_guide->jaw_move.empty()) {
+    level_jaw(*jaw_guide, out.timeline, out.pca_frames, options.jaw_cutoff_hz, options.jaw_level);
+    out.jaw_levelled = true;
+  }
   out.tongue = tongue_track(targets, out.timeline.phone_of);
   return out;
 }

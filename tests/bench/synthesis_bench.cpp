@@ -220,11 +220,9 @@ void BM_FapsAt25(benchmark::State& state) {
 }
 BENCHMARK(BM_FapsAt25)->Unit(benchmark::kMillisecond);
 
-// The jaw term (spec/search.md) against the same synthesis without it, in one run: the `say`
-// default with a guide of random openings (SYNTHETIC: the graph is no voice), Arg 1 = on at
-// weight 0.1, 0 = off. What it adds is the wanted openings (low-pass over the sentence's frames)
-// and one more term per offered state.
-void BM_Synthesize_JawTerm(benchmark::State& state) {
+// A jaw guide of random openings and a random move for the benchmark's graph (SYNTHETIC: the
+// graph is no voice).
+JawGuide random_guide() {
   const World& w = world();
   std::mt19937_64 rng(11);
   std::normal_distribution<float> normal;
@@ -233,8 +231,16 @@ void BM_Synthesize_JawTerm(benchmark::State& state) {
   for (float& a : guide.state_opening) a = normal(rng);
   for (float& a : guide.phone_opening) a = normal(rng);
   guide.spread_mm = 1.0;
-  SynthesisOptions options;
-  options.search.jaw_weight = state.range(0) != 0 ? 0.1 : 0.0;
+  guide.chin_drop.resize(static_cast<std::size_t>(w.voice.frames.cols()));
+  guide.jaw_move.resize(guide.chin_drop.size());
+  for (float& a : guide.chin_drop) a = 0.001f * normal(rng);
+  for (float& a : guide.jaw_move) a = 0.001f * normal(rng);
+  return guide;
+}
+
+// The benchmark's sentence synthesised with `options` and `guide`, reported.
+void synthesize_with_guide(benchmark::State& state, const SynthesisOptions& options, const JawGuide& guide) {
+  const World& w = world();
   SynthesizedTrack s;
   for (auto _ : state) {
     s = synthesize(*w.voice.graph, w.voice.frames, w.phones, kSampleRate, 0, options, "bench", &guide);
@@ -242,7 +248,26 @@ void BM_Synthesize_JawTerm(benchmark::State& state) {
   }
   report(state, s);
 }
+
+// The jaw term (spec/search.md) against the same synthesis without it, in one run: the `say`
+// default with a guide of random openings (SYNTHETIC: the graph is no voice), Arg 1 = on at
+// weight 0.1, 0 = off. What it adds is the wanted openings (low-pass over the sentence's frames)
+// and one more term per offered state.
+void BM_Synthesize_JawTerm(benchmark::State& state) {
+  SynthesisOptions options;
+  options.search.jaw_weight = state.range(0) != 0 ? 0.1 : 0.0;
+  synthesize_with_guide(state, options, random_guide());
+}
 BENCHMARK(BM_Synthesize_JawTerm)->ArgName("jaw")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+// The jaw's level (jaw_level.hpp) on the same sentence, Arg 1 = level 1, 0 = off: each frame's
+// opening, two low-passes over the sentence and one move per frame, after the search.
+void BM_Synthesize_JawLevel(benchmark::State& state) {
+  SynthesisOptions options;
+  options.jaw_level = state.range(0) != 0 ? 1.0 : 0.0;
+  synthesize_with_guide(state, options, random_guide());
+}
+BENCHMARK(BM_Synthesize_JawLevel)->ArgName("level")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 // Making the guide from a voice the size of the default one (66,103 frames, k = 17, 6,892 phone
 // states, SYNTHETIC values): done once per command when the term is on.

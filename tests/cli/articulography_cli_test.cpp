@@ -136,6 +136,21 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
   EXPECT_EQ(kj["animations"][0]["animated_by"], "voice");
   EXPECT_NE(kj["animations"][0]["curves"]["ours_mm"]["jaw_opening"], j["animations"][0]["curves"]["ours_mm"]["jaw_opening"])
       << "the jaw term chose other units";
+  // --jaw-level moves the voice's slow jaw towards the wanted one (spec/synthesis.md, "The jaw's
+  // level"): the same units, another jaw; the talker's articulation does not take it.
+  const auto l = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha +
+                                     ".lab --talker --jaw-level 1 --voice " + voice() + " --json-out " + out("l.json") + " -q"));
+  ASSERT_EQ(l.exit_code, 0) << l.err;
+  EXPECT_NE(l.out.find(" --jaw-level 1 --talker\n"), std::string::npos) << l.out;
+  const auto lj = nlohmann::json::parse(read_file(out("l.json")));
+  EXPECT_EQ(lj["animations"][0]["synthesis"]["units"], j["animations"][0]["synthesis"]["units"]);
+  double jaw_change = 0;
+  const auto& levelled_jaw = lj["animations"][0]["curves"]["ours_mm"]["jaw_opening"];
+  const auto& recorded_jaw = j["animations"][0]["curves"]["ours_mm"]["jaw_opening"];
+  for (std::size_t n = 0; n < levelled_jaw.size(); ++n)
+    jaw_change = std::max(jaw_change, std::abs(levelled_jaw[n].get<double>() - recorded_jaw[n].get<double>()));
+  EXPECT_GT(jaw_change, 0.2) << "the jaw moved (mm)";
+  EXPECT_EQ(lj["animations"][1]["curves"]["ours_mm"], kj["animations"][1]["curves"]["ours_mm"]) << "the talker is not levelled";
   const auto& talker = kj["animations"][1];
   EXPECT_EQ(talker["animated_by"], "reference talker (SYNTHETIC)");
   EXPECT_EQ(talker["synthesis"]["units"], 0);

@@ -27,7 +27,7 @@ TEST(EvalSynthCli, BadVoicesExitOneAndNameTheFile) {
 TEST(EvalSynthCli, UsageMistakesExitTwo) {
   const std::string voice = std::string(FAPCAST_TEST_DATA) + "/voice/bad/bad.005.truncated.fapv";
   for (const char* args : {"--count 0", "--count 21", "--beta -1", "--duration-weight -0.5", "--jaw-weight -1",
-                           "--jaw-cutoff 30", "--jaw-cutoff 0", "--seed x", "--bogus",
+                           "--jaw-cutoff 30", "--jaw-cutoff 0", "--jaw-level 1.5", "--jaw-level -1", "--seed x", "--bogus",
                            "--voice v.fapv", "--json out.json"}) {  // the voice is positional, outputs end in -out
     const auto r = run_command(fapcast("eval synth -q " + voice + " " + std::string(args)));
     EXPECT_EQ(r.exit_code, 2) << args << ": " << r.err;

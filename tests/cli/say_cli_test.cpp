@@ -409,7 +409,7 @@ SynthesizedTrack library_track(const Voice& v, const Audio& audio) {
   const auto phones = fit_phones_to_audio(timed_phones(a.segments, audio.sample_rate, "t"), samples,
                                           audio.sample_rate.hz / 50, "t");
   const SynthesisOptions options;  // the library's defaults, which `animate` ships
-  return synthesize(v.graph(), v.frame_coefficients(), phones, audio.sample_rate, samples, options, "t");
+  return synthesize(v, phones, audio.sample_rate, samples, options, "t");
 }
 
 double mean_fap(const FapSequence& seq, int fap) {

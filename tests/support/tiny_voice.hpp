@@ -1,11 +1,13 @@
 #pragma once
 // A hand-made complete voice for tests (Voice::open accepts it): small, or as wide as a real face.
 #include <Eigen/Core>
+#include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include "fapcast/core/file_io.hpp"
 #include "fapcast/voice/voice.hpp"
 #include "fapcast/voice/voice_file.hpp"
 #include "fapcast/voice/voice_graph.hpp"
@@ -27,6 +29,9 @@ struct TinyVoice {
   Eigen::Index components = 1;
   Eigen::Index centres = 2;
   std::optional<RowMajorMatrixXf> face_maps;  // FMAP, vertices x 9, when set
+  std::optional<RowMajorMatrixXf> pca_components;  // k x D instead of the shifted identity, when set
+  std::optional<RowMajorMatrixXf> pca_variances;   // 1 x k instead of 0.25 each, when set
+  Eigen::Index source_points = 1;  // feature points in feature_points: the RBF centres' width / 3
 
   TinyVoice() {
     provenance.corpus = "hand-made";
@@ -59,6 +64,13 @@ struct TinyVoice {
     feature_points = voice_feature_points_json(points, rigid);
   }
 
+  // Written to the temporary directory as `name` and opened.
+  Voice open(const std::string& name) const {
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / name;
+    write_file_atomically(file, bytes());
+    return Voice::open(file);
+  }
+
   std::string bytes() const {
     VoiceFileWriter w;
     auto add = [&](SectionId id, auto matrix) {
@@ -68,15 +80,16 @@ struct TinyVoice {
     const Eigen::Index d = 3 * vertices;
     const RowMajorMatrixXf ramp = RowMajorMatrixXf(Eigen::RowVectorXf::LinSpaced(d, 0.f, static_cast<float>(d - 1)));
     RowMajorMatrixXf pc = RowMajorMatrixXf::Zero(components, d), rbf = RowMajorMatrixXf::Zero(centres, d);
-    RowMajorMatrixXd centre = RowMajorMatrixXd::Zero(centres, 3);
+    RowMajorMatrixXd centre = RowMajorMatrixXd::Zero(centres, 3 * source_points);
     for (Eigen::Index r = 0; r < components; ++r) pc(r, r + 1) = 1.f;
     for (Eigen::Index j = 0; j < centres; ++j) {
       rbf(j, 1) = j % 2 == 0 ? 1.f : -1.f;
       if (j > 0) centre(j, 1) = -0.01 * static_cast<double>(j);  // (not -0.0: the fixtures are byte-exact)
     }
     add(voice_section::kPcaMean, ramp);
-    add(voice_section::kPcaComponents, pc);
-    add(voice_section::kPcaVariances, RowMajorMatrixXf(RowMajorMatrixXf::Constant(1, components, 0.25f)));
+    add(voice_section::kPcaComponents, pca_components ? *pca_components : pc);
+    add(voice_section::kPcaVariances,
+        pca_variances ? *pca_variances : RowMajorMatrixXf(RowMajorMatrixXf::Constant(1, components, 0.25f)));
     add(voice_section::kFrameCoefficients, coefficients);
     add(voice_section::kRbfCentres, centre);
     add(voice_section::kRbfWeights, rbf);

@@ -4,12 +4,10 @@
 #include "fapcast/synthesis/jaw_guide.hpp"
 #include "fapcast/synthesis/synthesis.hpp"
 
-#include "fapcast/core/file_io.hpp"
+#include "support/target_timeline.hpp"
 #include "support/tiny_voice.hpp"
 
 #include <gtest/gtest.h>
-
-#include <filesystem>
 
 namespace fapcast {
 namespace {
@@ -34,27 +32,8 @@ test::TinyVoice chin_voice(const std::string& chin_label = "2.1") {
   return tiny;
 }
 
-Voice open_voice(const test::TinyVoice& tiny, const std::string& name) {
-  const std::filesystem::path file = std::filesystem::temp_directory_path() / name;
-  write_file_atomically(file, tiny.bytes());
-  return Voice::open(file);
-}
-
-// `frames` frames of each phone in turn.
-TargetTimeline timeline_of(std::initializer_list<std::pair<Phone, std::int64_t>> phones) {
-  TargetTimeline t;
-  t.sample_rate = SampleRate{16000};
-  std::int64_t at = 0;
-  for (const auto& [phone, frames] : phones) {
-    t.phones.push_back({search_viseme(phone), at, at + frames, false});
-    t.phone_of.push_back(phone);
-    at += frames;
-  }
-  return t;
-}
-
 TEST(JawGuide, MeasuresTheChinInUnitsOfTheSpeechStatesSpread) {
-  const Voice voice = open_voice(chin_voice(), "fapcast_jaw_guide.fapv");
+  const Voice voice = chin_voice().open("fapcast_jaw_guide.fapv");
   const JawGuide guide = make_jaw_guide(voice);
   EXPECT_NEAR(guide.spread_mm, 2.0, 1e-4);
   ASSERT_EQ(guide.state_opening.size(), 3u);
@@ -67,7 +46,7 @@ TEST(JawGuide, MeasuresTheChinInUnitsOfTheSpeechStatesSpread) {
 }
 
 TEST(JawGuide, RefusesAVoiceWithoutAChinOrWithAStillOne) {
-  const Voice no_chin = open_voice(chin_voice("2.2"), "fapcast_jaw_guide_no_chin.fapv");
+  const Voice no_chin = chin_voice("2.2").open("fapcast_jaw_guide_no_chin.fapv");
   try {
     (void)make_jaw_guide(no_chin);
     FAIL() << "a voice without FP 2.1 was accepted";
@@ -78,7 +57,7 @@ TEST(JawGuide, RefusesAVoiceWithoutAChinOrWithAStillOne) {
   }
   test::TinyVoice still = chin_voice();
   still.coefficients = RowMajorMatrixXf{{0.f}, {0.001f}, {0.001f}, {0.001f}, {0.001f}};
-  const Voice still_voice = open_voice(still, "fapcast_jaw_guide_still.fapv");
+  const Voice still_voice = still.open("fapcast_jaw_guide_still.fapv");
   try {
     (void)make_jaw_guide(still_voice);
     FAIL() << "a voice whose chin does not move was accepted";
@@ -88,41 +67,42 @@ TEST(JawGuide, RefusesAVoiceWithoutAChinOrWithAStillOne) {
 }
 
 TEST(JawGuide, WantsEachPhonesOpeningSmoothedAcrossItsNeighbours) {
-  const Voice voice = open_voice(chin_voice(), "fapcast_jaw_guide_wanted.fapv");
+  const Voice voice = chin_voice().open("fapcast_jaw_guide_wanted.fapv");
   const JawGuide guide = make_jaw_guide(voice);
   // Held long, a phone reaches its own opening.
-  const auto held = wanted_jaw(guide, timeline_of({{Phone::AA, 120}}), 4.0);
+  const auto held = wanted_jaw(guide, test::target_timeline({{Phone::AA, 120}}), 4.0);
   ASSERT_EQ(held.size(), 1u);
   EXPECT_NEAR(held[0], 1.0f, 1e-4f);
   // Two long phones: each near its own, pulled towards the other near the boundary, symmetric.
-  const auto pair = wanted_jaw(guide, timeline_of({{Phone::M, 60}, {Phone::AA, 60}}), 4.0);
+  const auto pair = wanted_jaw(guide, test::target_timeline({{Phone::M, 60}, {Phone::AA, 60}}), 4.0);
   ASSERT_EQ(pair.size(), 2u);
   EXPECT_LT(pair[0], -0.8f);
   EXPECT_GT(pair[0], -1.0f);
   EXPECT_NEAR(pair[0], -pair[1], 0.02f);
   // A short M between open vowels does not close the jaw: the smoothing shares the vowels' opening.
-  const auto brief = wanted_jaw(guide, timeline_of({{Phone::AA, 30}, {Phone::M, 3}, {Phone::AA, 30}}), 4.0);
+  const auto brief = wanted_jaw(guide, test::target_timeline({{Phone::AA, 30}, {Phone::M, 3}, {Phone::AA, 30}}), 4.0);
   EXPECT_GT(brief[1], 0.0f);
-  const auto slower = wanted_jaw(guide, timeline_of({{Phone::AA, 30}, {Phone::M, 3}, {Phone::AA, 30}}), 20.0);
+  const auto slower = wanted_jaw(guide, test::target_timeline({{Phone::AA, 30}, {Phone::M, 3}, {Phone::AA, 30}}), 20.0);
   EXPECT_LT(slower[1], brief[1]) << "a higher cut-off lets the jaw follow a brief phone further";
   // A timeline that starts later gives the same (pieces of a long text).
-  TargetTimeline later = timeline_of({{Phone::M, 60}, {Phone::AA, 60}});
+  TargetTimeline later = test::target_timeline({{Phone::M, 60}, {Phone::AA, 60}});
   for (auto& p : later.phones) p.first_frame += 500, p.end_frame += 500;
   EXPECT_EQ(wanted_jaw(guide, later, 4.0), pair);
 }
 
 TEST(JawGuide, SynthesisRefusesTheJawTermWithoutTheGuide) {
-  const Voice voice = open_voice(chin_voice(), "fapcast_jaw_guide_synthesis.fapv");
+  const Voice voice = chin_voice().open("fapcast_jaw_guide_synthesis.fapv");
   SynthesisOptions options;
   options.search.jaw_weight = 1.0;
-  const TargetTimeline timeline = timeline_of({{Phone::SIL, 2}, {Phone::M, 3}, {Phone::AA, 3}});
+  const TargetTimeline timeline = test::target_timeline({{Phone::SIL, 2}, {Phone::M, 3}, {Phone::AA, 3}});
   EXPECT_THROW((void)synthesize(voice.graph(), voice.frame_coefficients(), timeline, options), std::invalid_argument);
   const auto guide = jaw_guide_for(voice, options);
   ASSERT_TRUE(guide.has_value());
   const SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), timeline, options, &*guide);
   EXPECT_EQ(track.search.states, (std::vector<StateId>{0, 1, 2}));
   options.search.jaw_weight = 0.0;
-  EXPECT_FALSE(jaw_guide_for(voice, options).has_value()) << "no guide is made while the term is off";
+  options.jaw_level = 0.0;
+  EXPECT_FALSE(jaw_guide_for(voice, options).has_value()) << "no guide is made while neither the term nor the level wants it";
 }
 
 }  // namespace

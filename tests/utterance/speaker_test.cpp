@@ -46,8 +46,7 @@ TEST(Speaker, OneSentenceIsItsAudioWithFramesAndWeightsAtTheOutputRate) {
   for (const FapFrame& f : s.faps.frames) moved |= f.value(5) != s.faps.frames.front().value(5);
   EXPECT_TRUE(moved);
   // The weights are the synthesiser's: frame 0 is the track's first 60 fps frame.
-  const SynthesizedTrack track = synthesize(voice.graph(), voice.frame_coefficients(), s.phones,
-                                            s.audio.sample_rate, samples, settings.synthesis, "t");
+  const SynthesizedTrack track = synthesize(voice, s.phones, s.audio.sample_rate, samples, settings.synthesis, "t");
   EXPECT_TRUE(s.weights.row(0).isApprox(track.pca_frames.row(0)));
   EXPECT_TRUE(s.weights.row(5).isApprox(track.pca_frames.row(12)));  // 5 * 60 / 25 = 12 exactly
 }

@@ -1,12 +1,14 @@
 #include "fapcast/eval/synthesis_evaluation.hpp"
 
 #include "fapcast/eval/held_out_sentences.hpp"
+#include "fapcast/eval/trajectory_agreement.hpp"
 #include "fapcast/core/portable_random.hpp"
 #include "fapcast/corpus/recording_script.hpp"
 #include "fapcast/talker/reference_talker.hpp"
 #include "fapcast/synthesis/synthesis.hpp"
 #include "fapcast/voice/voice_frame_grid.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -115,6 +117,22 @@ EvaluationReport evaluate_synthesis(const EvaluationFace& face, std::span<const 
     report.systems.push_back({systems[s].name, scorers[s].score(),
                               report.phones > 0 ? static_cast<double>(units[s]) / static_cast<double>(report.phones) : 0.0});
   return report;
+}
+
+std::optional<double> median_lip_height_lag_ms(const EvaluationReport& report, std::size_t system) {
+  std::vector<double> lags;
+  for (const UtteranceCurves& u : report.utterances) {
+    if (system >= u.synthesised.size()) throw std::out_of_range("lip height lag: no such system");
+    const std::size_t n = std::min(u.recorded.height.size(), u.synthesised[system].height.size());
+    if (n < 3) continue;
+    const std::span<const double> recorded(u.recorded.height.data(), n), synthesised(u.synthesised[system].height.data(), n);
+    lags.push_back(1000.0 * trajectory_agreement(recorded, synthesised, static_cast<double>(kVoiceFramesPerSecond), 0.1, 0.001).best_lag_s);
+  }
+  if (lags.empty()) return std::nullopt;
+  const auto middle = lags.begin() + static_cast<std::ptrdiff_t>(lags.size() / 2);
+  std::nth_element(lags.begin(), middle, lags.end());
+  if (lags.size() % 2 == 1) return *middle;
+  return 0.5 * (*middle + *std::max_element(lags.begin(), middle));
 }
 
 }  // namespace fapcast

@@ -45,14 +45,17 @@ std::string format_evaluation_table(const EvaluationReport& report, const Evalua
          "positions on the target face\n";
   const std::vector<std::string> header{"system",    "height %",  "width %",  "protr. %",   "height mm",
                                         "width mm",  "protr. mm", "r height", "r width",    "r protr.",
-                                        "jaw mm",    "r jaw",     "lip RMS mm", "all RMS mm", "units/phone"};
+                                        "jaw mm",    "r jaw",     "lip RMS mm", "all RMS mm", "lag ms",
+                                        "units/phone"};
   std::size_t name_width = header[0].size();
   for (const auto& s : report.systems) name_width = std::max(name_width, s.name.size());
   out << pad_right(header[0], name_width);
   for (std::size_t i = 1; i < header.size(); ++i) out << "  " << pad_left(header[i], header[i].size());
   out << "\n";
-  for (const auto& s : report.systems) {
+  for (std::size_t system = 0; system < report.systems.size(); ++system) {
+    const auto& s = report.systems[system];
     const auto& l = s.score.lips;
+    const auto lag = median_lip_height_lag_ms(report, system);
     const bool jaw = s.score.jaw.frames > 0;  // the face has FP 2.1
     const std::vector<std::string> cells{fixed(l.height.mean_error_percent, 2), fixed(l.width.mean_error_percent, 2),
                                          fixed(l.protrusion.mean_error_percent, 2),
@@ -62,6 +65,7 @@ std::string format_evaluation_table(const EvaluationReport& report, const Evalua
                                          jaw ? fixed(mm(s.score.jaw.mean_abs_difference), 3) : "-",
                                          jaw ? fixed(s.score.jaw.correlation, 3) : "-",
                                          fixed(s.score.lip_rms_mm, 2), fixed(s.score.all_rms_mm, 2),
+                                         lag ? fixed(*lag, 0) : "-",
                                          s.units_per_phone > 0 ? fixed(s.units_per_phone, 3) : "-"};
     out << pad_right(s.name, name_width);
     for (std::size_t i = 0; i < cells.size(); ++i) out << "  " << pad_left(cells[i], header[i + 1].size());
@@ -73,7 +77,9 @@ std::string format_evaluation_table(const EvaluationReport& report, const Evalua
 
 nlohmann::json evaluation_json(const EvaluationReport& report, const EvaluationContext& context) {
   nlohmann::json systems = nlohmann::json::array();
-  for (const auto& s : report.systems)
+  for (std::size_t system = 0; system < report.systems.size(); ++system) {
+    const auto& s = report.systems[system];
+    const auto lag = median_lip_height_lag_ms(report, system);
     systems.push_back({{"name", s.name},
                        {"lip_height", agreement_json(s.score.lips.height)},
                        {"lip_width", agreement_json(s.score.lips.width)},
@@ -82,7 +88,9 @@ nlohmann::json evaluation_json(const EvaluationReport& report, const EvaluationC
                        {"lip_fp_rms_mm", s.score.lip_rms_mm},
                        {"all_fp_rms_mm", s.score.all_rms_mm},
                        {"frames", s.score.frames},
+                       {"lip_height_lag_ms", lag ? nlohmann::json(*lag) : nlohmann::json()},
                        {"units_per_phone", s.units_per_phone}});
+  }
   nlohmann::json utterances = nlohmann::json::array();
   for (const auto& u : report.utterances) utterances.push_back({{"id", u.id}, {"text", u.text}, {"frames", u.recorded.size()}});
   return {{"format", "fapcast eval synth"},

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace fapcast::cli {
 namespace {
@@ -55,6 +57,35 @@ TEST(SynthesisReport, TableHasOneRowPerSystemAndSaysSynthetic) {
   EXPECT_DOUBLE_EQ(j["systems"][0]["lip_fp_rms_mm"].get<double>(), 1.25);
   EXPECT_DOUBLE_EQ(j["systems"][0]["jaw_opening_chin"]["correlation"].get<double>(), 0.875);
   EXPECT_TRUE(j["systems"][1]["jaw_opening_chin"].is_null());
+}
+
+// The lag column: the median over utterances of the delay that best aligns each system's lip
+// height with the recording (+ = the system behind).
+TEST(SynthesisReport, LagIsTheMedianDelayOfTheLipHeight) {
+  EvaluationReport r = report();
+  EXPECT_NEAR(*median_lip_height_lag_ms(r, 0), 0.0, 1e-9) << "an offset is no delay";
+  // Two more utterances: the first system one frame (16.7 ms) behind in both, the second two
+  // frames ahead in one and on time in the other.
+  for (int k = 0; k < 2; ++k) {
+    UtteranceCurves u{"heldout0" + std::to_string(k + 2), "x", {}, {{}, {}}};
+    for (int n = 0; n < 120; ++n) {
+      const auto height = [](int i) { return 10 + 5 * std::sin(0.15 * i) + std::sin(0.4 * i); };
+      u.recorded.push_back({height(n), 50.0, 90.0});
+      u.synthesised[0].push_back({height(n - 1), 50.0, 90.0});
+      u.synthesised[1].push_back({height(k == 0 ? n + 2 : n), 50.0, 90.0});
+    }
+    r.utterances.push_back(u);
+  }
+  EXPECT_NEAR(*median_lip_height_lag_ms(r, 0), 1000.0 / 60, 1.0) << "the median of 0, 16.7, 16.7";
+  EXPECT_NEAR(*median_lip_height_lag_ms(r, 1), 0.0, 1.0) << "the median of 0, -33.3, 0";
+  EXPECT_THROW((void)median_lip_height_lag_ms(r, 2), std::out_of_range);
+  const std::string t = format_evaluation_table(r, {"v.fapv", 2, ""});
+  EXPECT_NE(t.find("lag ms"), std::string::npos) << t;
+  EXPECT_NE(t.substr(t.find("\nvariable-length")).find("  17  "), std::string::npos) << t;
+  const auto j = evaluation_json(r, {"v.fapv", 2, ""});
+  EXPECT_NEAR(j["systems"][0]["lip_height_lag_ms"].get<double>(), 1000.0 / 60, 1.0);
+  EXPECT_TRUE(evaluation_json(EvaluationReport{{report().systems}, {}, 0, 0}, {"v.fapv", 2, ""})["systems"][0]["lip_height_lag_ms"].is_null())
+      << "no utterance, no lag";
 }
 
 TEST(SynthesisReport, LipPlotHasThreePanelsAndALinePerSystem) {

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -96,6 +97,12 @@ struct EvaluationReport {
   std::size_t phones = 0;  // target phones over all utterances
   std::size_t frames = 0;  // recorded frames over all utterances
 };
+
+// The delay that best aligns system `system`'s lip height with the recorded one in each
+// utterance (trajectory_agreement at 60 fps over -100..+100 ms in 1 ms steps; + = the system
+// behind), and the median over utterances: a check of the whole pipeline's timing on its own
+// talker (spec/evaluation.md). nullopt when no utterance has 3 frames.
+std::optional<double> median_lip_height_lag_ms(const EvaluationReport& report, std::size_t system);
 
 // Scores every system on every utterance. Throws std::invalid_argument when the face is
 // incomplete or a system's coefficients do not have the face's k columns.

@@ -19,7 +19,8 @@ struct EvaluationContext {
 };
 
 // One row per system: height / width / protrusion error % and correlation, lip-FP and all-FP
-// RMS (mm), units per phone ("-" for a system that concatenates no units).
+// RMS (mm), the lip height's median best lag (ms, + = the system behind the recording;
+// median_lip_height_lag_ms), units per phone ("-" for a system that concatenates no units).
 std::string format_evaluation_table(const EvaluationReport& report, const EvaluationContext& context);
 
 nlohmann::json evaluation_json(const EvaluationReport& report, const EvaluationContext& context);

@@ -34,6 +34,16 @@ namespace {
 // The 60 fps capture grid as a clock: to_sample at it gives frame numbers.
 constexpr SampleRate kVoiceFrameClock{kVoiceFramesPerSecond};
 
+// The first voice frame shown at or after `t` seconds: synthesis's rule (first_frame_at,
+// voice_frame_grid.hpp), so that a corpus frame belongs to the phone on screen at its instant as
+// a target frame does; a unit and its target then start alike, and nothing trails by half a frame
+// (spec/voice.md, "Corpus"). An edge within a microsecond of a frame's instant is on it: a
+// TextGrid's decimal seconds are not exact.
+std::int64_t first_frame_at_s(double t) {
+  constexpr double kFrames = static_cast<double>(kVoiceFramesPerSecond);
+  return static_cast<std::int64_t>(std::ceil(t * kFrames - 1e-6 * kFrames));
+}
+
 [[noreturn]] void refuse(const fs::path& file, const std::string& rule, const std::string& detail) {
   throw InputError({file.string(), std::nullopt, std::nullopt}, rule, detail);
 }
@@ -363,7 +373,7 @@ CorpusTake read_corpus_take(const CorpusListing& listing, std::size_t index) {
       refuse(timing, "corpus-alignment", "phones interval " + std::to_string(i + 1) + ": " + what);
     }
     const Phone p = *phone;
-    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(to_sample(t, kVoiceFrameClock), 0, frames); };
+    const auto clamp = [&](double t) { return std::clamp<std::int64_t>(first_frame_at_s(t), 0, frames); };
     const std::int64_t first = clamp(iv.start_s);
     const std::int64_t end = clamp(iv.end_s);
     if (end <= first) continue;

@@ -4,9 +4,6 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
-#include "fapcast/core/file_io.hpp"
 #include "support/tiny_voice.hpp"
 
 namespace fapcast {
@@ -36,9 +33,7 @@ Voice ict_wide_voice(const std::optional<RowMajorMatrixXf>& maps, const std::str
   TinyVoice t;
   t.vertices = ict_face_model().vertex_count();
   t.face_maps = maps;
-  const auto file = std::filesystem::temp_directory_path() / name;
-  write_file_atomically(file, t.bytes());
-  return Voice::open(file);
+  return t.open(name);
 }
 
 TEST(SpeechBasis, TheExpressionIsOneMoreDirectionOnTheVoicesFace) {
@@ -79,10 +74,7 @@ TEST(SpeechBasis, TheExpressionIsOneMoreDirectionOnTheVoicesFace) {
 }
 
 TEST(SpeechBasis, RefusesAVoiceOfAnotherTopology) {
-  TinyVoice t;  // three vertices
-  const auto file = std::filesystem::temp_directory_path() / "fapcast_expr_tiny.fapv";
-  write_file_atomically(file, t.bytes());
-  const Voice voice = Voice::open(file);
+  const Voice voice = TinyVoice().open("fapcast_expr_tiny.fapv");  // three vertices
   EXPECT_THROW((void)speech_basis(voice, ExpressionBlend{{Expression::joy, 40}, std::nullopt}), std::invalid_argument);
 }
 

@@ -66,10 +66,7 @@ const cli::Registration eval_synth_command{"eval synth", [](CLI::App& app) {
     namespace fs = std::filesystem;
     const fs::path voice_path = args->voice.empty() ? cli::ensure_default_voice(args->quiet) : fs::path(args->voice);
     const auto voice = Voice::open(voice_path);
-    if (!voice.provenance().synthetic)
-      throw std::runtime_error(voice_path.string() + ": eval synth records held-out sentences with the reference "
-                               "talker, so it needs a voice built from a reference corpus (provenance synthetic)");
-    const FaceModel actor = reference_actor(ict_face_model(), voice.provenance().seed);
+    const FaceModel actor = held_out_actor(voice);
     if (!args->quiet) std::cerr << "recording " << args->count << " held-out sentences (seed " << args->seed << ")\n";
     const auto held = record_held_out(actor, args->seed, args->count);
     const SynthesisOptions& options = args->options;

@@ -6,6 +6,9 @@
 #include "fapcast/voice/voice.hpp"
 #include "fapcast/builder/voice_corpus.hpp"
 
+#include "fapcast/talker/reference_talker.hpp"
+
+#include <cmath>
 #include <stdexcept>
 
 namespace fapcast {
@@ -40,6 +43,25 @@ EvaluationFace evaluation_face(const Voice& voice) {
             return source_vectors_m(preprocess_take(take, rigid_marker_rows(), reference).frames, "held-out take");
           },
           evaluation_points(labels, vertices, temples)};
+}
+
+FaceModel held_out_actor(const Voice& voice) {
+  const auto& provenance = voice.provenance();
+  const std::string file = voice.file().source();
+  if (!provenance.synthetic)
+    throw std::runtime_error(file + ": held-out takes are recorded by the reference talker, so the voice must be "
+                             "built from a reference corpus (provenance synthetic), and this one is not");
+  const auto seed = provenance.parameters.find("corpus_seed");
+  if (seed == provenance.parameters.end())
+    throw std::runtime_error(file + ": the voice does not say which reference corpus it was built from (no "
+                             "provenance parameter corpus_seed: its corpus had no manifest seed), so the actor "
+                             "to record held-out takes with is unknown");
+  // Seeds are written as JSON numbers (doubles): whole and exactly representable below 2^53.
+  const double value = seed->second;
+  if (!(value >= 0.0 && value < 9007199254740992.0 && std::floor(value) == value))
+    throw std::runtime_error(file + ": provenance parameter corpus_seed " + std::to_string(value) +
+                             " is not a whole number from 0 to 2^53");
+  return reference_actor(ict_face_model(), static_cast<std::uint64_t>(value));
 }
 
 }  // namespace fapcast

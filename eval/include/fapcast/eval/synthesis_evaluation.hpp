@@ -77,6 +77,15 @@ class Voice;
 // into `voice`. Throws std::runtime_error naming the voice file when it lacks a rigid marker.
 EvaluationFace evaluation_face(const Voice& voice);
 
+// The reference actor whose corpus `voice` was built from: reference_actor(the ICT face, the
+// corpus's seed), the seed read from the provenance parameter `corpus_seed` that the voice build
+// copies from a reference corpus's manifest. (The provenance's own `seed` is the build's EM-PCA
+// start, not the corpus's.) Held-out takes must be recorded by this actor: another actor's face
+// is another retargeting problem, and the scores would be meaningless. Throws
+// std::runtime_error naming the voice file for a voice not built from a reference corpus (not
+// synthetic, or no whole `corpus_seed`).
+FaceModel held_out_actor(const Voice& voice);
+
 struct SystemReport {
   std::string name;
   SynthesisScore score;

@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# How much does one voice's score on real articulography depend on the corpus draw? Records the
+# SYNTHETIC reference corpus with each seed given (the default voice's recipe, another actor and
+# other takes per seed), builds a voice from each, and runs `fapcast eval articulography` on
+# MOCHA-TIMIT fsew0_001 (reference alignment and the own alignment) with each voice. Prints each
+# voice's range ratio / r at zero lag / best lag per measure, then the mean, least and greatest
+# over the seeds (spec/articulography.md, "One take, six voices").
+#   tools/articulography-seeds.sh [SEED ...]        (default: 1 2 3 4 5 6; seed 1 is the default voice's)
+#   FAPCAST=PATH   the executable (default build/rel/cli/fapcast)
+#   WORK=DIR       where corpora (deleted after each build), voices and reports go
+#                  (default build/articulography-seeds; voices are reused when present)
+# Extra arguments for every `eval articulography` run: FAPCAST_EVAL_ARGS (e.g. "--jaw-weight 0.1").
+set -euo pipefail
+cd "$(dirname "$0")/.."
+exe=${FAPCAST:-build/rel/cli/fapcast}
+work=${WORK:-build/articulography-seeds}
+seeds=("$@")
+[ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3 4 5 6)
+[ -x "$exe" ] || { echo "articulography-seeds: no executable $exe (build it, or set FAPCAST)" >&2; exit 2; }
+mkdir -p "$work"
+m=tests/data/mocha/fsew0_001
+
+for seed in "${seeds[@]}"; do
+  [[ $seed =~ ^[0-9]+$ ]] || { echo "articulography-seeds: seed '$seed' is not a whole number" >&2; exit 2; }
+  voice=$work/voice-seed$seed.fapv
+  if [ ! -f "$voice" ]; then
+    rm -rf "$work/corpus-seed$seed"
+    "$exe" corpus record-reference -o "$work/corpus-seed$seed" --seed "$seed" -q >/dev/null
+    "$exe" voice build "$work/corpus-seed$seed" -o "$voice" -q >/dev/null
+    rm -rf "$work/corpus-seed$seed"
+  fi
+  # shellcheck disable=SC2086  # FAPCAST_EVAL_ARGS is a list of words
+  "$exe" eval articulography $m.ema $m.wav $m.lab --text "This was easy for us." --voice "$voice" \
+    ${FAPCAST_EVAL_ARGS:-} -q > "$work/report-seed$seed.md" 2> "$work/report-seed$seed.log" ||
+    { cat "$work/report-seed$seed.log" >&2; exit 1; }
+done
+
+# Table rows of the voice's two animations: "## animated from the reference alignment" / "... own
+# alignment ..."; columns: measure, range real, range ours, ratio, r, best lag, r at best lag.
+for seed in "${seeds[@]}"; do
+  awk -v seed="$seed" -F' *\\| *' '
+    /^## animated from the reference alignment/ { phones = "reference" }
+    /^## animated from the own alignment/ { phones = "own" }
+    /^## / && !/^## animated from the (reference|own) alignment/ { phones = "" }
+    phones != "" && $2 ~ /^(lip aperture|jaw opening|lower-lip protrusion)$/ {
+      lag = $7; sub(/ .*/, "", lag)
+      printf "%s\t%s\t%s\t%s\t%s\t%s\n", seed, phones, $2, $5, $6, lag
+    }' "$work/report-seed$seed.md"
+done > "$work/rows.tsv"
+
+echo "fsew0_001 on voices of reference-corpus seeds ${seeds[*]} (ratio = range ours / real; r at zero lag; best lag ms, + = ours behind)"
+echo
+echo "| seed | alignment | lip ratio / r / lag | jaw ratio / r / lag | protrusion ratio / r / lag |"
+echo "|---|---|---|---|---|"
+awk -F'\t' '
+  { key = $1 "\t" $2; if (!(key in seen)) { seen[key] = 1; order[++n] = key }
+    cell[key, $3] = sprintf("%.2f / %.2f / %d", $4, $5, $6) }
+  END { for (i = 1; i <= n; ++i) { split(order[i], k, "\t")
+          printf "| %s | %s | %s | %s | %s |\n", k[1], k[2], cell[order[i], "lip aperture"],
+                 cell[order[i], "jaw opening"], cell[order[i], "lower-lip protrusion"] } }' "$work/rows.tsv"
+echo
+echo "| alignment | measure | ratio mean (least-greatest) | r mean (least-greatest) | best lag ms mean (least-greatest) |"
+echo "|---|---|---|---|---|"
+awk -F'\t' '
+  function keep(name, v) { sum[name] += v; if (!(name in lo) || v < lo[name]) lo[name] = v; if (!(name in hi) || v > hi[name]) hi[name] = v }
+  { key = $2 "\t" $3; if (!(key in count)) order[++n] = key; ++count[key]
+    keep(key "\tratio", $4); keep(key "\tr", $5); keep(key "\tlag", $6) }
+  END { for (i = 1; i <= n; ++i) { key = order[i]; c = count[key]; split(key, k, "\t")
+          printf "| %s | %s | %.2f (%.2f-%.2f) | %.2f (%.2f-%.2f) | %.0f (%d to %d) |\n", k[1], k[2],
+                 sum[key "\tratio"] / c, lo[key "\tratio"], hi[key "\tratio"],
+                 sum[key "\tr"] / c, lo[key "\tr"], hi[key "\tr"],
+                 sum[key "\tlag"] / c, lo[key "\tlag"], hi[key "\tlag"] } }' "$work/rows.tsv"

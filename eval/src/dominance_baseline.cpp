@@ -61,7 +61,9 @@ Eigen::MatrixXf dominance_interpolation(const VisemeTargets& targets,
     const double t_s = static_cast<double>(origin + n) / fps;
     blend.clear();
     for (const auto& p : phones) {
-      const double centre_s = 0.5 * static_cast<double>(p.first_frame + p.end_frame) / fps;
+      // The mean time of the phone's frames: they are shown at or after its start, so their span's
+      // own middle, (first + end) / 2, would lie half a frame after the phone's middle on average.
+      const double centre_s = 0.5 * static_cast<double>(p.first_frame + p.end_frame - 1) / fps;
       const double d = baseline_dominance(p.viseme, options).at(t_s - centre_s);
       const auto target = targets.coefficients.row(static_cast<Eigen::Index>(p.viseme));
       for (Eigen::Index c = 0; c < k; ++c) blend.add(static_cast<std::size_t>(c), d, target(c));

@@ -71,6 +71,21 @@ TEST(DominanceBaseline, ALongPhoneReachesItsTarget) {
     EXPECT_LT((y.row(n) - y.row(n - 1)).norm(), 0.2f * uw.norm()) << "no jumps, frame " << n;
 }
 
+// A phone's frames are shown at or after its start; their mean time is where its target peaks, not
+// the middle of their span half a frame later (which made the baseline trail its talker by 8 ms).
+TEST(DominanceBaseline, APhoneIsCentredOnTheMeanTimeOfItsFrames) {
+  const CentreCorpus c = centre_corpus();
+  const auto vt = viseme_targets(PhoneGraph(c.states), c.frames);
+  const auto phones = targets({{VisemeClass::kSilence, 30}, {VisemeClass::kCloseRounded, 7}, {VisemeClass::kSilence, 30}});
+  const Eigen::MatrixXf y = dominance_interpolation(vt, phones);
+  const Eigen::RowVectorXf uw = vt.coefficients.row(static_cast<Eigen::Index>(VisemeClass::kCloseRounded));
+  const Eigen::Index middle = 33;  // frames 30..36
+  for (Eigen::Index j = 1; j <= 3; ++j)
+    EXPECT_LT((y.row(middle - j) - y.row(middle + j)).norm(), 1e-4f * uw.norm()) << "symmetric about frame 33, j " << j;
+  for (Eigen::Index n = 30; n <= 36; ++n)
+    EXPECT_LE((y.row(middle) - uw).norm(), (y.row(n) - uw).norm() + 1e-6f) << "nearest its target at the middle, not " << n;
+}
+
 TEST(DominanceBaseline, ContactClassesWinShortPhones) {
   const CentreCorpus c = centre_corpus();
   const auto vt = viseme_targets(PhoneGraph(c.states), c.frames);

@@ -39,8 +39,8 @@ struct DominanceBaselineOptions {
 const Dominance& baseline_dominance(VisemeClass v, const DominanceBaselineOptions& options);
 
 // Frames [first_frame(first), end_frame(last)) of k coefficients: frame n (at n / fps seconds)
-// is the dominance-weighted mean of the targets of all phones, each centred on the middle of its
-// span. Throws std::invalid_argument when a target spans no frames, targets overlap or are out of
+// is the dominance-weighted mean of the targets of all phones, each centred on the mean time of
+// its frames. Throws std::invalid_argument when a target spans no frames, targets overlap or are out of
 // order, or a target's class has no recorded phone (naming it).
 Eigen::MatrixXf dominance_interpolation(const VisemeTargets& targets,
                                         std::span<const TargetPhone> phones,

@@ -3,6 +3,7 @@
 // library level: tests/eval/synthesis_evaluation_test.cpp, tests/eval/synthesis_report_test.cpp.)
 #include "cli/fapcast_command.hpp"
 #include "support/run_command.hpp"
+#include "support/tiny_voice.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,6 +23,19 @@ TEST(EvalSynthCli, BadVoicesExitOneAndNameTheFile) {
   EXPECT_NE(r.err.find("none.fapv"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir + "/out.json")) << "nothing written on failure";
   std::filesystem::remove_all(dir);
+}
+
+// Held-out takes are spoken by the actor of the voice's own corpus: a voice that does not say which
+// corpus it was built from is refused, not scored against another face.
+TEST(EvalSynthCli, AVoiceOfNoKnownCorpusSeedExitsOne) {
+  TinyVoice tiny;  // synthetic, no corpus_seed
+  const std::string file = (std::filesystem::temp_directory_path() / "eval_synth_no_corpus_seed.fapv").string();
+  write_file_atomically(file, tiny.bytes());
+  const auto r = run_command(fapcast("eval synth -q --count 1 " + file));
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_NE(r.err.find("eval_synth_no_corpus_seed.fapv: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("corpus_seed"), std::string::npos) << r.err;
+  std::filesystem::remove(file);
 }
 
 TEST(EvalSynthCli, UsageMistakesExitTwo) {

@@ -6,17 +6,17 @@
 # voice's range ratio / r at zero lag / best lag per measure, then the mean, least and greatest
 # over the seeds (spec/articulography.md, "One take, six voices").
 #   tools/articulography-seeds.sh [SEED ...]        (default: 1 2 3 4 5 6; seed 1 is the default voice's)
-#   FAPCAST=PATH   the executable (default build/rel/cli/fapcast)
+#   FAPCAST=PATH   the executable (default build/release/cli/fapcast, what tools/build.sh makes)
 #   WORK=DIR       where corpora (deleted after each build), voices and reports go
 #                  (default build/articulography-seeds; voices are reused when present)
 # Extra arguments for every `eval articulography` run: FAPCAST_EVAL_ARGS (e.g. "--jaw-weight 0.1").
 set -euo pipefail
 cd "$(dirname "$0")/.."
-exe=${FAPCAST:-build/rel/cli/fapcast}
+exe=${FAPCAST:-build/release/cli/fapcast}
 work=${WORK:-build/articulography-seeds}
 seeds=("$@")
 [ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3 4 5 6)
-[ -x "$exe" ] || { echo "articulography-seeds: no executable $exe (build it, or set FAPCAST)" >&2; exit 2; }
+[ -x "$exe" ] || { echo "articulography-seeds: no executable $exe (bash tools/build.sh, or set FAPCAST)" >&2; exit 2; }
 mkdir -p "$work"
 m=tests/data/mocha/fsew0_001
 

@@ -8,7 +8,8 @@
 #   tools/articulography-seeds.sh [SEED ...]        (default: 1 2 3 4 5 6; seed 1 is the default voice's)
 #   FAPCAST=PATH   the executable (default build/release/cli/fapcast, what tools/build.sh makes)
 #   WORK=DIR       where corpora (deleted after each build), voices and reports go
-#                  (default build/articulography-seeds; voices are reused when present)
+#                  (default build/articulography-seeds); voices are kept per executable (a
+#                  folder named by its SHA-256) and reused by the same executable only
 # Extra arguments for every `eval articulography` run: FAPCAST_EVAL_ARGS (e.g. "--jaw-weight 0.1").
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,12 +18,14 @@ work=${WORK:-build/articulography-seeds}
 seeds=("$@")
 [ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3 4 5 6)
 [ -x "$exe" ] || { echo "articulography-seeds: no executable $exe (bash tools/build.sh, or set FAPCAST)" >&2; exit 2; }
-mkdir -p "$work"
+# Voices built by another executable may come from other code: one folder per executable.
+voices=$work/$(sha256sum "$exe" | cut -c1-16)
+mkdir -p "$voices"
 m=tests/data/mocha/fsew0_001
 
 for seed in "${seeds[@]}"; do
   [[ $seed =~ ^[0-9]+$ ]] || { echo "articulography-seeds: seed '$seed' is not a whole number" >&2; exit 2; }
-  voice=$work/voice-seed$seed.fapv
+  voice=$voices/voice-seed$seed.fapv
   if [ ! -f "$voice" ]; then
     rm -rf "$work/corpus-seed$seed"
     "$exe" corpus record-reference -o "$work/corpus-seed$seed" --seed "$seed" -q >/dev/null

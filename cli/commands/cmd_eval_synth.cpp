@@ -9,7 +9,6 @@
 
 #include "fapcast/face/face_model.hpp"
 #include "fapcast/eval/held_out_sentences.hpp"
-#include "fapcast/talker/reference_talker.hpp"
 #include "fapcast/eval/synthesis_evaluation.hpp"
 #include "fapcast/synthesis/synthesis.hpp"
 #include "fapcast/voice/voice.hpp"

@@ -5,7 +5,6 @@
 #include "fapcast/eval/synthesis_evaluation.hpp"
 #include "fapcast/voice/voice.hpp"
 #include "fapcast/builder/voice_corpus.hpp"
-
 #include "fapcast/talker/reference_talker.hpp"
 
 #include <cmath>

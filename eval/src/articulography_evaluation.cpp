@@ -385,8 +385,11 @@ ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>
                                                  const ArticulographySettings& settings) {
   check_articulography_inputs(ema, ema_source, phones, sample_rate, phones_source);
   const SynthesizedTrack track = synthesize(voice, phones, sample_rate, audio_samples, options, phones_source);
-  return compare_with_face(ema, ema_source, voice.pca_mean(), voice.pca_mean(), voice.pca_components(), track.pca_frames, track,
-                           neutral_mns_mm(voice), phones_source, settings);
+  ArticulographyEvaluation e = compare_with_face(ema, ema_source, voice.pca_mean(), voice.pca_mean(), voice.pca_components(),
+                                                 track.pca_frames, track, neutral_mns_mm(voice), phones_source, settings);
+  e.unit_sources = unit_sources(voice.graph(), voice.state_phones(), track.search);
+  e.asked = track.timeline.phone_of;
+  return e;
 }
 
 ArticulographyEvaluation evaluate_talker_articulography(const MarkerFrames<Millimetres>& ema,
@@ -435,6 +438,20 @@ ArticulographyEvaluation evaluate_talker_articulography(const MarkerFrames<Milli
   return e;
 }
 
+namespace {
+
+// "W AH Z": the target phones a unit stands for.
+std::string asked_phones(const ArticulographyEvaluation& e, const UnitSource& s) {
+  std::string out;
+  for (std::size_t t = s.unit.first_target; t < s.unit.first_target + s.unit.length && t < e.asked.size(); ++t) {
+    if (!out.empty()) out += ' ';
+    out += arpabet(e.asked[t]);
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string articulography_table(const ArticulographyEvaluation& e, const std::string& title) {
   std::ostringstream out;
   out << title << "\n";
@@ -453,6 +470,14 @@ std::string articulography_table(const ArticulographyEvaluation& e, const std::s
       << " mm at " << fixed(degrees(r.coil_angle_rad), 1) << " deg (forward of up) turned by "
       << fixed(degrees(r.rotation_rad), 1) << " deg to the face's nose-dorsum angle " << fixed(degrees(r.face_angle_rad), 1)
       << " deg; " << e.phones << " phones in " << e.units << " units\n";
+  if (!e.unit_sources.empty()) {
+    out << "\nunits (phones asked <- take: its phones, the unit's in brackets):";
+    for (std::size_t u = 0; u < e.unit_sources.size(); ++u) {
+      const UnitSource& s = e.unit_sources[u];
+      out << (u == 0 ? " " : "; ") << asked_phones(e, s) << " <- " << s.take << ": " << describe_take(s);
+    }
+    out << "\n";
+  }
   return out.str();
 }
 
@@ -490,6 +515,15 @@ nlohmann::json articulography_json(const ArticulographyEvaluation& e) {
                        {"face_angle_deg", degrees(r.face_angle_rad)},
                        {"rotation_deg", degrees(r.rotation_rad)}};
   j["synthesis"] = {{"phones", e.phones}, {"units", e.units}};
+  if (!e.unit_sources.empty()) {
+    nlohmann::json units = nlohmann::json::array();
+    for (const UnitSource& s : e.unit_sources)
+      units.push_back({{"first_phone", s.unit.first_target},
+                       {"phones", asked_phones(e, s)},
+                       {"take", s.take},
+                       {"take_phones", describe_take(s)}});
+    j["synthesis"]["unit_sources"] = std::move(units);
+  }
   j["curves"]["rate_hz"] = e.real.rate_hz;
   for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m) {
     const TrajectoryAgreement& a = e.agreement[m];

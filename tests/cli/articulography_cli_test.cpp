@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -154,6 +155,26 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
   const auto& talker = kj["animations"][1];
   EXPECT_EQ(talker["animated_by"], "reference talker (SYNTHETIC)");
   EXPECT_EQ(talker["synthesis"]["units"], 0);
+  EXPECT_FALSE(talker["synthesis"].contains("unit_sources")) << "the talker has no units";
+  // Where the voice's units come from (select/unit_sources.hpp): one entry per unit, together
+  // covering the phones in order, each naming its take and bracketing as many recorded phones as
+  // it stands for; the report lists them under the table.
+  const auto& voice_synthesis = kj["animations"][0]["synthesis"];
+  ASSERT_EQ(voice_synthesis["unit_sources"].size(), voice_synthesis["units"].get<std::size_t>());
+  std::size_t next_phone = 0;
+  for (const auto& u : voice_synthesis["unit_sources"]) {
+    EXPECT_EQ(u["first_phone"].get<std::size_t>(), next_phone);
+    const std::string asked = u["phones"], take = u["take_phones"];
+    const std::size_t count = static_cast<std::size_t>(std::count(asked.begin(), asked.end(), ' ')) + 1;
+    next_phone += count;
+    const auto open = take.find('['), close = take.find(']');
+    ASSERT_TRUE(open != std::string::npos && close != std::string::npos && open < close) << take;
+    const std::string recorded = take.substr(open + 1, close - open - 1);
+    EXPECT_EQ(static_cast<std::size_t>(std::count(recorded.begin(), recorded.end(), ' ')) + 1, count)
+        << asked << " <- " << take;
+    EXPECT_NE(k.out.find(asked + " <- " + std::to_string(u["take"].get<int>()) + ": " + take), std::string::npos) << k.out;
+  }
+  EXPECT_EQ(next_phone, voice_synthesis["phones"].get<std::size_t>());
   EXPECT_EQ(talker["curves"]["real_mm"]["lip_aperture"], kj["animations"][0]["curves"]["real_mm"]["lip_aperture"]);
   EXPECT_NE(talker["curves"]["ours_mm"]["lip_aperture"], kj["animations"][0]["curves"]["ours_mm"]["lip_aperture"]);
   EXPECT_EQ(talker["curves"]["ours_mm"]["tongue_tip_height"], kj["animations"][0]["curves"]["ours_mm"]["tongue_tip_height"])

@@ -10,6 +10,7 @@
 #include "fapcast/eval/svg_plot.hpp"
 #include "fapcast/eval/trajectory_agreement.hpp"
 #include "fapcast/phonetics/timed_phone.hpp"
+#include "fapcast/select/unit_sources.hpp"
 #include "fapcast/synthesis/synthesis.hpp"
 #include "fapcast/voice/voice.hpp"
 
@@ -121,6 +122,10 @@ struct ArticulographyEvaluation {
   MeasureCurves real, face;
   std::array<TrajectoryAgreement, kArticulatoryMeasureCount> agreement;
   std::size_t phones = 0, units = 0;  // of the synthesis
+  // Where the voice's units were cut from, and the phones they stand for (the synthesis
+  // timeline's, one per target phone); both empty for the talker, which has no units.
+  std::vector<UnitSource> unit_sources;
+  std::vector<Phone> asked;
 };
 
 // What the comparison needs of its inputs, checked before any work: `ema` (named `ema_source`)

@@ -10,6 +10,8 @@
 #   WORK=DIR       where corpora (deleted after each build), voices and reports go
 #                  (default build/articulography-seeds); voices are kept per executable (a
 #                  folder named by its SHA-256) and reused by the same executable only
+#   LABELS=FILE    the phone alignment to animate from (default fsew0_001.lab, MOCHA's own; an
+#                  edited copy answers "what if this phone were labelled otherwise")
 # Extra arguments for every `eval articulography` run: FAPCAST_EVAL_ARGS (e.g. "--jaw-weight 0.1").
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +24,8 @@ seeds=("$@")
 voices=$work/$(sha256sum "$exe" | cut -c1-16)
 mkdir -p "$voices"
 m=tests/data/mocha/fsew0_001
+labels=${LABELS:-$m.lab}
+[ -f "$labels" ] || { echo "articulography-seeds: no label file $labels" >&2; exit 2; }
 
 for seed in "${seeds[@]}"; do
   [[ $seed =~ ^[0-9]+$ ]] || { echo "articulography-seeds: seed '$seed' is not a whole number" >&2; exit 2; }
@@ -33,7 +37,7 @@ for seed in "${seeds[@]}"; do
     rm -rf "$work/corpus-seed$seed"
   fi
   # shellcheck disable=SC2086  # FAPCAST_EVAL_ARGS is a list of words
-  "$exe" eval articulography $m.ema $m.wav $m.lab --text "This was easy for us." --voice "$voice" \
+  "$exe" eval articulography $m.ema $m.wav "$labels" --text "This was easy for us." --voice "$voice" \
     ${FAPCAST_EVAL_ARGS:-} -q > "$work/report-seed$seed.md" 2> "$work/report-seed$seed.log" ||
     { cat "$work/report-seed$seed.log" >&2; exit 1; }
 done

@@ -1,6 +1,7 @@
 // fapcast: speech to MPEG-4 facial animation. The commands: spec/cli.md.
 #include "command.hpp"
 #include "exit_status.hpp"
+#include "usage_hints.hpp"
 
 #include <malloc.h>
 
@@ -101,7 +102,10 @@ int main(int argc, char** argv) {
       app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
       // --help and --version arrive here too, with exit code 0.
-      return app.exit(e) == 0 ? standard_output_written() : kBadUsage;  // --help > /dev/full fails too
+      if (app.exit(e) == 0) return standard_output_written();  // --help > /dev/full fails too
+      for (const std::string& hint : unknown_option_hints(app, {argv + 1, argv + argc}))
+        std::cerr << "fapcast: hint: " << hint << "\n";
+      return kBadUsage;
     }
   } catch (...) {
     const ExitStatus status = exit_status(std::current_exception());

@@ -685,6 +685,32 @@ TEST_F(SayCli, SayAndAnimateEndToEnd) {
   }
 }
 
+// An option the command does not have is answered with the command's options near it in spelling
+// and, when none is near, with its positional inputs (cli/usage_hints.hpp): the spellings of
+// other tools and of older commands ("--wav", "--align", "--obj-frames") find their way.
+TEST(SayCliUsage, AnUnknownOptionIsAnsweredWithTheNearOnesOrThePositionals) {
+  const auto a = run_command(fapcast("animate --wav a.wav --align a.TextGrid -o x.fap"));
+  EXPECT_EQ(a.exit_code, 2);
+  EXPECT_NE(a.err.find("fapcast: hint: --wav is not an option of 'animate'\n"), std::string::npos) << a.err;
+  EXPECT_NE(a.err.find("fapcast: hint: its inputs are positional: fapcast animate SPEECH [ALIGNMENT]\n"),
+            std::string::npos) << a.err;
+  const auto g = run_command(fapcast("say \"Hi.\" -o x.glb --obj-frames d"));
+  EXPECT_EQ(g.exit_code, 2);
+  EXPECT_NE(g.err.find("--obj-frames is not an option of 'say'; did you mean --obj-frames-out?"), std::string::npos)
+      << g.err;
+  EXPECT_EQ(g.err.find("positional"), std::string::npos) << "a near option says enough: " << g.err;
+  const auto f = run_command(fapcast("fap info --jsn=1 x.fap"));
+  EXPECT_EQ(f.exit_code, 2);
+  EXPECT_NE(f.err.find("--jsn is not an option of 'fap info'; did you mean --json?"), std::string::npos) << f.err;
+  const auto e = run_command(fapcast("eval articulography --ema x.ema"));
+  EXPECT_EQ(e.exit_code, 2);
+  EXPECT_NE(e.err.find("fapcast eval articulography EMA SPEECH [ALIGNMENT]"), std::string::npos) << e.err;
+  // A mistake that is not an unknown option gets no hint.
+  const auto s = run_command(fapcast("say \"Hi.\" -o x.fap --fps 0"));
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_EQ(s.err.find("hint"), std::string::npos) << s.err;
+}
+
 TEST(SayCliUsage, MistakesExitTwo) {
   EXPECT_EQ(run_command(fapcast("say \"Hi.\" -o x.txt --voice v.fapv")).exit_code, 2);
   EXPECT_EQ(run_command(fapcast("say \"Hi.\"")).exit_code, 2);  // no -o

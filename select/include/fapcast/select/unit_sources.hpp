@@ -2,8 +2,8 @@
 // Where each unit of a search was cut from: the take of the voice's corpus and the phones that
 // take recorded, beside the target phones the unit stands for. The search matches viseme
 // classes, not phones, so a unit may record other phones of the same classes than those asked
-// for (a weak "was", W AH Z, may be the corpus's citation "was", W AA Z): this is where a
-// reader sees it (spec/search.md, "Where the units come from").
+// for (the weak "was" of MOCHA's fsew0_001, W AH Z, is served by the [AY Z] of "wisely"): this is
+// where a reader sees it (spec/search.md, "Where the units come from").
 #include "fapcast/phonetics/phone.hpp"
 #include "fapcast/select/phone_graph.hpp"
 #include "fapcast/select/unit_search.hpp"

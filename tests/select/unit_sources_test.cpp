@@ -8,6 +8,10 @@
 namespace fapcast {
 namespace {
 
+// A "was" recorded with a full open vowel, and an "us".
+const std::vector<Phone> kWas{Phone::SIL, Phone::W, Phone::AA, Phone::Z, Phone::SIL};
+const std::vector<Phone> kUs{Phone::SIL, Phone::AH, Phone::S, Phone::SIL};
+
 // Takes as phone lists, each phone one frame; states in take order.
 struct Takes {
   PhoneGraph graph;
@@ -26,19 +30,17 @@ Takes takes(const std::vector<std::vector<Phone>>& list) {
   return {PhoneGraph(std::move(states)), std::move(phones)};
 }
 
-using enum Phone;
-
 TEST(UnitSources, NameTheTakeAndThePhonesItRecorded) {
   // Take 0 is a citation "was" (W AA Z), take 1 "us"; a weak "was us" (W AH Z AH S) is spelt by
   // classes, so the search may take "was" whole for W AH Z and "us" for AH S.
-  const Takes t = takes({{SIL, W, AA, Z, SIL}, {SIL, AH, S, SIL}});
+  const Takes t = takes({kWas, kUs});
   SearchResult result;
   result.units = {{1, 0, 3}, {6, 3, 2}};
   const std::vector<UnitSource> sources = unit_sources(t.graph, t.phones, result);
   ASSERT_EQ(sources.size(), 2u);
   EXPECT_EQ(sources[0].take, 0u);
   EXPECT_EQ(sources[0].first_in_take, 1u);
-  EXPECT_EQ(sources[0].take_phones, (std::vector<Phone>{SIL, W, AA, Z, SIL}));
+  EXPECT_EQ(sources[0].take_phones, kWas);
   EXPECT_EQ(sources[0].unit, (Unit{1, 0, 3}));
   EXPECT_EQ(describe_take(sources[0]), "SIL [W AA Z] SIL");
   EXPECT_EQ(sources[1].take, 1u);
@@ -47,7 +49,7 @@ TEST(UnitSources, NameTheTakeAndThePhonesItRecorded) {
 }
 
 TEST(UnitSources, AUnitAtATakesEdgesBracketsThoseEdges) {
-  const Takes t = takes({{SIL, P, AA, SIL}});
+  const Takes t = takes({{Phone::SIL, Phone::P, Phone::AA, Phone::SIL}});
   SearchResult result;
   result.units = {{0, 0, 4}};
   EXPECT_EQ(describe_take(unit_sources(t.graph, t.phones, result).at(0)), "[SIL P AA SIL]");
@@ -56,7 +58,7 @@ TEST(UnitSources, AUnitAtATakesEdgesBracketsThoseEdges) {
 }
 
 TEST(UnitSources, RefusesUnitsThatAreNotTheGraphs) {
-  const Takes t = takes({{SIL, W, AA, Z, SIL}, {SIL, AH, S, SIL}});
+  const Takes t = takes({kWas, kUs});
   SearchResult result;
   result.units = {{1, 0, 3}};
   EXPECT_THROW(unit_sources(t.graph, std::span<const Phone>(t.phones).first(3), result), std::invalid_argument);

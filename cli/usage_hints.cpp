@@ -66,7 +66,8 @@ std::vector<std::string> unknown_option_hints(const CLI::App& app, const std::ve
   bool any_unplaced = false;  // an unknown option with no near name: perhaps an input
   for (const std::string& arg : args) {
     if (arg.size() < 3 || arg.rfind("--", 0) != 0) continue;
-    const std::string name = arg.substr(2, arg.find('=') == std::string::npos ? std::string::npos : arg.find('=') - 2);
+    const std::size_t equals = arg.find('=');  // --name=value
+    const std::string name = arg.substr(2, equals == std::string::npos ? std::string::npos : equals - 2);
     if (name.empty() || std::find(names.begin(), names.end(), name) != names.end()) continue;
     std::vector<std::string> near;
     for (const std::string& candidate : names)

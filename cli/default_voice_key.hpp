@@ -14,8 +14,9 @@ namespace fapcast::cli {
 // Bumped by hand when code that shapes the default voice changes without changing a table below
 // (the talker's marker synthesis, capture imperfections, the recording script, the build, how
 // the corpus is recorded: 4 records it in a fresh process, default_voice.cpp; 5 gives corpus
-// frames to phones by synthesis's frame rule, voice_corpus.cpp).
-inline constexpr std::uint32_t kDefaultVoiceRecipe = 5;
+// frames to phones by synthesis's frame rule, voice_corpus.cpp; 6 records the schwa as AX, the
+// 41st phone, with a viseme class of its own).
+inline constexpr std::uint32_t kDefaultVoiceRecipe = 6;
 
 // CRC-32, as 8 lower-case hex digits, of the recipe number, the corpus seed, every row of the
 // articulation and shape tables and of the prototype details, and the prototype rules.

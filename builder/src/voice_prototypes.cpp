@@ -52,7 +52,6 @@ constexpr PrototypeShapeWeight kDetails[] = {
     {VisemeClass::kMidRounded, "mouthFunnel", 0.1f},
     {VisemeClass::kNearCloseRounded, "mouthFunnel", 0.1f},
     {VisemeClass::kCloseRounded, "mouthShrugLower", 0.1f},
-    {VisemeClass::kOpenToRounded, "mouthFunnel", 0.1f},
 };
 
 }  // namespace

@@ -68,6 +68,7 @@ PhoneRule phone_rule(Phone p, Centiseconds length) {
     case Phone::AH: return single({length < cs(20) ? S::C : S::D});
     case Phone::AO: return single({S::E});
     case Phone::AW: return length < cs(30) ? diphthong(S::C, S::E) : diphthong(S::D, S::E);
+    case Phone::AX: return single({S::B, S::C});
     case Phone::AY: return length < cs(20) ? diphthong(S::C, S::B) : diphthong(S::D, S::B);
     case Phone::EH: return single({S::C});
     case Phone::ER: return length < cs(7) ? single({S::B, S::C}) : single({S::E});

@@ -233,7 +233,7 @@ Phone vowel_phone(const IpaSegment& v) {
   if (!v.rounded) {
     switch (v.backness) {
       case B::kFront: return h == 0 ? Phone::IY : h == 1 ? Phone::IH : h <= 4 ? Phone::EH : Phone::AE;
-      case B::kCentral: return h <= 1 ? Phone::IH : h == 4 ? Phone::ER : h == 6 ? Phone::AA : Phone::AH;
+      case B::kCentral: return h <= 1 ? Phone::IH : h == 4 ? Phone::ER : h == 6 ? Phone::AA : Phone::AX;  // ɘ ə ɐ
       case B::kBack: return h <= 1 ? Phone::IH : h <= 4 ? Phone::AH : Phone::AA;
     }
   }

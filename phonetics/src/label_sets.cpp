@@ -23,7 +23,7 @@ struct Row {
 constexpr auto kSampa = std::to_array<Row>({
     {"i:", Phone::IY}, {"I", Phone::IH}, {"e", Phone::EH}, {"e:", Phone::EY}, {"E", Phone::EH}, {"E:", Phone::EH},
     {"{", Phone::AE}, {"a", Phone::AE}, {"a:", Phone::AA}, {"A:", Phone::AA}, {"A", Phone::AA}, {"Q", Phone::AA},
-    {"V", Phone::AH}, {"@", Phone::AH}, {"6", Phone::AH}, {"3:", Phone::ER}, {"3`", Phone::ER}, {"@`", Phone::ER},
+    {"V", Phone::AH}, {"@", Phone::AX}, {"6", Phone::AX}, {"3:", Phone::ER}, {"3`", Phone::ER}, {"@`", Phone::ER},
     {"3", Phone::ER}, {"O:", Phone::AO}, {"O", Phone::AO}, {"o:", Phone::OW}, {"o", Phone::OW}, {"U", Phone::UH},
     {"u:", Phone::UW}, {"u", Phone::UW}, {"y:", Phone::UW}, {"Y", Phone::UH}, {"2:", Phone::ER}, {"9", Phone::ER},
     {"eI", Phone::EY}, {"aI", Phone::AY}, {"OI", Phone::OY}, {"OY", Phone::OY}, {"@U", Phone::OW}, {"oU", Phone::OW},
@@ -43,7 +43,7 @@ constexpr auto kSampa = std::to_array<Row>({
 // release, "Om On Or Ow" the lot vowel coloured by the consonant that follows it.
 constexpr auto kEmuAe = std::to_array<Row>({
     {"i:", Phone::IY}, {"I", Phone::IH}, {"e", Phone::EH}, {"E", Phone::EH}, {"A", Phone::AE}, {"a:", Phone::AA},
-    {"V", Phone::AH}, {"@", Phone::AH}, {"@:", Phone::ER}, {"3:", Phone::ER}, {"O", Phone::AO}, {"o:", Phone::AO},
+    {"V", Phone::AH}, {"@", Phone::AX}, {"@:", Phone::ER}, {"3:", Phone::ER}, {"O", Phone::AO}, {"o:", Phone::AO},
     {"U", Phone::UH}, {"u:", Phone::UW}, {"ai", Phone::AY}, {"ei", Phone::EY}, {"oi", Phone::OY}, {"au", Phone::AW},
     {"@u", Phone::OW}, {"I@", Phone::IY}, {"E@", Phone::EH}, {"U@", Phone::UH},
     {"p", Phone::P}, {"b", Phone::B}, {"t", Phone::T}, {"d", Phone::D}, {"k", Phone::K}, {"g", Phone::G},
@@ -61,7 +61,7 @@ constexpr auto kEmuAe = std::to_array<Row>({
 // the happY vowel, u = foot, uu = goose, e@ i@ u@ = square near cure; consonants as ARPAbet in
 // lower case ("y" = yes). "breath" is an inhalation (LabelKind::breath, mapped in map_label).
 constexpr auto kMocha = std::to_array<Row>({
-    {"@", Phone::AH}, {"@@", Phone::ER}, {"a", Phone::AE}, {"aa", Phone::AA}, {"uh", Phone::AH}, {"o", Phone::AO},
+    {"@", Phone::AX}, {"@@", Phone::ER}, {"a", Phone::AE}, {"aa", Phone::AA}, {"uh", Phone::AH}, {"o", Phone::AO},
     {"oo", Phone::AO}, {"ou", Phone::OW}, {"i", Phone::IH}, {"ii", Phone::IY}, {"iy", Phone::IY}, {"u", Phone::UH},
     {"uu", Phone::UW}, {"e", Phone::EH}, {"ei", Phone::EY}, {"ai", Phone::AY}, {"au", Phone::AW}, {"oi", Phone::OY},
     {"e@", Phone::EH}, {"i@", Phone::IY}, {"u@", Phone::UH},
@@ -135,7 +135,6 @@ std::optional<MappedLabel> map_label(LabelSet set, std::string_view label) {
     switch (set) {
       case LabelSet::arpabet: {
         const std::string up = upper_ascii(label);
-        if (up == "AX") return MappedLabel{LabelKind::phone, {Phone::AH}, LabelJoin::none};
         const StressedPhone p = parse_arpabet(up, "label");
         if (p.phone == Phone::SIL) return MappedLabel{LabelKind::silence, {}, LabelJoin::none};
         return MappedLabel{LabelKind::phone, {p.phone}, LabelJoin::none};

@@ -20,8 +20,8 @@ StressedPhone parse_arpabet(std::string_view symbol, std::string_view source) {
     stress = static_cast<Stress>(upper.back() - '0');
     upper.pop_back();
   }
-  // Festival's CMU lexicon and the CMU "radio" set write schwa as AX; CMUdict spells it AH0.
-  if (upper == "AX") return {Phone::AH, stress.value_or(Stress::kNone)};
+  // CMUdict has no AX: it spells the schwa AH0 (Festival's CMU lexicon and TIMIT write AX).
+  if (upper == "AH" && stress == Stress::kNone) return {Phone::AX, stress};
   for (const PhoneInfo& row : kPhoneTable) {
     if (row.arpabet == upper && !(stress && row.phone == Phone::SIL)) return {row.phone, stress};
   }

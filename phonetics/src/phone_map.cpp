@@ -95,6 +95,7 @@ std::string_view espeak_mnemonic(Phone p) {
   switch (p) {
     case Phone::AA: return "A:";
     case Phone::AH: return "V";
+    case Phone::AX: return "@";
     case Phone::ER: return "3:";
     case Phone::IY: return "i:";
     case Phone::AO: return "O:";

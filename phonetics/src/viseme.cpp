@@ -12,7 +12,7 @@ constexpr std::array<std::string_view, kVisemeClassCount> kClassNames{
     "sibilant",     "lateral",      "postalveolar",     "rhotic",          "back",
     "labial_velar", "close_front",  "near_close_front", "mid_front",       "open_front",
     "open_unrounded", "open_mid_rounded", "mid_rounded", "near_close_rounded", "close_rounded",
-    "open_to_rounded"};
+    "schwa"};
 
 }  // namespace
 

@@ -39,6 +39,10 @@ constexpr double kGarbagePhone = 1e-10;
 // speech -3.8).
 constexpr double kLowUtteranceScore = -3.0;
 
+// The phone a phone is decoded as: the acoustic models have CMUdict's phones, whose schwa is AH.
+Phone acoustic_phone(Phone p) { return p == Phone::AX ? Phone::AH : p; }
+
+// The phones a grammar may name (all but SIL): a schwa keeps its name, spoken as AH.
 std::vector<Phone> phone_set() {
   std::vector<Phone> out;
   for (std::size_t i = 0; i < kPhoneCount; ++i)
@@ -58,7 +62,7 @@ std::vector<std::pair<std::string, std::string>> phone_words() {
   std::vector<std::pair<std::string, std::string>> out;
   for (std::size_t k = 0; k < kTags; ++k)
     for (Phone p : phone_set())
-      for (char kind : {'~', '#'}) out.emplace_back(tagged(kind, p, k), std::string(arpabet(p)));
+      for (char kind : {'~', '#'}) out.emplace_back(tagged(kind, p, k), std::string(arpabet(acoustic_phone(p))));
   return out;
 }
 
@@ -73,9 +77,17 @@ std::string pronunciation_string(const std::vector<Phone>& phones) {
   std::string s;
   for (Phone p : phones) {
     if (!s.empty()) s.push_back(' ');
-    s.append(arpabet(p));
+    s.append(arpabet(acoustic_phone(p)));
   }
   return s;
+}
+
+// True when word i ends the transcript or a punctuation mark follows it before the next word.
+bool phrase_final(const Transcript& t, std::size_t i) {
+  if (i + 1 == t.words.size()) return true;
+  const std::size_t end = t.words[i].byte_offset + t.words[i].text.size();
+  const std::string_view between = std::string_view(t.text).substr(end, t.words[i + 1].byte_offset - end);
+  return between.find_first_of(".,;:!?") != std::string_view::npos;
 }
 
 // One transcript word: its dictionary entries ("was", "was(2)") and their phones.
@@ -139,11 +151,12 @@ struct SpeechAligner::Impl {
     return *words;
   }
 
-  // Dictionary entries of every word; words the dictionary lacks get espeak-ng's pronunciation
-  // (en-us), added to both decoders under their key. With settings.weak_forms, each function word
-  // also gets its weak forms, and with settings.language espeak-ng's reading of the transcript in
-  // that language (in context: its weak forms, linking r), each as one more variant where it
-  // differs from those, under the key "word(PH_PH_...)".
+  // Dictionary entries of every word, their schwas named by espeak-ng's reading of the transcript
+  // (en-us); words the dictionary lacks get that reading, added to both decoders under their key.
+  // With settings.weak_forms, each function word also gets its weak forms, and with
+  // settings.language espeak-ng's reading of the transcript in that language (in context: its
+  // weak forms, linking r), each as one more variant where it sounds unlike those, under the key
+  // "word(PH_PH_...)".
   std::vector<WordEntry> entries(const Transcript& t) {
     Decoder& d = phone_decoder();
     std::vector<WordEntry> out(t.words.size());
@@ -169,9 +182,28 @@ struct SpeechAligner::Impl {
     if (!added.empty()) d.add_words(added);  // the base words first: a "word(...)" key needs its word
     // one more variant of word i, where it differs from those it has
     std::vector<std::pair<std::string, std::string>> variants;
+    // The variant of word i that sounds as `ph` does (the schwa is decoded as AH), if any.
+    const auto same_sound = [&](std::size_t i, const std::vector<Phone>& ph) {
+      auto& v = out[i].variants;
+      return std::find_if(v.begin(), v.end(), [&](const std::vector<Phone>& x) {
+        return std::ranges::equal(x, ph, {}, acoustic_phone, acoustic_phone);
+      });
+    };
+    // The dictionary has no stress, so its schwa (CMUdict AH0) is AH: where a reading of the word
+    // has the variant's consonants in the same places, the AH it reads as a schwa is named AX.
+    const auto name_schwas = [&](std::size_t i, const std::vector<Phone>& ph) {
+      for (auto& v : out[i].variants) {
+        const bool aligned = v.size() == ph.size() && std::ranges::equal(v, ph, [](Phone a, Phone b) {
+          return acoustic_phone(a) == acoustic_phone(b) || (is_vowel(a) && is_vowel(b));
+        });
+        if (!aligned) continue;
+        for (std::size_t k = 0; k < v.size(); ++k)
+          if (v[k] == Phone::AH && ph[k] == Phone::AX) v[k] = Phone::AX;
+      }
+    };
     const auto add_variant = [&](std::size_t i, const std::vector<Phone>& ph) {
       auto& e = out[i];
-      if (ph.empty() || std::find(e.variants.begin(), e.variants.end(), ph) != e.variants.end()) return;
+      if (ph.empty() || same_sound(i, ph) != e.variants.end()) return;
       std::string key = t.words[i].key + "(" + pronunciation_string(ph) + ")";
       std::replace(key.begin(), key.end(), ' ', '_');
       e.keys.push_back(key);
@@ -180,17 +212,29 @@ struct SpeechAligner::Impl {
       if (std::none_of(variants.begin(), variants.end(), [&](const auto& v) { return v.first == key; }))
         variants.emplace_back(key, pronunciation_string(ph));
     };
+    if (!us) us = spoken_words(t, std::string(kDefaultLanguage));
+    for (std::size_t i = 0; i < t.words.size(); ++i) name_schwas(i, (*us)[i]);
     if (settings.weak_forms)
       for (std::size_t i = 0; i < t.words.size(); ++i) {
         const bool before_vowel =
             i + 1 < t.words.size() && std::any_of(out[i + 1].variants.begin(), out[i + 1].variants.end(),
                                                   [](const auto& v) { return !v.empty() && is_vowel(v.front()); });
-        for (std::string_view ph : weak_forms(t.words[i].key, before_vowel))
-          add_variant(i, parse_pronunciation(std::string(ph)));
+        // A function word takes its weak form inside a phrase and its strong form at the end of
+        // one (Roach 2009, ch. 12): inside, the dictionary's variant that sounds as the weak
+        // form does is named as the weak form (its AH a schwa).
+        for (std::string_view form : weak_forms(t.words[i].key, before_vowel)) {
+          const std::vector<Phone> ph = parse_pronunciation(std::string(form));
+          const auto v = same_sound(i, ph);
+          if (v == out[i].variants.end()) add_variant(i, ph);
+          else if (!phrase_final(t, i)) *v = ph;
+        }
       }
     if (!settings.language.empty()) {
       const std::vector<std::vector<Phone>> read = spoken_words(t, settings.language);
-      for (std::size_t i = 0; i < t.words.size(); ++i) add_variant(i, read[i]);
+      for (std::size_t i = 0; i < t.words.size(); ++i) {
+        name_schwas(i, read[i]);
+        add_variant(i, read[i]);
+      }
     }
     if (!variants.empty()) d.add_words(variants);
     if (words) {
@@ -228,7 +272,8 @@ Grammar phone_grammar(const std::vector<WordEntry>& entries, std::size_t first, 
     if (garbage) {
       const int loop = next++;
       g.arcs.push_back({i, loop, "", kGarbageEnter});
-      for (Phone ph : phone_set()) g.arcs.push_back({loop, loop, tagged('#', ph, word), kGarbagePhone});
+      for (Phone ph : phone_set())
+        if (acoustic_phone(ph) == ph) g.arcs.push_back({loop, loop, tagged('#', ph, word), kGarbagePhone});
       g.arcs.push_back({loop, i + 1, "", 1.0});
       // the recording stops before word i (at 0: has none of them): one null arc to the end, not a chain of skipped
       // words (each skip costs kGarbageEnter, so a chain falls out of the beam)

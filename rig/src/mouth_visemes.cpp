@@ -23,7 +23,7 @@ std::optional<OculusViseme> oculus_viseme(Phone phone) {
     case Phone::N: case Phone::L: return V::kNN;
     case Phone::R: case Phone::ER: return V::kRR;
     case Phone::AA: case Phone::AH: case Phone::AE: case Phone::AY: case Phone::AW: return V::kAA;
-    case Phone::EH: case Phone::EY: return V::kE;
+    case Phone::EH: case Phone::EY: case Phone::AX: return V::kE;  // schwa: mid, as e
     case Phone::IH: case Phone::IY: case Phone::Y: return V::kIH;
     case Phone::AO: case Phone::OW: case Phone::OY: return V::kOH;
     case Phone::UH: case Phone::UW: case Phone::W: return V::kOU;

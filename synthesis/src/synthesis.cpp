@@ -22,18 +22,18 @@ constexpr std::array<VisemeFallback, kVisemeClassCount> kFallbacks{{
     {V::kLateral, {V::kAlveolar, V::kDental, V::kNearCloseFront}},
     {V::kPostalveolar, {V::kRhotic, V::kLabialVelar, V::kSibilant}},     // protruded lips
     {V::kRhotic, {V::kPostalveolar, V::kNearCloseRounded, V::kLabialVelar}},
-    {V::kBack, {V::kMidFront, V::kNearCloseFront, V::kAlveolar}},        // jaw half open
+    {V::kBack, {V::kMidFront, V::kSchwa, V::kNearCloseFront}},           // jaw half open
     {V::kLabialVelar, {V::kCloseRounded, V::kNearCloseRounded, V::kRhotic}},
     {V::kCloseFront, {V::kNearCloseFront, V::kSibilant, V::kMidFront}},  // spread, near closed
     {V::kNearCloseFront, {V::kCloseFront, V::kMidFront, V::kBack}},
     {V::kMidFront, {V::kNearCloseFront, V::kOpenFront, V::kBack}},
     {V::kOpenFront, {V::kMidFront, V::kOpenUnrounded, V::kNearCloseFront}},
-    {V::kOpenUnrounded, {V::kOpenFront, V::kOpenToRounded, V::kMidFront}},  // jaw wide open
-    {V::kOpenMidRounded, {V::kMidRounded, V::kOpenToRounded, V::kOpenUnrounded}},
+    {V::kOpenUnrounded, {V::kOpenFront, V::kMidFront, V::kOpenMidRounded}},  // jaw wide open
+    {V::kOpenMidRounded, {V::kMidRounded, V::kOpenUnrounded, V::kNearCloseRounded}},
     {V::kMidRounded, {V::kOpenMidRounded, V::kNearCloseRounded, V::kCloseRounded}},
     {V::kNearCloseRounded, {V::kCloseRounded, V::kMidRounded, V::kRhotic}},
     {V::kCloseRounded, {V::kNearCloseRounded, V::kLabialVelar, V::kMidRounded}},
-    {V::kOpenToRounded, {V::kOpenUnrounded, V::kOpenMidRounded, V::kOpenFront}},
+    {V::kSchwa, {V::kBack, V::kMidFront, V::kNearCloseFront}},           // neutral lips, jaw a little open
 }};
 
 constexpr bool fallbacks_in_order() {

@@ -26,6 +26,7 @@ constexpr std::array<Row, kPhoneCount> kRows{{
     {Phone::AH, {0, 0, 0, 0, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // central: near rest
     {Phone::AO, {0, -40, -40, -100, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // open-mid back: low, retracted
     {Phone::AW, {0, -40, -20, -120, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // nucleus a: low
+    {Phone::AX, {0, 0, 0, 0, 0}, {0.3f, 0.5f, 14.0f, 14.0f, 1.0f}},  // schwa: central, near rest, weak (targetless)
     {Phone::AY, {0, -20, 0, -100, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // nucleus a: low
     {Phone::EH, {0, 60, 10, 180, 0}, {0.3f, 1.0f, 14.0f, 14.0f, 1.0f}},  // mid front: body half raised
     {Phone::ER, {0, 250, -100, 250, 18000}, {0.8f, 1.0f, 16.0f, 16.0f, 1.0f}},  // r-coloured: tip up and back, cupped

@@ -17,7 +17,7 @@ constexpr std::array<std::string_view, kChannelCount> kChannelNames{
 
 // spec/articulation.tsv, row for row (the test checks it). Generated from the phone classes
 // described in spec/talker.md; edit both together.
-constexpr std::array<PhoneChannelTarget, 40 * kChannelCount> kArticulation{{
+constexpr std::array<PhoneChannelTarget, kPhoneCount * kChannelCount> kArticulation{{
     {"sil", Channel::jaw, 0.07f, {0.5f, 20.0f, 20.0f, 1.0f}},
     {"sil", Channel::lip_opening, 0.0f, {0.5f, 20.0f, 20.0f, 1.0f}},
     {"sil", Channel::rounding, 0.0f, {0.5f, 20.0f, 20.0f, 1.0f}},
@@ -66,6 +66,14 @@ constexpr std::array<PhoneChannelTarget, 40 * kChannelCount> kArticulation{{
     {"AW", Channel::labiodental, 0.0f, {1.0f, 15.0f, 15.0f, 1.0f}},
     {"AW", Channel::tongue_tip, 0.1f, {0.3f, 20.0f, 20.0f, 1.0f}},
     {"AW", Channel::tongue_body, 0.2f, {1.0f, 20.0f, 20.0f, 1.0f}},
+    {"AX", Channel::jaw, 0.16f, {0.5f, 14.0f, 14.0f, 1.0f}},
+    {"AX", Channel::lip_opening, 0.4f, {0.5f, 14.0f, 14.0f, 1.0f}},
+    {"AX", Channel::rounding, 0.0f, {0.5f, 14.0f, 14.0f, 1.0f}},
+    {"AX", Channel::spreading, 0.0f, {0.5f, 14.0f, 14.0f, 1.0f}},
+    {"AX", Channel::closure, 0.0f, {1.0f, 15.0f, 15.0f, 1.0f}},
+    {"AX", Channel::labiodental, 0.0f, {1.0f, 15.0f, 15.0f, 1.0f}},
+    {"AX", Channel::tongue_tip, 0.15f, {0.3f, 20.0f, 20.0f, 1.0f}},
+    {"AX", Channel::tongue_body, 0.3f, {0.5f, 20.0f, 20.0f, 1.0f}},
     {"AY", Channel::jaw, 0.24f, {1.0f, 14.0f, 14.0f, 1.0f}},
     {"AY", Channel::lip_opening, 0.8f, {1.0f, 14.0f, 14.0f, 1.0f}},
     {"AY", Channel::rounding, 0.0f, {1.0f, 14.0f, 14.0f, 1.0f}},

@@ -58,7 +58,7 @@ TEST(RecordingScript, SectionsCoverageAndDeterminism) {
   EXPECT_EQ(script.items[0].text, "you");
   EXPECT_EQ(script.items[1].text, "the");
   EXPECT_EQ(script.items[2].text, "a");
-  EXPECT_EQ(script.items[2].syllables[0].phones, std::vector<Phone>{Phone::AH});  // first entry wins
+  EXPECT_EQ(script.items[2].syllables[0].phones, std::vector<Phone>{Phone::AX});  // first entry wins
   std::size_t syllable_words = 0;
   double previous_gain = 1e300;
   std::set<std::string> texts;

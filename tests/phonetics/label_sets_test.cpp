@@ -37,9 +37,10 @@ TEST(LabelSets, SilencesAndNoisesAreFoundNotForcedOntoPhones) {
 }
 
 TEST(LabelSets, Arpabet) {
-  EXPECT_EQ(one(LabelSet::arpabet, "AH0"), Phone::AH);
+  EXPECT_EQ(one(LabelSet::arpabet, "AH0"), Phone::AX);  // CMUdict's schwa
+  EXPECT_EQ(one(LabelSet::arpabet, "AH1"), Phone::AH);
   EXPECT_EQ(one(LabelSet::arpabet, "ah_I"), Phone::AH);  // Gentle's word-position tag
-  EXPECT_EQ(one(LabelSet::arpabet, "ax"), Phone::AH);    // Festival's radio set
+  EXPECT_EQ(one(LabelSet::arpabet, "ax"), Phone::AX);    // Festival's radio set
   EXPECT_EQ(one(LabelSet::arpabet, "jh_B"), Phone::JH);
   EXPECT_FALSE(map_label(LabelSet::arpabet, "PT"));
   EXPECT_FALSE(map_label(LabelSet::arpabet, "dcl"));
@@ -50,7 +51,8 @@ TEST(LabelSets, TimitClosuresJoinTheirRelease) {
   ASSERT_TRUE(dcl);
   EXPECT_EQ(dcl->join, LabelJoin::with_next);
   EXPECT_EQ(dcl->phones.at(0), Phone::D);
-  EXPECT_EQ(one(LabelSet::timit, "ax-h"), Phone::AH);
+  EXPECT_EQ(one(LabelSet::timit, "ax-h"), Phone::AX);
+  EXPECT_EQ(one(LabelSet::timit, "ah"), Phone::AH);
   EXPECT_EQ(one(LabelSet::timit, "hv"), Phone::HH);
 }
 
@@ -88,7 +90,7 @@ TEST(LabelSets, EmuAeAspirationAndCompounds) {
 }
 
 TEST(LabelSets, MochaTimitByLexicalSet) {
-  EXPECT_EQ(one(LabelSet::mocha, "@"), Phone::AH);
+  EXPECT_EQ(one(LabelSet::mocha, "@"), Phone::AX);
   EXPECT_EQ(one(LabelSet::mocha, "@@"), Phone::ER);
   EXPECT_EQ(one(LabelSet::mocha, "uh"), Phone::AH);  // strut, not ARPAbet's UH (foot)
   EXPECT_EQ(one(LabelSet::mocha, "u"), Phone::UH);

@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 
 // bob five thin dad see lull shoe red go we it bed hat father boy show good moon how: every class.
 const char* const kWords[] = {"bob", "five", "thin", "dad", "see", "lull", "shoe", "red", "go", "we",
-                              "it",  "bed",  "hat",  "father", "boy", "show", "good", "moon", "how"};
+                              "it",  "bed",  "hat",  "father", "boy", "show", "good", "moon", "how", "sofa"};
 
 class VoiceBuild : public ::testing::Test {
  protected:

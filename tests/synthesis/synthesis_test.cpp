@@ -121,7 +121,7 @@ TEST(CoveredViseme, FallsBackToTheNearestRecordedShape) {
   EXPECT_EQ(covered_viseme(*g.graph, V::kAlveolar), V::kAlveolar);
   EXPECT_EQ(covered_viseme(*g.graph, V::kLateral), V::kAlveolar);
   EXPECT_EQ(covered_viseme(*g.graph, V::kDental), V::kAlveolar);
-  EXPECT_EQ(covered_viseme(*g.graph, V::kOpenToRounded), V::kOpenUnrounded);
+  EXPECT_EQ(covered_viseme(*g.graph, V::kOpenMidRounded), V::kOpenUnrounded);  // after mid_rounded
   EXPECT_EQ(rule_of([&] { covered_viseme(*g.graph, V::kCloseRounded); }), "viseme-not-covered");
   for (std::size_t v = 0; v < kVisemeClassCount; ++v)
     for (VisemeClass s : viseme_fallbacks()[v].substitutes) EXPECT_NE(static_cast<std::size_t>(s), v);

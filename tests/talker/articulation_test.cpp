@@ -39,12 +39,12 @@ TEST(Articulation, ShapeMapAgreesWithSpec) {
   }
 }
 
-// 39 ARPAbet phones + sil, each with every channel exactly once, values in range.
+// 39 ARPAbet phones + AX + sil, each with every channel exactly once, values in range.
 TEST(Articulation, EveryPhoneHasEveryChannel) {
   const auto phones = articulation_phones();
-  EXPECT_EQ(phones.size(), 40u);
+  EXPECT_EQ(phones.size(), 41u);
   const std::set<std::string_view> expected{
-      "sil", "AA", "AE", "AH", "AO", "AW", "AY", "B", "CH", "D", "DH", "EH", "ER", "EY",
+      "sil", "AA", "AE", "AH", "AO", "AW", "AX", "AY", "B", "CH", "D", "DH", "EH", "ER", "EY",
       "F",   "G",  "HH", "IH", "IY", "JH", "K",  "L", "M",  "N", "NG", "OW", "OY", "P",
       "R",   "S",  "SH", "T",  "TH", "UH", "UW", "V", "W",  "Y", "Z",  "ZH"};
   EXPECT_EQ(std::set<std::string_view>(phones.begin(), phones.end()), expected);
@@ -58,7 +58,7 @@ TEST(Articulation, EveryPhoneHasEveryChannel) {
     EXPECT_GT(row.dominance.theta_after_per_s, 0.0f);
     EXPECT_GT(row.dominance.c, 0.0f);
   }
-  EXPECT_EQ(seen.size(), 40 * kChannelCount);
+  EXPECT_EQ(seen.size(), 41 * kChannelCount);
 }
 
 TEST(Articulation, LooksUpSymbolsWithStressAndRefusesUnknown) {

@@ -64,7 +64,7 @@ TEST(VoiceGraph, DecoderNamesEveryRule) {
   EXPECT_EQ(rule_of(good), "accepted");
   EXPECT_EQ(rule_of(std::vector<std::byte>(good.begin(), good.begin() + 12)), "graph-truncated");
   auto b = good;
-  poke<std::uint32_t>(b, 0, 2);
+  poke<std::uint32_t>(b, 0, 1);  // the 40-phone layout
   EXPECT_EQ(rule_of(b), "graph-version");
   b = good;
   poke<std::uint32_t>(b, 4, 0xFFFFFFFFu);  // a hostile count is checked against the size first

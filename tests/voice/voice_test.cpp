@@ -120,7 +120,7 @@ std::vector<BadFullVoiceCase> bad_full_voices() {
                    v.feature_points = voice_feature_points_json({}, {});
                  })});
   out.push_back({"bad.005.graph-version.fapv",
-                 patched(kGrphIndex, [](std::string& b, std::uint64_t at) { b[at] = 2; })});
+                 patched(kGrphIndex, [](std::string& b, std::uint64_t at) { b[at] = 1; })});  // the 40-phone layout
   out.push_back({"bad.006.section-shape.GRPH-frames.fapv", with([](TinyVoice& v) {
                    v.coefficients = RowMajorMatrixXf{{0.5f}, {-0.5f}, {0.f}, {1.f}};  // 4 frames, the graph has 3
                  })});

@@ -66,7 +66,9 @@ VoiceGraphData decode_voice_graph(std::span<const std::byte> bytes, const std::s
     refuse(0, "graph-truncated", std::to_string(bytes.size()) + " bytes, the header needs 16");
   const auto version = get<std::uint32_t>(bytes, 0);
   if (version != kVoiceGraphLayoutVersion)
-    refuse(0, "graph-version", "layout version " + std::to_string(version) + ", this reader knows 1");
+    refuse(0, "graph-version", "layout version " + std::to_string(version) + ", this reader knows " +
+                                         std::to_string(kVoiceGraphLayoutVersion) +
+                                         (version == 1 ? " (1 numbers the phones before AX was added: build the voice again)" : ""));
   const std::uint64_t states = get<std::uint32_t>(bytes, 4);
   const std::uint64_t utterances = get<std::uint32_t>(bytes, 8);
   VoiceGraphData data;

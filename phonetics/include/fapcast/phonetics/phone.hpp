@@ -1,6 +1,9 @@
 #pragma once
 // The internal phone set: the 39 ARPAbet phones of CMUdict (the set TIMIT-trained aligners fold
-// to) plus SIL for silence and pauses. Stress is not part of a phone; it travels beside it.
+// to), AX for the reduced vowel schwa, and SIL for silence and pauses. CMUdict writes schwa AH0
+// and TIMIT's 39-phone folding merges ax into ah; they are kept apart here because the schwa is
+// seen as a small, neutral opening and AH as a wide one (spec/phones.md "Schwa"). Stress is not
+// part of a phone; it travels beside it.
 // Maps from other symbol sets live in phone_map.hpp; visemes in viseme.hpp; spec/phones.md.
 #include <array>
 #include <cstdint>
@@ -11,12 +14,12 @@
 namespace fapcast {
 
 enum class Phone : std::uint8_t {
-  AA, AE, AH, AO, AW, AY, EH, ER, EY, IH, IY, OW, OY, UH, UW,  // 15 vowels
+  AA, AE, AH, AO, AW, AX, AY, EH, ER, EY, IH, IY, OW, OY, UH, UW,  // 16 vowels
   B, CH, D, DH, F, G, HH, JH, K, L, M, N, NG, P, R, S, SH, T, TH, V, W, Y, Z, ZH,  // 24 consonants
   SIL,  // silence or pause (utterance edges, espeak-ng "_", TIMIT h#/pau/epi)
 };
 
-inline constexpr std::size_t kPhoneCount = 40;
+inline constexpr std::size_t kPhoneCount = 41;
 
 // Manner of articulation (vowels and diphthongs count as manners here).
 enum class Manner : std::uint8_t {
@@ -44,9 +47,10 @@ inline constexpr std::array<PhoneInfo, kPhoneCount> kPhoneTable{{
     // phone        arpabet ipa   manner              place                 voiced rounded
     {Phone::AA,  "AA", "ɑ",  Manner::kVowel,     Place::kBack,         true,  false},  // father, lot
     {Phone::AE,  "AE", "æ",  Manner::kVowel,     Place::kFront,        true,  false},  // cat
-    {Phone::AH,  "AH", "ʌ",  Manner::kVowel,     Place::kCentral,      true,  false},  // cut; AH0 = schwa
+    {Phone::AH,  "AH", "ʌ",  Manner::kVowel,     Place::kCentral,      true,  false},  // cut
     {Phone::AO,  "AO", "ɔ",  Manner::kVowel,     Place::kBack,         true,  true},   // thought
     {Phone::AW,  "AW", "aʊ", Manner::kDiphthong, Place::kBack,         true,  true},   // mouth (ends rounded)
+    {Phone::AX,  "AX", "ə",  Manner::kVowel,     Place::kCentral,      true,  false},  // comma; CMUdict AH0
     {Phone::AY,  "AY", "aɪ", Manner::kDiphthong, Place::kFront,        true,  false},  // price
     {Phone::EH,  "EH", "ɛ",  Manner::kVowel,     Place::kFront,        true,  false},  // dress
     {Phone::ER,  "ER", "ɝ",  Manner::kVowel,     Place::kCentral,      true,  true},   // nurse; ER0 = ɚ

@@ -18,7 +18,7 @@ namespace fapcast {
 inline constexpr auto kEspeakMap = std::to_array<std::pair<std::string_view, Phone>>({
     {"a", Phone::AE},     // trap
     {"aa", Phone::AE},    // bath (en-us: same as trap)
-    {"a#", Phone::AH},    // reduced a, IPA ɐ ("a pup")
+    {"a#", Phone::AX},    // reduced a, IPA ɐ ("a pup"): a schwa
     {"A:", Phone::AA},    // palm
     {"A@", Phone::AA},    // start: ɑːɹ, the r-colouring is folded into the nucleus
     {"A~", Phone::AA},    // nasal vowel in French loans
@@ -27,10 +27,10 @@ inline constexpr auto kEspeakMap = std::to_array<std::pair<std::string_view, Pho
     {"aI@", Phone::AY},   // fire (aɪə)
     {"aI3", Phone::AY},   // fire (aɪɚ)
     {"aU", Phone::AW},    // mouth
-    {"@", Phone::AH},     // schwa (CMUdict AH0)
-    {"@2", Phone::AH},    // schwa variant
-    {"@5", Phone::AH},    // schwa variant (to)
-    {"@-", Phone::AH},    // optional schwa
+    {"@", Phone::AX},     // schwa (CMUdict AH0)
+    {"@2", Phone::AX},    // schwa variant
+    {"@5", Phone::AX},    // schwa variant (to)
+    {"@-", Phone::AX},    // optional schwa
     {"@L", Phone::L},     // syllabic l (TIMIT el -> l)
     {"3", Phone::ER},     // letter: ɚ (CMUdict ER0)
     {"3:", Phone::ER},    // nurse: ɜː
@@ -102,7 +102,7 @@ inline constexpr auto kEspeakMap = std::to_array<std::pair<std::string_view, Pho
 inline constexpr auto kIpaMap = std::to_array<std::pair<std::string_view, Phone>>({
     {"ɑː", Phone::AA}, {"ɑ", Phone::AA}, {"ɒ", Phone::AA}, {"ɑ̃", Phone::AA},
     {"æ", Phone::AE}, {"a", Phone::AE},
-    {"ʌ", Phone::AH}, {"ə", Phone::AH}, {"ɐ", Phone::AH},
+    {"ʌ", Phone::AH}, {"ə", Phone::AX}, {"ɐ", Phone::AX},
     {"ɔː", Phone::AO}, {"ɔ", Phone::AO}, {"oː", Phone::AO}, {"ɔ̃", Phone::AO},
     {"aʊ", Phone::AW}, {"aɪ", Phone::AY},
     {"ɛ", Phone::EH}, {"e", Phone::EH},
@@ -146,7 +146,8 @@ struct TimitPhone {
 };
 
 // TIMIT (and MOCHA-TIMIT, which uses the same labels) -> phones. The 61 TIMIT labels, folded as
-// Lee & Hon (1989) fold them to 39, then to CMUdict's set.
+// Lee & Hon (1989) fold them to 39, then to CMUdict's set, except that the schwas ax and ax-h stay
+// apart from ah as AX (phone.hpp says why).
 inline constexpr auto kTimitMap = std::to_array<std::pair<std::string_view, TimitPhone>>({
     {"iy", {Phone::IY, false}}, {"ih", {Phone::IH, false}}, {"eh", {Phone::EH, false}},
     {"ey", {Phone::EY, false}}, {"ae", {Phone::AE, false}}, {"aa", {Phone::AA, false}},
@@ -156,9 +157,9 @@ inline constexpr auto kTimitMap = std::to_array<std::pair<std::string_view, Timi
     {"ux", {Phone::UW, false}},   // fronted u (dude) -> uw
     {"er", {Phone::ER, false}},
     {"axr", {Phone::ER, false}},  // unstressed er -> er
-    {"ax", {Phone::AH, false}},   // schwa -> ah (CMUdict AH0)
+    {"ax", {Phone::AX, false}},   // schwa (CMUdict AH0)
     {"ix", {Phone::IH, false}},   // reduced i -> ih
-    {"ax-h", {Phone::AH, false}}, // devoiced schwa -> ah
+    {"ax-h", {Phone::AX, false}}, // devoiced schwa -> ax
     {"b", {Phone::B, false}}, {"d", {Phone::D, false}}, {"g", {Phone::G, false}},
     {"p", {Phone::P, false}}, {"t", {Phone::T, false}}, {"k", {Phone::K, false}},
     {"bcl", {Phone::B, true}}, {"dcl", {Phone::D, true}}, {"gcl", {Phone::G, true}},

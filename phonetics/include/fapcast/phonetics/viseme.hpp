@@ -30,11 +30,11 @@ enum class VisemeClass : std::uint8_t {
   kMidFront,          // EH EY: spread, jaw half open
   kOpenFront,         // AE: wide spread, jaw open
   kOpenUnrounded,     // AA AH AY: jaw wide open, lips neutral (AY starts here)
-  kOpenMidRounded,    // AO OY: jaw open, lips rounded (OY starts here)
+  kOpenMidRounded,    // AO OY AW: jaw open, lips rounded (OY starts here, AW ends here)
   kMidRounded,        // OW: rounded, moving toward a close rounding
   kNearCloseRounded,  // UH: loosely rounded, jaw nearly closed
   kCloseRounded,      // UW: tight rounding, strongest protrusion of the vowels
-  kOpenToRounded,     // AW: opens wide then rounds (the glide is what is seen)
+  kSchwa,             // AX: the reduced vowel, a small neutral opening (lips neither round nor spread)
 };
 
 inline constexpr std::size_t kVisemeClassCount = 21;
@@ -73,7 +73,8 @@ inline constexpr std::array<VisemeRow, kPhoneCount> kVisemeTable{{
     {Phone::AE, VisemeClass::kOpenFront, Mpeg4Viseme::kE},        // open spread: nearer e than A:
     {Phone::AH, VisemeClass::kOpenUnrounded, Mpeg4Viseme::kA},    // open central, unrounded
     {Phone::AO, VisemeClass::kOpenMidRounded, Mpeg4Viseme::kO},
-    {Phone::AW, VisemeClass::kOpenToRounded, Mpeg4Viseme::kA},    // nucleus a; glide not coded
+    {Phone::AW, VisemeClass::kOpenMidRounded, Mpeg4Viseme::kA},   // open jaw, ends rounded; FAP 1: nucleus a
+    {Phone::AX, VisemeClass::kSchwa, Mpeg4Viseme::kE},            // mid central: nearest the mid e
     {Phone::AY, VisemeClass::kOpenUnrounded, Mpeg4Viseme::kA},    // nucleus a
     {Phone::EH, VisemeClass::kMidFront, Mpeg4Viseme::kE},
     {Phone::ER, VisemeClass::kRhotic, Mpeg4Viseme::kR},           // r-coloured: lips as for r

@@ -15,7 +15,8 @@
 
 namespace fapcast {
 
-inline constexpr std::uint32_t kVoiceGraphLayoutVersion = 1;
+// 2: the 41 phones of phone.hpp (AX added), class 20 the schwa. 1 had 40 phones, class 20 AW's.
+inline constexpr std::uint32_t kVoiceGraphLayoutVersion = 2;
 inline constexpr std::size_t kVoiceGraphHeaderBytes = 16;
 inline constexpr std::size_t kVoiceGraphStateBytes = 16;
 inline constexpr std::size_t kVoiceGraphUtteranceBytes = 8;

@@ -131,18 +131,22 @@ constexpr double kTolerancesMs[] = {10, 20, 25, 50};
 std::string format_alignment_table(std::span<const AlignmentScore> scores, const std::string& command) {
   std::ostringstream out;
   out << "# " << command << "\n"
-      << "# with the transcript: reference boundaries within 10 / 20 / 25 / 50 ms; without it: 10 ms frames in the\n"
-      << "# reference phone's viseme class (spec/recognise.md, \"Accuracy\")\n";
-  char line[256];
-  std::snprintf(line, sizeof line, "%-28s %5s %8s %10s  %-27s %7s %9s\n", "set", "takes", "seconds", "boundaries",
-                "within 10 / 20 / 25 / 50 ms", "frames", "in class");
+      << "# with the transcript: reference boundaries within 10 / 20 / 25 / 50 ms, and reference phones the\n"
+      << "# alignment names alike; without it: 10 ms frames in the reference phone's viseme class\n"
+      << "# (spec/recognise.md, \"Accuracy\")\n";
+  char line[320];
+  std::snprintf(line, sizeof line, "%-28s %5s %8s %10s  %-27s  %-13s %7s %9s\n", "set", "takes", "seconds",
+                "boundaries", "within 10 / 20 / 25 / 50 ms", "phones alike", "frames", "in class");
   out << line;
   for (const AlignmentScore& s : scores) {
     char within[64];
     std::snprintf(within, sizeof within, "%.1f / %.1f / %.1f / %.1f %%", 100 * s.boundaries.within(0.010),
                   100 * s.boundaries.within(0.020), 100 * s.boundaries.within(0.025), 100 * s.boundaries.within(0.050));
-    std::snprintf(line, sizeof line, "%-28s %5zu %8.1f %10zu  %-27s %7zu %7.1f %%\n", s.set.c_str(), s.recordings,
-                  s.seconds, s.boundaries.errors_s.size(), within, s.frames.frames, 100 * s.frames.share());
+    char alike[48];
+    std::snprintf(alike, sizeof alike, "%zu / %zu", s.boundaries.matched, s.boundaries.reference_phones);
+    std::snprintf(line, sizeof line, "%-28s %5zu %8.1f %10zu  %-27s  %-13s %7zu %7.1f %%\n", s.set.c_str(),
+                  s.recordings, s.seconds, s.boundaries.errors_s.size(), within, alike, s.frames.frames,
+                  100 * s.frames.share());
     out << line;
   }
   return out.str();
@@ -158,6 +162,10 @@ nlohmann::json alignment_json(std::span<const AlignmentScore> scores, const std:
                     {"seconds", s.seconds},
                     {"boundaries", s.boundaries.errors_s.size()},
                     {"within_ms", within},
+                    {"reference_phones", s.boundaries.reference_phones},
+                    {"phones_matched", s.boundaries.matched},
+                    {"phones_substituted", s.boundaries.substituted},
+                    {"phones_deleted", s.boundaries.deleted},
                     {"frames", s.frames.frames},
                     {"frames_in_class", s.frames.in_class},
                     {"frame_share", s.frames.share()}});

@@ -94,6 +94,13 @@ TEST(AlignCli, EvalAlignScoresOneRecordingWithAndWithoutItsTranscript) {
   EXPECT_LE(w10, w25);
   EXPECT_LE(w25, w50);
   EXPECT_GE(w25, 0.70);
+  // Every reference phone is matched, substituted or deleted; the table prints "matched / of".
+  const auto phones = set.at("reference_phones").get<std::size_t>();
+  const auto matched = set.at("phones_matched").get<std::size_t>();
+  EXPECT_EQ(matched + set.at("phones_substituted").get<std::size_t>() + set.at("phones_deleted").get<std::size_t>(),
+            phones);
+  EXPECT_GE(matched, phones / 2) << "the alignment names most of the reference's phones alike";
+  EXPECT_NE(r.out.find(std::to_string(matched) + " / " + std::to_string(phones)), std::string::npos) << r.out;
   EXPECT_GE(set.at("frames").get<int>(), 200);  // 2.2 s at 10 ms
   EXPECT_GE(set.at("frame_share").get<double>(), 0.70);
   EXPECT_EQ(run_command(fapcast("eval align " + std::string(FAPCAST_TEST_DATA) + " --recording nope")).exit_code, 2);

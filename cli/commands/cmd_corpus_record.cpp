@@ -51,6 +51,15 @@ const fapcast::cli::Registration corpus_record_command{"corpus record-reference"
               << " utterances, " << summary.audio_seconds << " s of audio, " << summary.marker_frames
               << " marker frames at 60 fps, " << summary.bytes << " bytes, recorded in " << seconds
               << " s\n";
+    std::cout << "divisemes recorded: " << summary.divisemes_recorded << " of " << fapcast::kDivisemeCount << "\n";
+    if (!summary.divisemes_not_said.empty()) {
+      std::string names;
+      for (std::uint32_t d : summary.divisemes_not_said) names += " " + fapcast::diviseme_name(d);
+      std::cerr << "fapcast: warning: " << summary.divisemes_not_said.size()
+                << " diviseme(s) of the script's pronunciations are in no take (espeak-ng said the items "
+                   "otherwise; the unit search joins anywhere for them):"
+                << names << "\n";
+    }
   });
 }};
 

@@ -41,12 +41,16 @@ std::string arpabet_spelling(const std::vector<Syllable>& syllables) {
   return out;
 }
 
+}  // namespace
+
 std::string diviseme_name(std::uint32_t id) {
   // Inverse of diviseme_id.
   const std::size_t full = id >= kSilenceClass * kVisemeClassCount + kSilenceClass ? id + 1 : id;
   return std::string(viseme_class_name(static_cast<VisemeClass>(full / kVisemeClassCount))) + ">" +
          std::string(viseme_class_name(static_cast<VisemeClass>(full % kVisemeClassCount)));
 }
+
+namespace {
 
 // Nonsense candidates: three class representatives with at least one vowel (a pronounceable
 // core), e.g. B AA D; each covers sil>a, a>b, b>c, c>sil.

@@ -119,6 +119,7 @@ ReferenceCorpusSummary record_reference_corpus(
   nlohmann::json utterances = nlohmann::json::array();
 
   ReferenceCorpusSummary summary;
+  std::vector<bool> scripted(kDivisemeCount, false), said(kDivisemeCount, false);
   auto write = [&](const std::string& name, std::string_view bytes) {
     sink(name, bytes);
     summary.bytes += bytes.size();
@@ -151,10 +152,20 @@ ReferenceCorpusSummary record_reference_corpus(
                           {"sample_rate_hz", take.audio.sample_rate.hz},
                           {"effort", take.effort},
                           {"synthetic", true}});
+    std::vector<Phone> script_phones, spoken_phones;
+    for (const Syllable& syllable : item.syllables)
+      script_phones.insert(script_phones.end(), syllable.phones.begin(), syllable.phones.end());
+    for (const TimedPhone& p : take.speech.phones) spoken_phones.push_back(p.phone);
+    for (std::uint32_t d : divisemes_of(script_phones)) scripted[d] = true;
+    for (std::uint32_t d : divisemes_of(spoken_phones)) said[d] = true;
     ++summary.utterances;
     summary.marker_frames += take.captured.frame_count();
     summary.audio_seconds += seconds(static_cast<std::int64_t>(take.audio.samples.size()), static_cast<int>(take.audio.sample_rate.hz));
     if (progress) progress(i + 1, total);
+  }
+  for (std::uint32_t d = 0; d < kDivisemeCount; ++d) {
+    if (said[d]) ++summary.divisemes_recorded;
+    else if (scripted[d]) summary.divisemes_not_said.push_back(d);
   }
   manifest["utterances"] = std::move(utterances);
   write("manifest.json", manifest.dump(2) + "\n");

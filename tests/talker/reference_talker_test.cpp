@@ -92,5 +92,24 @@ TEST(ReferenceTalker, CorpusDirectoryHasManifestAndSaysSynthetic) {
   std::filesystem::remove_all(dir);
 }
 
+// What the corpus says it recorded is what espeak-ng said, not what the script asked for.
+TEST(ReferenceTalker, CorpusCountsTheDivisemesSaidAndNamesThoseNotSaid) {
+  const auto dir = std::filesystem::temp_directory_path() / "fapcast-refcorpus-said-test";
+  std::filesystem::remove_all(dir);
+  RecordingScript script;
+  const std::vector<Phone> b_aa_d = {Phone::B, Phone::AA, Phone::D};
+  const std::vector<Phone> uh_ax_eh = {Phone::UH, Phone::AX, Phone::EH};
+  script.items = {{ScriptSection::kNonsense, "B AA1 D", {{b_aa_d, Stress::kPrimary}}, "[[b'A:d]]", 1.0},
+                  // espeak-ng reads these mnemonics as the diphthong U@ and a linking r: U@rE
+                  {ScriptSection::kNonsense, "UH1 AX1 EH1", {{uh_ax_eh, Stress::kPrimary}}, "[['U@E]]", 1.0}};
+  const auto summary = record_reference_corpus(script, dir, {.count = 0, .seed = 3, .script = {}},
+                                               [](const std::string&, std::string_view) {});
+  std::string not_said;
+  for (std::uint32_t d : summary.divisemes_not_said) not_said += diviseme_name(d) + " ";
+  EXPECT_EQ(not_said, "near_close_rounded>schwa schwa>mid_front ");
+  EXPECT_EQ(summary.divisemes_recorded, 8u);  // sil>b b>aa aa>d d>sil, sil>uh uh>r r>eh eh>sil
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace fapcast

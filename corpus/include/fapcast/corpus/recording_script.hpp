@@ -27,6 +27,9 @@ std::uint32_t diviseme_id(VisemeClass a, VisemeClass b);
 // The divisemes of an utterance of `phones` spoken alone: silence, the phones, silence.
 std::vector<std::uint32_t> divisemes_of(const std::vector<Phone>& phones);
 
+// "open_front>bilabial": the classes of diviseme `id`, as spec/visemes.tsv names them.
+std::string diviseme_name(std::uint32_t id);
+
 enum class ScriptSection { kCommonWord, kSyllableWord, kNonsense };
 
 struct ScriptItem {

@@ -61,6 +61,10 @@ struct ReferenceCorpusSummary {
   double audio_seconds = 0.0;
   std::uint64_t bytes = 0;         // written through the sink, WAVs included
   std::size_t dropped_runs = 0;
+  // Divisemes (recording_script.hpp) in the phones espeak-ng said, over all takes; and those the
+  // recorded items' script phones have but the takes do not (espeak-ng read an item otherwise).
+  std::size_t divisemes_recorded = 0;
+  std::vector<std::uint32_t> divisemes_not_said;
 };
 
 // Records the corpus of `script` into `directory`: C3D, TextGrid and manifest.json through

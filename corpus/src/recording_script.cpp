@@ -154,20 +154,29 @@ RecordingScript build_recording_script(const std::vector<WordCount>& counts,
   for (const GreedyPick& pick : greedy_cover(nonsense_units, unit_weight, diviseme_covered, nonsense.size())) {
     const std::vector<Phone>& phones = nonsense[pick.candidate];
     Syllable s{phones, Stress::kPrimary};
-    std::string espeak = "[[";
-    bool stressed = false;
-    for (Phone p : phones) {
-      if (is_vowel(p) && !stressed) { espeak += '\''; stressed = true; }
-      espeak += espeak_mnemonic(p);
-    }
-    espeak += "]]";
-    script.items.push_back({ScriptSection::kNonsense, arpabet_spelling({s}), {s}, espeak, pick.gain});
+    script.items.push_back({ScriptSection::kNonsense, arpabet_spelling({s}), {s}, nonsense_espeak_phonemes(phones), pick.gain});
   }
   for (std::uint32_t d = 0; d < kDivisemeCount; ++d) {
     if (diviseme_covered[d]) ++script.coverage.divisemes_total_covered;
     else script.coverage.uncovered_divisemes.push_back(d);
   }
   return script;
+}
+
+std::string nonsense_espeak_phonemes(const std::vector<Phone>& phones) {
+  std::string espeak = "[[";
+  bool stressed = false;
+  for (std::size_t k = 0; k < phones.size(); ++k) {
+    const Phone p = phones[k];
+    if (is_vowel(p)) {
+      espeak += stressed ? ',' : '\'';
+      stressed = true;
+    }
+    if (p == Phone::IH) espeak += "I#";
+    else if (p == Phone::AX && k + 1 < phones.size() && phones[k + 1] == Phone::R) espeak += "@2";
+    else espeak += espeak_mnemonic(p);
+  }
+  return espeak + "]]";
 }
 
 std::string format_coverage(const ScriptCoverage& c) {

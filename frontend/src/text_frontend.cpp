@@ -371,12 +371,37 @@ Speech speak_chunk(std::string_view text, std::size_t base, const SpeakOptions& 
   if (!spoken.empty() && spoken.front().timed.start_sample > 0) {
     spoken.insert(spoken.begin(), {{Phone::SIL, 0, 0}, {0, 0, kNoWord, "_"}});
   }
-  std::vector<SpokenPhone> kept;
-  for (std::size_t i = 0; i < spoken.size(); ++i) {
-    SpokenPhone p = spoken[i];
-    p.timed.end_sample = i + 1 < spoken.size() ? spoken[i + 1].event.event_sample : total;
-    if (p.timed.end_sample > p.timed.start_sample) kept.push_back(std::move(p));
+  for (std::size_t i = 0; i < spoken.size(); ++i)
+    spoken[i].timed.end_sample = i + 1 < spoken.size() ? spoken[i + 1].event.event_sample : total;
+  // espeak-ng gives some phones no samples of their own: an /l/ or /r/ after a vowel before a
+  // pause or a voiceless fricative ("all", "yourself") is synthesised inside the vowel's segment,
+  // and its event shares the next phone's sample. Such a run of phones takes the later half of the
+  // segment before it, in equal shares, so the phone is kept; an empty silence, or an empty phone
+  // with nothing before it, is dropped.
+  for (std::size_t i = 1; i < spoken.size(); ++i) {
+    if (spoken[i].timed.phone == Phone::SIL || spoken[i].timed.end_sample > spoken[i].timed.start_sample) continue;
+    std::size_t run_end = i;  // [i, run_end): the empty phones after spoken[i - 1]
+    while (run_end < spoken.size() && spoken[run_end].timed.phone != Phone::SIL &&
+           spoken[run_end].timed.end_sample == spoken[run_end].timed.start_sample)
+      ++run_end;
+    TimedPhone& before = spoken[i - 1].timed;
+    const std::int64_t length = before.end_sample - before.start_sample;
+    const auto shares = static_cast<std::int64_t>(run_end - i);
+    if (length < 2 * shares) { i = run_end - 1; continue; }  // too short to share: dropped below
+    const std::int64_t split = before.start_sample + length / 2;
+    const std::int64_t share = (before.end_sample - split) / shares;
+    before.end_sample = split;
+    for (std::size_t k = i; k < run_end; ++k) {
+      const auto n = static_cast<std::int64_t>(k - i);
+      spoken[k].timed.start_sample = split + n * share;
+      spoken[k].timed.end_sample = k + 1 < run_end ? split + (n + 1) * share : spoken[run_end - 1].timed.end_sample;
+      spoken[k].event.release_sample = spoken[k].timed.start_sample;
+    }
+    i = run_end - 1;
   }
+  std::vector<SpokenPhone> kept;
+  for (SpokenPhone& p : spoken)
+    if (p.timed.end_sample > p.timed.start_sample) kept.push_back(std::move(p));
   // Closures: move the start of each closing phone back to where the audio goes quiet.
   for (std::size_t i = 1; i < kept.size(); ++i) {
     SpokenPhone& p = kept[i];

@@ -58,6 +58,26 @@ TEST(TextFrontend, APupGivesPhonesWordsAndEspeakRate) {
   EXPECT_LE(s.words[0].end_sample, s.words[1].start_sample);
 }
 
+// espeak-ng synthesises an /l/ after a vowel before a pause or a voiceless fricative inside the
+// vowel's segment: its phoneme event has the next phone's sample. The phone is kept, in the later
+// half of the vowel's segment ("yourself" Y AO S EH L F, "all" AO L), not dropped.
+TEST(TextFrontend, APhoneEspeakGivesNoSamplesTakesTheLaterHalfOfTheOneBefore) {
+  for (const auto& [text, phones] : {std::pair<const char*, const char*>{"yourself", "Y AO S EH L F SIL "},
+                                     {"all", "AO L SIL "}, {"involved", "IH N V AA L V D SIL "}}) {
+    const Speech s = speak(text);
+    expect_contiguous(s);
+    EXPECT_EQ(arpabet_of(s), phones) << text;
+    for (std::size_t i = 1; i < s.phones.size(); ++i) {
+      if (s.phones[i].phone != Phone::L) continue;
+      const TimedPhone& vowel = s.phones[i - 1];
+      const TimedPhone& l = s.phones[i];
+      EXPECT_TRUE(is_vowel(vowel.phone)) << text;
+      EXPECT_EQ(l.start_sample, vowel.start_sample + (l.end_sample - vowel.start_sample) / 2) << text;
+      EXPECT_EQ(s.events[i].event_sample, l.end_sample) << text;  // where espeak-ng put it
+    }
+  }
+}
+
 class Closures : public testing::TestWithParam<const char*> {};
 
 // In "a pup" and "a bob" the lips close after the schwa: the stop's segment must start

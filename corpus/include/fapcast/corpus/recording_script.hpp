@@ -30,6 +30,14 @@ std::vector<std::uint32_t> divisemes_of(const std::vector<Phone>& phones);
 // "open_front>bilabial": the classes of diviseme `id`, as spec/visemes.tsv names them.
 std::string diviseme_name(std::uint32_t id);
 
+// espeak-ng phoneme input ("[[b'A:d]]") that espeak-ng en-us says as `phones`, one syllable
+// stressed on its first vowel. Spelled so that its reading rules leave each phone as asked: a
+// secondary stress before every later vowel (no two vowels read as a diphthong, no r linking
+// them), IH as the reduced I# (a final I is read as the happy vowel i, and I before a vowel
+// takes a glide), AX before R as @2 (@r is read as the r-coloured 3). espeak-ng still puts a
+// glide (;, read as Y) between IY and a following vowel.
+std::string nonsense_espeak_phonemes(const std::vector<Phone>& phones);
+
 enum class ScriptSection { kCommonWord, kSyllableWord, kNonsense };
 
 struct ScriptItem {

@@ -15,12 +15,6 @@ namespace {
 
 constexpr auto kSilenceClass = static_cast<std::size_t>(VisemeClass::kSilence);
 
-std::vector<Phone> phones_of(const std::vector<Syllable>& syllables) {
-  std::vector<Phone> phones;
-  for (const Syllable& s : syllables) phones.insert(phones.end(), s.phones.begin(), s.phones.end());
-  return phones;
-}
-
 std::string syllable_key(const Syllable& s) {
   std::string key;
   for (Phone p : s.phones) key += std::string(arpabet(p)) + " ";
@@ -42,6 +36,12 @@ std::string arpabet_spelling(const std::vector<Syllable>& syllables) {
 }
 
 }  // namespace
+
+std::vector<Phone> phones_of(const std::vector<Syllable>& syllables) {
+  std::vector<Phone> phones;
+  for (const Syllable& s : syllables) phones.insert(phones.end(), s.phones.begin(), s.phones.end());
+  return phones;
+}
 
 std::string diviseme_name(std::uint32_t id) {
   // Inverse of diviseme_id.

@@ -152,11 +152,9 @@ ReferenceCorpusSummary record_reference_corpus(
                           {"sample_rate_hz", take.audio.sample_rate.hz},
                           {"effort", take.effort},
                           {"synthetic", true}});
-    std::vector<Phone> script_phones, spoken_phones;
-    for (const Syllable& syllable : item.syllables)
-      script_phones.insert(script_phones.end(), syllable.phones.begin(), syllable.phones.end());
+    std::vector<Phone> spoken_phones;
     for (const TimedPhone& p : take.speech.phones) spoken_phones.push_back(p.phone);
-    for (std::uint32_t d : divisemes_of(script_phones)) scripted[d] = true;
+    for (std::uint32_t d : divisemes_of(phones_of(item.syllables))) scripted[d] = true;
     for (std::uint32_t d : divisemes_of(spoken_phones)) said[d] = true;
     ++summary.utterances;
     summary.marker_frames += take.captured.frame_count();

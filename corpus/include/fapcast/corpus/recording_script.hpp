@@ -24,6 +24,9 @@ inline constexpr std::size_t kDivisemeCount = kVisemeClassCount * kVisemeClassCo
 // Dense id of the diviseme a -> b (not both silence), in [0, kDivisemeCount).
 std::uint32_t diviseme_id(VisemeClass a, VisemeClass b);
 
+// The phones of a pronunciation, syllable after syllable.
+std::vector<Phone> phones_of(const std::vector<Syllable>& syllables);
+
 // The divisemes of an utterance of `phones` spoken alone: silence, the phones, silence.
 std::vector<std::uint32_t> divisemes_of(const std::vector<Phone>& phones);
 

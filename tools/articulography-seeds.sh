@@ -4,21 +4,27 @@
 # other takes per seed), builds a voice from each, and runs `fapcast eval articulography` on
 # MOCHA-TIMIT fsew0_001 (reference alignment and the own alignment) with each voice. Prints each
 # voice's range ratio / r at zero lag / best lag per measure, then the mean, least and greatest
-# over the seeds (spec/articulography.md, "One take, six voices").
-#   tools/articulography-seeds.sh [SEED ...]        (default: 1 2 3 4 5 6; seed 1 is the default voice's)
+# over the seeds (spec/articulography.md, "One take, many voices").
+#   tools/articulography-seeds.sh [SEED ...]        (default: 1 to 24; seed 1 is the default voice's)
 #   FAPCAST=PATH   the executable (default build/release/cli/fapcast, what tools/build.sh makes)
 #   WORK=DIR       where corpora (deleted after each build), voices and reports go
 #                  (default build/articulography-seeds); voices are kept per executable (a
 #                  folder named by its SHA-256) and reused by the same executable only
 #   LABELS=FILE    the phone alignment to animate from (default fsew0_001.lab, MOCHA's own; an
 #                  edited copy answers "what if this phone were labelled otherwise")
+#   BASE=FILE      a copy of rows.tsv (in WORK) from an earlier run with other code or options: also prints,
+#                  per measure, this run minus BASE seed by seed (the same seed records the same
+#                  actor saying the same takes, so the corpus draw cancels): mean, its standard
+#                  error, and in how many seeds it rose
 # Extra arguments for every `eval articulography` run: FAPCAST_EVAL_ARGS (e.g. "--jaw-weight 0.1").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 exe=${FAPCAST:-build/release/cli/fapcast}
 work=${WORK:-build/articulography-seeds}
 seeds=("$@")
-[ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3 4 5 6)
+# 24 voices: their means' standard error in r is about 0.02 and that of a paired difference about
+# 0.01; six voices' means moved by 0.02-0.04 from the corpus draw alone.
+[ ${#seeds[@]} -gt 0 ] || mapfile -t seeds < <(seq 1 24)
 [ -x "$exe" ] || { echo "articulography-seeds: no executable $exe (bash tools/build.sh, or set FAPCAST)" >&2; exit 2; }
 # Voices built by another executable may come from other code: one folder per executable.
 voices=$work/$(sha256sum "$exe" | cut -c1-16)
@@ -41,6 +47,8 @@ for seed in "${seeds[@]}"; do
     ${FAPCAST_EVAL_ARGS:-} -q > "$work/report-seed$seed.md" 2> "$work/report-seed$seed.log" ||
     { cat "$work/report-seed$seed.log" >&2; exit 1; }
 done
+
+[ -z "${BASE:-}" ] || [ -f "$BASE" ] || { echo "articulography-seeds: no BASE file $BASE" >&2; exit 2; }
 
 # Table rows of the voice's two animations: "## animated from the reference alignment" / "... own
 # alignment ..."; columns: measure, range real, range ours, ratio, r, best lag, r at best lag.
@@ -77,3 +85,21 @@ awk -F'\t' '
                  sum[key "\tratio"] / c, lo[key "\tratio"], hi[key "\tratio"],
                  sum[key "\tr"] / c, lo[key "\tr"], hi[key "\tr"],
                  sum[key "\tlag"] / c, lo[key "\tlag"], hi[key "\tlag"] } }' "$work/rows.tsv"
+
+[ -n "${BASE:-}" ] || exit 0
+echo
+echo "this run minus BASE ($BASE), seed by seed (seeds in both)"
+echo
+echo "| alignment | measure | r: mean difference (standard error), seeds up | ratio: mean difference | best lag ms: mean difference |"
+echo "|---|---|---|---|---|"
+awk -F'\t' '
+  FNR == NR { base[$1 "\t" $2 "\t" $3] = $4 "\t" $5 "\t" $6; next }
+  { key = $1 "\t" $2 "\t" $3; if (!(key in base)) next
+    split(base[key], b, "\t"); m = $2 "\t" $3
+    if (!(m in n)) order[++count] = m
+    ++n[m]; d = $5 - b[2]; dr[m] += d; dr2[m] += d * d; if (d > 0) ++up[m]
+    dratio[m] += $4 - b[1]; dlag[m] += $6 - b[3] }
+  END { for (i = 1; i <= count; ++i) { m = order[i]; c = n[m]; split(m, k, "\t"); mean = dr[m] / c
+          se = c > 1 ? sqrt((dr2[m] - c * mean * mean) / (c - 1) / c) : 0
+          printf "| %s | %s | %+.3f (%.3f), %d of %d | %+.3f | %+.1f |\n", k[1], k[2], mean, se, up[m] + 0, c,
+                 dratio[m] / c, dlag[m] / c } }' "$BASE" "$work/rows.tsv"

@@ -17,8 +17,9 @@ namespace fapcast::cli {
 // frames to phones by synthesis's frame rule, voice_corpus.cpp; 6 records the schwa as AX, the
 // 41st phone, with a viseme class of its own; 7 keeps the phones espeak-ng gives no samples of
 // their own, text_frontend.cpp, and spells the nonsense items so that espeak-ng says them as
-// asked, recording_script.cpp; 8 lets every phone's jaw anticipate, articulation.cpp).
-inline constexpr std::uint32_t kDefaultVoiceRecipe = 8;
+// asked, recording_script.cpp; 8 lets every phone's jaw anticipate, articulation.cpp; 9 writes
+// the nonsense items' rhotic class as the consonant R, not the vowel ER, recording_script.cpp).
+inline constexpr std::uint32_t kDefaultVoiceRecipe = 9;
 
 // CRC-32, as 8 lower-case hex digits, of the recipe number, the corpus seed, every row of the
 // articulation and shape tables and of the prototype details, and the prototype rules.

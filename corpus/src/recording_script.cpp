@@ -50,27 +50,20 @@ std::string diviseme_name(std::uint32_t id) {
          std::string(viseme_class_name(static_cast<VisemeClass>(full % kVisemeClassCount)));
 }
 
-namespace {
-
-// Nonsense candidates: three class representatives with at least one vowel (a pronounceable
-// core), e.g. B AA D; each covers sil>a, a>b, b>c, c>sil.
 std::vector<std::vector<Phone>> nonsense_candidates() {
-  std::vector<Phone> reps;
-  for (std::size_t c = 0; c < kVisemeClassCount; ++c) {
-    if (c != kSilenceClass) reps.push_back(representative_phone(static_cast<VisemeClass>(c)));
-  }
+  const std::vector<Phone> reps = nonsense_alphabet();
   std::vector<std::vector<Phone>> out;
   for (Phone a : reps) {
     for (Phone b : reps) {
       for (Phone c : reps) {
-        if (is_vowel(a) || is_vowel(b) || is_vowel(c)) out.push_back({a, b, c});
+        if (!is_vowel(a) && !is_vowel(b) && !is_vowel(c)) continue;
+        if (a == Phone::R && !is_vowel(b)) continue;  // no English onset: espeak-ng drops the r
+        out.push_back({a, b, c});
       }
     }
   }
   return out;
 }
-
-}  // namespace
 
 std::uint32_t diviseme_id(VisemeClass a, VisemeClass b) {
   const std::size_t full = static_cast<std::size_t>(a) * kVisemeClassCount + static_cast<std::size_t>(b);
@@ -161,6 +154,16 @@ RecordingScript build_recording_script(const std::vector<WordCount>& counts,
     else script.coverage.uncovered_divisemes.push_back(d);
   }
   return script;
+}
+
+std::vector<Phone> nonsense_alphabet() {
+  std::vector<Phone> alphabet;
+  for (std::size_t c = 0; c < kVisemeClassCount; ++c) {
+    const auto v = static_cast<VisemeClass>(c);
+    if (v == VisemeClass::kRhotic) alphabet.push_back(Phone::R);
+    else if (c != kSilenceClass) alphabet.push_back(representative_phone(v));
+  }
+  return alphabet;
 }
 
 std::string nonsense_espeak_phonemes(const std::vector<Phone>& phones) {

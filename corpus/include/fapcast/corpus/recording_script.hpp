@@ -58,18 +58,7 @@ struct ScriptItem {
   ScriptSection section;
   std::string text;                 // the word, or the nonsense item's ARPAbet spelling
   std::vector<Syllable> syllables;  // its pronunciation (nonsense: one syllable)
-  std::string espeak_phonemes;      // The nonsense items' alphabet, one phone per viseme class but silence: the class's
-// representative_phone, except the rhotic class's, R. Nonsense items record the divisemes words
-// miss, which for the rhotic class are the consonant between vowels ("for us" F AX R AH S), not
-// the r-coloured vowel ER.
-std::vector<Phone> nonsense_alphabet();
-
-// The nonsense candidates: three letters of nonsense_alphabet() with at least one vowel (a
-// pronounceable core), e.g. B AA D, each covering sil>a, a>b, b>c, c>sil; none starts with R
-// before a consonant, an onset English lacks (espeak-ng drops the r).
-std::vector<std::vector<Phone>> nonsense_candidates();
-
-// espeak-ng phoneme input ("[[b'A:d]]") for nonsense items
+  std::string espeak_phonemes;      // espeak-ng phoneme input ("[[b'A:d]]") for nonsense items
   double gain;                      // greedy gain when picked (syllable tokens or divisemes); 0 for common words
 };
 

@@ -32,6 +32,7 @@ mkdir -p "$voices"
 m=tests/data/mocha/fsew0_001
 labels=${LABELS:-$m.lab}
 [ -f "$labels" ] || { echo "articulography-seeds: no label file $labels" >&2; exit 2; }
+[ -z "${BASE:-}" ] || [ -f "$BASE" ] || { echo "articulography-seeds: no BASE file $BASE" >&2; exit 2; }
 
 for seed in "${seeds[@]}"; do
   [[ $seed =~ ^[0-9]+$ ]] || { echo "articulography-seeds: seed '$seed' is not a whole number" >&2; exit 2; }
@@ -47,8 +48,6 @@ for seed in "${seeds[@]}"; do
     ${FAPCAST_EVAL_ARGS:-} -q > "$work/report-seed$seed.md" 2> "$work/report-seed$seed.log" ||
     { cat "$work/report-seed$seed.log" >&2; exit 1; }
 done
-
-[ -z "${BASE:-}" ] || [ -f "$BASE" ] || { echo "articulography-seeds: no BASE file $BASE" >&2; exit 2; }
 
 # Table rows of the voice's two animations: "## animated from the reference alignment" / "... own
 # alignment ..."; columns: measure, range real, range ours, ratio, r, best lag, r at best lag.

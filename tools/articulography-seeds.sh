@@ -4,7 +4,8 @@
 # other takes per seed), builds a voice from each, and runs `fapcast eval articulography` on
 # MOCHA-TIMIT fsew0_001 (reference alignment and the own alignment) with each voice. Prints each
 # voice's range ratio / r at zero lag / best lag per measure, then the mean, least and greatest
-# over the seeds (spec/articulography.md, "One take, many voices").
+# over the seeds (spec/articulography.md, "One take, many voices"), and where r is lost: each
+# phone's share of 1 - r (`--by-phone`), mean over the seeds.
 #   tools/articulography-seeds.sh [SEED ...]        (default: 1 to 24; seed 1 is the default voice's)
 #   FAPCAST=PATH   the executable (default build/release/cli/fapcast, what tools/build.sh makes)
 #   WORK=DIR       where corpora (deleted after each build), voices and reports go
@@ -15,7 +16,9 @@
 #   BASE=FILE      a copy of rows.tsv (in WORK) from an earlier run with other code or options: also prints,
 #                  per measure, this run minus BASE seed by seed (the same seed records the same
 #                  actor saying the same takes, so the corpus draw cancels): mean, its standard
-#                  error, and in how many seeds it rose
+#                  error, and in how many seeds it rose; and, when BASE's loss.tsv was kept beside
+#                  it under the same name with "loss" for "rows", each phone's change of its
+#                  share of 1 - r (where along the take r moved)
 # Extra arguments for every `eval articulography` run: FAPCAST_EVAL_ARGS (e.g. "--jaw-weight 0.1").
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -45,7 +48,7 @@ for seed in "${seeds[@]}"; do
   fi
   # shellcheck disable=SC2086  # FAPCAST_EVAL_ARGS is a list of words
   "$exe" eval articulography $m.ema $m.wav "$labels" --text "This was easy for us." --voice "$voice" \
-    ${FAPCAST_EVAL_ARGS:-} -q > "$work/report-seed$seed.md" 2> "$work/report-seed$seed.log" ||
+    --by-phone ${FAPCAST_EVAL_ARGS:-} -q > "$work/report-seed$seed.md" 2> "$work/report-seed$seed.log" ||
     { cat "$work/report-seed$seed.log" >&2; exit 1; }
 done
 
@@ -61,6 +64,16 @@ for seed in "${seeds[@]}"; do
       printf "%s\t%s\t%s\t%s\t%s\t%s\n", seed, phones, $2, $5, $6, lag
     }' "$work/report-seed$seed.md"
 done > "$work/rows.tsv"
+
+# Each voice's "where r is lost" rows (--by-phone) of the reference alignment's animation: seed,
+# row, phone, from s, to s, lips, jaw, protrusion (the same phones and spans for every voice).
+for seed in "${seeds[@]}"; do
+  awk -v seed="$seed" -F' *\\| *' '
+    /^## / { phones = ($0 ~ /^## animated from the reference alignment/) }
+    /^where r is lost/ { loss = phones; row = 0; next }
+    loss && /^\| / && $2 != "phone" && $2 !~ /^-/ { printf "%s\t%d\t%s\t%s\t%s\t%s\t%s\t%s\n", seed, ++row, $2, $3, $4, $5, $6, $7 }
+    /^$/ { loss = 0 }' "$work/report-seed$seed.md"
+done > "$work/loss.tsv"
 
 echo "fsew0_001 on voices of reference-corpus seeds ${seeds[*]} (ratio = range ours / real; r at zero lag; best lag ms, + = ours behind)"
 echo
@@ -85,6 +98,19 @@ awk -F'\t' '
                  sum[key "\tr"] / c, lo[key "\tr"], hi[key "\tr"],
                  sum[key "\tlag"] / c, lo[key "\tlag"], hi[key "\tlag"] } }' "$work/rows.tsv"
 
+echo
+echo "where r is lost (reference alignment; per phone its share of 1 - r, mean over the voices; the"
+echo "rows add up to the last, 1 - the mean r)"
+echo
+echo "| phone | from s | to s | lip aperture | jaw opening | lower-lip protrusion |"
+echo "|---|---|---|---|---|---|"
+awk -F'\t' '
+  { if (!($2 in n)) { order[++rows] = $2; label[$2] = $3 "\t" $4 "\t" $5 }
+    ++n[$2]; lips[$2] += $6; jaw[$2] += $7; prot[$2] += $8 }
+  END { for (i = 1; i <= rows; ++i) { k = order[i]; split(label[k], l, "\t")
+          printf "| %s | %s | %s | %.3f | %.3f | %.3f |\n", l[1], l[2], l[3], lips[k] / n[k], jaw[k] / n[k], prot[k] / n[k] } }' \
+  "$work/loss.tsv"
+
 [ -n "${BASE:-}" ] || exit 0
 echo
 echo "this run minus BASE ($BASE), seed by seed (seeds in both)"
@@ -102,3 +128,23 @@ awk -F'\t' '
           se = c > 1 ? sqrt((dr2[m] - c * mean * mean) / (c - 1) / c) : 0
           printf "| %s | %s | %+.3f (%.3f), %d of %d | %+.3f | %+.1f |\n", k[1], k[2], mean, se, up[m] + 0, c,
                  dratio[m] / c, dlag[m] / c } }' "$BASE" "$work/rows.tsv"
+
+# The same per phone when BASE's loss.tsv was kept beside it under the same name with "loss" for
+# "rows" (e.g. rows-before.tsv and loss-before.tsv): where along the take the change moved r.
+base_loss=$(dirname "$BASE")/$(basename "$BASE" | sed 's/rows/loss/')
+[ "$base_loss" != "$BASE" ] && [ -f "$base_loss" ] || exit 0
+echo
+echo "where r moved: per phone, this run's share of 1 - r minus BASE's ($base_loss), mean over the seeds"
+echo "in both (negative = less lost here)"
+echo
+echo "| phone | from s | to s | lip aperture | jaw opening | lower-lip protrusion |"
+echo "|---|---|---|---|---|---|"
+awk -F'\t' '
+  FNR == NR { base[$1 "\t" $2] = $6 "\t" $7 "\t" $8; next }
+  { key = $1 "\t" $2; if (!(key in base)) next
+    split(base[key], b, "\t")
+    if (!($2 in n)) { order[++rows] = $2; label[$2] = $3 "\t" $4 "\t" $5 }
+    ++n[$2]; lips[$2] += $6 - b[1]; jaw[$2] += $7 - b[2]; prot[$2] += $8 - b[3] }
+  END { for (i = 1; i <= rows; ++i) { k = order[i]; split(label[k], l, "\t")
+          printf "| %s | %s | %s | %+.3f | %+.3f | %+.3f |\n", l[1], l[2], l[3], lips[k] / n[k], jaw[k] / n[k], prot[k] / n[k] } }' \
+  "$base_loss" "$work/loss.tsv"

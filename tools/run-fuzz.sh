@@ -24,7 +24,8 @@ bash tools/configure-ci.sh
 
 # voice_structured_fuzz also starts from a real-size voice: the default voice (`fapcast say` builds
 # it on first use, named by the key of the tables it was built from: the newest such file) when it
-# exists, copied to build/ci/real-voice; inputs up to 16 MiB.
+# exists, copied to build/ci/real-voice; inputs up to 32 MiB (libFuzzer cuts a longer seed to -max_len,
+# and a cut voice no longer reads as a container: it would only be mutated as bytes).
 default_voice=$(ls -t "${FAPCAST_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/fapcast}"/reference-seed1-*.fapv 2>/dev/null | head -n 1)
 
 # run_one NAME: runs it for $seconds and prints "NAME<TAB>seconds<TAB>execs<TAB>cov<TAB>ft<TAB>corpus<TAB>findings".
@@ -34,7 +35,7 @@ run_one() {
   rm -rf "$findings"  # a finding counted is one of this run
   mkdir -p "$scratch" "$findings"
   if [ "$target" = voice_structured_fuzz ]; then
-    extra=(-max_len=16777216 -rss_limit_mb=4096)
+    extra=(-max_len=33554432 -rss_limit_mb=4096)
     if [ -f "$default_voice" ]; then
       mkdir -p build/ci/real-voice
       cp "$default_voice" build/ci/real-voice/

@@ -1,5 +1,5 @@
 // `fapcast eval articulography EMA SPEECH.wav [ALIGNMENT] [--transcript FILE | --text TEXT] [--lang L] [--voice V]
-// [--json-out FILE] [--svg-out FILE]`: animates a recording as `animate` does (from its phone
+// [--by-phone] [--json-out FILE] [--svg-out FILE]`: animates a recording as `animate` does (from its phone
 // alignment, or from the phones fapcast finds in it) and compares the face with the talker's real
 // articulography (spec/articulography.md, "Evaluation against articulography"). With both an
 // ALIGNMENT and a transcript it animates both ways and says how much fapcast's own alignment
@@ -43,6 +43,7 @@ const cli::Registration eval_articulography_command{"eval articulography", [](CL
     SynthesisOptions options;
     double tilt_deg = 0;
     bool talker = false;
+    bool by_phone = false;
     std::string json;
     std::string svg;
     bool quiet = false;
@@ -71,6 +72,9 @@ const cli::Registration eval_articulography_command{"eval articulography", [](CL
                 "Also animate each alignment with the SYNTHETIC reference talker's own articulation (the tracks the "
                 "default voice is recorded from, on the generic ICT face, no voice): whether an error comes from the "
                 "talker's tables or from the voice");
+  cmd->add_flag("--by-phone", args->by_phone,
+                "Also print, per animation, each phone's share of 1 - r (lips, jaw, protrusion): where the "
+                "correlation is lost");
   cmd->add_option("--json-out", args->json, "Write the results as JSON to this file (atomically)");
   cmd->add_option("--svg-out", args->svg, "Write the curves, real and synthesised, as an SVG plot to this file (atomically)");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress on standard error");
@@ -92,6 +96,7 @@ const cli::Registration eval_articulography_command{"eval articulography", [](CL
     if (!args->voice.empty()) command += " --voice " + shell_word(args->voice);
     command += cli::synthesis_options_text(args->options);
     if (args->talker) command += " --talker";
+    if (args->by_phone) command += " --by-phone";
     ArticulographySettings settings;
     settings.extra_rotation_rad = args->tilt_deg * std::numbers::pi / 180;
     if (args->tilt_deg != 0) {
@@ -153,6 +158,10 @@ const cli::Registration eval_articulography_command{"eval articulography", [](CL
       std::cout << articulography_table(evaluations[i], talker ? "## the " + names[i] + ", no voice"
                                                                : "## animated from the " + names[i])
                 << "\n";
+      if (args->by_phone)
+        std::cout << articulography_loss_table(evaluations[i], "where r is lost, phone by phone (1 - r = the sum of "
+                                                               "the rows; each row sums (z ours - z real)^2 / 2n):")
+                  << "\n";
       nlohmann::json one = articulography_json(evaluations[i]);
       one["phones_from"] = names[i];
       one["animated_by"] = i >= voice_evaluations ? "reference talker (SYNTHETIC)" : "voice";

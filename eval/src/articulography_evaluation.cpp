@@ -376,6 +376,35 @@ double neutral_mns_mm(const Voice& voice) {
   return 1000 * measure_fapu(neutral_m).mns;
 }
 
+// Each phone's share of 1 - r (PhoneLoss): the grid cut at the sample nearest each phone's start.
+std::vector<PhoneLoss> loss_by_phone(const ArticulographyEvaluation& e, std::span<const TimedPhone> phones,
+                                     SampleRate sample_rate) {
+  const std::size_t n = e.real.size();
+  const double rate_hz = e.real.rate_hz;
+  std::vector<SampleSpan> spans;
+  std::size_t begin = 0;
+  for (std::size_t i = 0; i < phones.size(); ++i) {
+    std::size_t end = n;
+    if (i + 1 < phones.size()) {
+      const double next_start_s = static_cast<double>(phones[i + 1].start_sample) / static_cast<double>(sample_rate.hz);
+      end = std::clamp(static_cast<std::size_t>(std::max(0.0, std::round(next_start_s * rate_hz))), begin, n);
+    }
+    spans.push_back({begin, end});
+    begin = end;
+  }
+  std::vector<PhoneLoss> out(phones.size());
+  for (std::size_t i = 0; i < phones.size(); ++i) {
+    out[i].phone = phones[i].phone;
+    out[i].start_s = static_cast<double>(spans[i].begin) / rate_hz;
+    out[i].end_s = static_cast<double>(spans[i].end) / rate_hz;
+  }
+  for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m) {
+    const std::vector<double> loss = correlation_loss_by_span(e.real.mm[m], e.face.mm[m], spans);
+    for (std::size_t i = 0; i < phones.size(); ++i) out[i].loss[m] = loss[i];
+  }
+  return out;
+}
+
 }  // namespace
 
 ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>& ema, const std::string& ema_source,
@@ -389,6 +418,7 @@ ArticulographyEvaluation evaluate_articulography(const MarkerFrames<Millimetres>
                                                  track.pca_frames, track, neutral_mns_mm(voice), phones_source, settings);
   e.unit_sources = unit_sources(voice.graph(), voice.state_phones(), track.search);
   e.asked = track.timeline.phone_of;
+  e.loss_by_phone = loss_by_phone(e, phones, sample_rate);
   return e;
 }
 
@@ -435,6 +465,7 @@ ArticulographyEvaluation evaluate_talker_articulography(const MarkerFrames<Milli
   ArticulographyEvaluation e = compare_with_face(ema, ema_source, voice.pca_mean(), mean_m, components_m, frames, track,
                                                  neutral_mns_mm(voice), phones_source, settings);
   e.units = 0;  // no units: the talker's tracks are continuous
+  e.loss_by_phone = loss_by_phone(e, phones, sample_rate);
   return e;
 }
 
@@ -481,6 +512,25 @@ std::string articulography_table(const ArticulographyEvaluation& e, const std::s
   return out.str();
 }
 
+std::string articulography_loss_table(const ArticulographyEvaluation& e, const std::string& title) {
+  constexpr std::array kShown{ArticulatoryMeasure::lip_aperture, ArticulatoryMeasure::jaw_opening,
+                              ArticulatoryMeasure::lower_lip_protrusion};
+  std::ostringstream out;
+  out << title << "\n| phone | from s | to s |";
+  for (const ArticulatoryMeasure m : kShown) out << " " << articulatory_measure_name(m) << " |";
+  out << "\n|---|---|---|---|---|---|\n";
+  for (const PhoneLoss& p : e.loss_by_phone) {
+    out << "| " << arpabet(p.phone) << " | " << fixed(p.start_s, 2) << " | " << fixed(p.end_s, 2) << " |";
+    for (const ArticulatoryMeasure m : kShown) out << " " << fixed(p.loss[static_cast<std::size_t>(m)], 3) << " |";
+    out << "\n";
+  }
+  out << "| whole take (1 - r) | 0.00 | " << fixed(static_cast<double>(e.real.size()) / e.real.rate_hz, 2) << " |";
+  for (const ArticulatoryMeasure m : kShown)
+    out << " " << fixed(1 - e.agreement[static_cast<std::size_t>(m)].r_zero_lag, 3) << " |";
+  out << "\n";
+  return out.str();
+}
+
 std::string alignment_effect_table(const ArticulographyEvaluation& reference, const ArticulographyEvaluation& own) {
   std::ostringstream out;
   const auto change = [](double own_v, double ref_v) {
@@ -524,6 +574,13 @@ nlohmann::json articulography_json(const ArticulographyEvaluation& e) {
                        {"take_phones", describe_take(s)}});
     j["synthesis"]["unit_sources"] = std::move(units);
   }
+  nlohmann::json losses = nlohmann::json::array();
+  for (const PhoneLoss& p : e.loss_by_phone) {
+    nlohmann::json one = {{"phone", arpabet(p.phone)}, {"start_s", p.start_s}, {"end_s", p.end_s}};
+    for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m) one["loss"][std::string(kKeys[m])] = p.loss[m];
+    losses.push_back(std::move(one));
+  }
+  j["loss_by_phone"] = std::move(losses);
   j["curves"]["rate_hz"] = e.real.rate_hz;
   for (std::size_t m = 0; m < kArticulatoryMeasureCount; ++m) {
     const TrajectoryAgreement& a = e.agreement[m];

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace fapcast {
@@ -54,6 +55,53 @@ TrajectoryAgreement trajectory_agreement(std::span<const double> reference, std:
         out.best_lag_s = d;
       }
     }
+  }
+  return out;
+}
+
+std::vector<double> correlation_loss_by_span(std::span<const double> reference, std::span<const double> compared,
+                                             std::span<const SampleSpan> spans) {
+  if (reference.size() != compared.size())
+    throw std::invalid_argument("correlation_loss_by_span: curves of " + std::to_string(reference.size()) + " and " +
+                                std::to_string(compared.size()) + " samples");
+  const auto both = [&](std::size_t t) { return !std::isnan(reference[t]) && !std::isnan(compared[t]); };
+  double n = 0, mean_r = 0, mean_c = 0;
+  for (std::size_t t = 0; t < reference.size(); ++t)
+    if (both(t)) {
+      n += 1;
+      mean_r += reference[t];
+      mean_c += compared[t];
+    }
+  if (n > 0) {
+    mean_r /= n;
+    mean_c /= n;
+  }
+  double var_r = 0, var_c = 0;
+  for (std::size_t t = 0; t < reference.size(); ++t)
+    if (both(t)) {
+      var_r += (reference[t] - mean_r) * (reference[t] - mean_r);
+      var_c += (compared[t] - mean_c) * (compared[t] - mean_c);
+    }
+  const double sd_r = std::sqrt(var_r / std::max(n, 1.0)), sd_c = std::sqrt(var_c / std::max(n, 1.0));
+  const bool flat = !(sd_r > 0 && sd_c > 0);  // pearson_correlation's r = 0
+  std::vector<double> out;
+  out.reserve(spans.size());
+  for (const SampleSpan& s : spans) {
+    if (s.begin > s.end || s.end > reference.size())
+      throw std::invalid_argument("correlation_loss_by_span: span [" + std::to_string(s.begin) + ", " +
+                                  std::to_string(s.end) + ") of curves of " + std::to_string(reference.size()) +
+                                  " samples");
+    double loss = 0;
+    for (std::size_t t = s.begin; t < s.end; ++t) {
+      if (!both(t)) continue;
+      if (flat) {
+        loss += 1 / n;
+        continue;
+      }
+      const double d = (compared[t] - mean_c) / sd_c - (reference[t] - mean_r) / sd_r;
+      loss += d * d / (2 * n);
+    }
+    out.push_back(loss);
   }
   return out;
 }

@@ -54,7 +54,7 @@ constexpr const char* kMeasures[] = {"lip_aperture", "jaw_opening", "jaw_opening
 // SVG say the same.
 TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
   const auto r = run_command(fapcast("eval articulography " + kMocha + ".ema " + kMocha + ".wav " + kMocha +
-                                     ".lab --text \"This was easy for us.\" --voice " + voice() + " --json-out " +
+                                     ".lab --text \"This was easy for us.\" --voice " + voice() + " --by-phone --json-out " +
                                      out("a.json") + " --svg-out " + out("a.svg") + " -q"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("## animated from the reference alignment"), std::string::npos) << r.out;
@@ -89,6 +89,36 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
       EXPECT_EQ(s["best_lag_at_window_edge"], std::abs(s["best_lag_ms"].get<double>()) == 200) << m;
     }
   }
+  // Where r is lost: one row per labelled segment (18 in fsew0_001.lab; the breath animated as
+  // HH), spans that tile the grid, shares >= 0 that add up to 1 - r.
+  const auto& loss = j["animations"][0]["loss_by_phone"];
+  ASSERT_EQ(loss.size(), 18u);
+  EXPECT_EQ(loss[0]["phone"], "SIL");
+  EXPECT_EQ(loss[0]["start_s"], 0.0);
+  EXPECT_EQ(loss[1]["phone"], "HH");
+  EXPECT_NEAR(loss[1]["start_s"].get<double>(), 0.25, 1e-9);
+  EXPECT_NEAR(loss[1]["end_s"].get<double>(), 0.28, 1e-9);
+  EXPECT_NEAR(loss[17]["end_s"].get<double>(), 1.94, 1e-9);  // the grid's 194 samples
+  for (std::size_t i = 1; i < loss.size(); ++i) EXPECT_EQ(loss[i]["start_s"], loss[i - 1]["end_s"]) << i;
+  for (const auto& a : j["animations"]) {  // the own alignment's phones too
+    ASSERT_FALSE(a["loss_by_phone"].empty());
+    for (const char* m : kMeasures) {
+      double sum = 0;
+      for (const auto& p : a["loss_by_phone"]) {
+        EXPECT_GE(p["loss"][m].get<double>(), 0) << m;
+        sum += p["loss"][m].get<double>();
+      }
+      EXPECT_NEAR(sum, 1 - a["measures"][m]["r_zero_lag"].get<double>(), 1e-9) << m;
+    }
+  }
+  EXPECT_NE(r.out.find("where r is lost, phone by phone"), std::string::npos) << r.out;
+  std::ostringstream whole;
+  whole.setf(std::ios::fixed);
+  whole.precision(3);
+  whole << "| whole take (1 - r) | 0.00 | 1.94 | "
+        << 1 - j["animations"][0]["measures"]["lip_aperture"]["r_zero_lag"].get<double>() << " |";
+  EXPECT_NE(r.out.find(whole.str()), std::string::npos) << whole.str() << "\n" << r.out;
+
   // The calibration against real articulography (spec/talker.md): the jaw and the lower lip's
   // protrusion move about as far as the real talker's. The uncalibrated talker's were 3.7 and
   // 2.5 times the real ranges on the default voice.

@@ -55,5 +55,56 @@ TEST(TrajectoryAgreement, AnUnrelatedOrFlatCurveScoresNothing) {
   EXPECT_THROW(trajectory_agreement(real, real, 100, -0.1), std::invalid_argument);
 }
 
+TEST(TrajectoryAgreement, TheLossOfRSplitsOverSpansAndAddsUpToOneMinusR) {
+  std::vector<double> real, ours;
+  for (int i = 0; i < 300; ++i) {
+    const double t = i / 100.0;
+    real.push_back(movement(t));
+    // The same movement, scaled and offset, except in the second of three seconds.
+    ours.push_back(3 + 2 * (t >= 1 && t < 2 ? -movement(t) : movement(t)));
+  }
+  const double r = trajectory_agreement(real, ours, 100).r_zero_lag;
+  ASSERT_LT(r, 0.9);
+  const std::vector<SampleSpan> thirds{{0, 100}, {100, 200}, {200, 300}};
+  const std::vector<double> loss = correlation_loss_by_span(real, ours, thirds);
+  ASSERT_EQ(loss.size(), 3u);
+  EXPECT_NEAR(loss[0] + loss[1] + loss[2], 1 - r, 1e-12);
+  // The second second, where the curves move against each other, holds most of the loss.
+  EXPECT_GT(loss[1], 4 * (loss[0] + loss[2]));
+  for (const double l : loss) EXPECT_GE(l, 0);
+  // Spans need not cover the curves; an empty span loses nothing.
+  const std::vector<SampleSpan> some{{100, 150}, {150, 200}, {7, 7}};
+  const std::vector<double> part = correlation_loss_by_span(real, ours, some);
+  EXPECT_NEAR(part[0] + part[1], loss[1], 1e-12);
+  EXPECT_EQ(part[2], 0);
+
+  // A scaled, offset copy loses nothing anywhere.
+  std::vector<double> copy;
+  for (const double v : real) copy.push_back(5 - 0.5 * -v);
+  for (const double l : correlation_loss_by_span(real, copy, thirds)) EXPECT_NEAR(l, 0, 1e-12);
+}
+
+TEST(TrajectoryAgreement, TheLossOfAFlatOrGappedCurveStillAddsUpToOneMinusR) {
+  std::vector<double> real, flat(300, 2.0);
+  for (int i = 0; i < 300; ++i) real.push_back(movement(i / 100.0));
+  const std::vector<SampleSpan> halves{{0, 150}, {150, 300}};
+  const std::vector<double> f = correlation_loss_by_span(real, flat, halves);
+  EXPECT_NEAR(f[0], 0.5, 1e-12);  // r = 0: each sample loses 1/n
+  EXPECT_NEAR(f[1], 0.5, 1e-12);
+
+  // Samples that are not numbers (a coil's gap) are left out, as pearson_correlation leaves them.
+  std::vector<double> ours = real;
+  for (int i = 0; i < 300; ++i) ours[i] += 0.3 * std::sin(i / 7.0);
+  for (int i = 40; i < 60; ++i) ours[i] = std::nan("");
+  const double r = trajectory_agreement(real, ours, 100).r_zero_lag;
+  const std::vector<double> g = correlation_loss_by_span(real, ours, halves);
+  EXPECT_NEAR(g[0] + g[1], 1 - r, 1e-12);
+  EXPECT_FALSE(std::isnan(g[0]));
+
+  EXPECT_THROW(correlation_loss_by_span(real, std::vector<double>(299, 0.0), halves), std::invalid_argument);
+  EXPECT_THROW(correlation_loss_by_span(real, ours, std::vector<SampleSpan>{{0, 301}}), std::invalid_argument);
+  EXPECT_THROW(correlation_loss_by_span(real, ours, std::vector<SampleSpan>{{20, 10}}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace fapcast

@@ -113,6 +113,15 @@ struct ArticulographySettings {
   double extra_rotation_rad = 0;  // added to the registration's rotation (a sensitivity check)
 };
 
+// One phone's share of the zero-lag correlation's loss 1 - r, per measure
+// (correlation_loss_by_span): the grid's samples from the phone's start to the next phone's (the
+// first phone's from 0, the last's to the grid's end). The shares of all phones add up to 1 - r.
+struct PhoneLoss {
+  Phone phone;
+  double start_s = 0, end_s = 0;  // its span on the grid
+  std::array<double, kArticulatoryMeasureCount> loss{};
+};
+
 struct ArticulographyEvaluation {
   EmaRegistration registration;
   ArticulographySettings settings;
@@ -126,6 +135,7 @@ struct ArticulographyEvaluation {
   // timeline's, one per target phone); both empty for the talker, which has no units.
   std::vector<UnitSource> unit_sources;
   std::vector<Phone> asked;
+  std::vector<PhoneLoss> loss_by_phone;  // one per phone animated, in order
 };
 
 // What the comparison needs of its inputs, checked before any work: `ema` (named `ema_source`)
@@ -167,13 +177,17 @@ ArticulographyEvaluation evaluate_talker_articulography(const MarkerFrames<Milli
 // on the edge of the window is marked "(window edge)": no delay lines the curves up), then the
 // registration.
 std::string articulography_table(const ArticulographyEvaluation& e, const std::string& title);
+// Where r is lost: one row per phone (its span in s and its share of 1 - r per measure), then
+// the whole take's 1 - r, for lip aperture, jaw opening and lower-lip protrusion; headed by `title`.
+std::string articulography_loss_table(const ArticulographyEvaluation& e, const std::string& title);
 // Two animations of one EMA (the reference alignment's and fapcast's own): per measure the range
 // ratio and r of both and the own one's change relative to the reference one's, in % (for r also
 // the difference: near r = 0 a small change is a large percentage).
 std::string alignment_effect_table(const ArticulographyEvaluation& reference, const ArticulographyEvaluation& own);
 
 // The evaluation as JSON: EMA, settings, registration, synthesis, per measure the scores
-// ("measures") and both curves on the grid ("curves": rate_hz, real_mm and ours_mm by measure).
+// ("measures"), each phone's share of 1 - r ("loss_by_phone": phone, start_s, end_s, loss by
+// measure) and both curves on the grid ("curves": rate_hz, real_mm and ours_mm by measure).
 nlohmann::json articulography_json(const ArticulographyEvaluation& e);
 
 // One panel per measure: the real curve and each animation's (named by `names`), each minus its

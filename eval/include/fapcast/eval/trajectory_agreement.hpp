@@ -3,7 +3,9 @@
 // (spec/articulography.md, "Measures"): the ratio of their ranges, their correlation as sampled,
 // and the delay that aligns them best. Unlike lip_measures.hpp's CurveAgreement, nothing is
 // normalised: a face that moves twice as far as the talker scores a range ratio of 2.
+#include <cstddef>
 #include <span>
+#include <vector>
 
 namespace fapcast {
 
@@ -23,5 +25,19 @@ struct TrajectoryAgreement {
 // short lengths and for rate <= 0, max lag < 0 or step <= 0.
 TrajectoryAgreement trajectory_agreement(std::span<const double> reference, std::span<const double> compared,
                                          double rate_hz, double max_lag_s = 0.2, double step_s = 0.001);
+
+// Samples [begin, end) of a curve.
+struct SampleSpan {
+  std::size_t begin = 0, end = 0;
+};
+
+// Where the zero-lag correlation is lost. With z the z-scores of each curve (population standard
+// deviation, over the n samples where both are numbers), 1 - r = sum_t (z_compared(t) -
+// z_reference(t))^2 / (2n): a sum of terms >= 0, one per sample. Returns that sum over each span,
+// so that spans partitioning the curves add up to 1 - r. A flat curve (r = 0) loses 1/n at every
+// sample where both are numbers. Throws std::invalid_argument for curves of different lengths and
+// for a span that is reversed or runs past them.
+std::vector<double> correlation_loss_by_span(std::span<const double> reference, std::span<const double> compared,
+                                             std::span<const SampleSpan> spans);
 
 }  // namespace fapcast

@@ -135,13 +135,13 @@ base_loss=$(dirname "$BASE")/$(basename "$BASE" | sed 's/rows/loss/')
 [ "$base_loss" != "$BASE" ] && [ -f "$base_loss" ] || exit 0
 echo
 echo "where r moved: per phone, this run's share of 1 - r minus BASE's ($base_loss), mean over the seeds"
-echo "in both (negative = less lost here)"
+echo "in both (negative = less lost here; a phone whose span is not in BASE, as with other LABELS, is left out)"
 echo
 echo "| phone | from s | to s | lip aperture | jaw opening | lower-lip protrusion |"
 echo "|---|---|---|---|---|---|"
 awk -F'\t' '
-  FNR == NR { base[$1 "\t" $2] = $6 "\t" $7 "\t" $8; next }
-  { key = $1 "\t" $2; if (!(key in base)) next
+  FNR == NR { base[$1 "\t" $3 "\t" $4 "\t" $5] = $6 "\t" $7 "\t" $8; next }
+  { key = $1 "\t" $3 "\t" $4 "\t" $5; if (!(key in base)) next
     split(base[key], b, "\t")
     if (!($2 in n)) { order[++rows] = $2; label[$2] = $3 "\t" $4 "\t" $5 }
     ++n[$2]; lips[$2] += $6 - b[1]; jaw[$2] += $7 - b[2]; prot[$2] += $8 - b[3] }

@@ -117,7 +117,7 @@ struct ArticulographySettings {
 // (correlation_loss_by_span): the grid's samples from the phone's start to the next phone's (the
 // first phone's from 0, the last's to the grid's end). The shares of all phones add up to 1 - r.
 struct PhoneLoss {
-  Phone phone;
+  Phone phone = Phone::SIL;
   double start_s = 0, end_s = 0;  // its span on the grid
   std::array<double, kArticulatoryMeasureCount> loss{};
 };

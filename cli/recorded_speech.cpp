@@ -49,7 +49,7 @@ RecordedPhones phones_from_alignment(const std::string& wav, const std::string& 
       std::cerr << "fapcast: note: " << wav << ": " << recorded.channels << " channels downmixed to mono\n";
     for (const std::string& note : file.notes) std::cerr << "fapcast: note: " << alignment << ": " << note << "\n";
   }
-  auto phones = timed_phones(file.segments, audio.sample_rate, alignment, kInhalationPhone);
+  auto phones = timed_phones(file.segments, audio.sample_rate, alignment, kInhalation);
   if (!phones.empty() && phones.back().end_sample < out.samples && !quiet)
     std::cerr << "fapcast: warning: " << alignment << " ends before " << wav << "; the rest is animated as silence\n";
   out.phones = fit_phones_to_audio(std::move(phones), out.samples, kToleranceMs * audio.sample_rate.hz / 1000, alignment);

@@ -455,7 +455,7 @@ AlignmentFile read_alignment_file(std::string_view bytes, const std::string& pat
   }
   out.notes.push_back("labels: " + std::string(label_set_name(out.label_set)) + " (" + std::to_string(phones) + " phones)");
   if (noises > 0) out.notes.push_back(std::to_string(noises) + " noise segment(s) (spn, oov ...) animated as rest");
-  if (breaths > 0) out.notes.push_back(std::to_string(breaths) + " breath segment(s) animated as an inhalation (lips parted)");
+  if (breaths > 0) out.notes.push_back(std::to_string(breaths) + " breath segment(s) animated as an inhalation (the mouth open until the next phone)");
   if (phones == 0) {
     refuse(path, "alignment-no-phones", "tier \"" + out.tier + "\" has no phone, only " +
                                             (out.segments.empty() ? std::string("nothing") : "silence or empty labels"));

@@ -89,16 +89,18 @@ TEST_F(ArticulographyCli, TheFsewSentenceAgainstItsEmaFromBothAlignments) {
       EXPECT_EQ(s["best_lag_at_window_edge"], std::abs(s["best_lag_ms"].get<double>()) == 200) << m;
     }
   }
-  // Where r is lost: one row per labelled segment (18 in fsew0_001.lab; the breath animated as
-  // HH), spans that tile the grid, shares >= 0 that add up to 1 - r.
+  // Where r is lost: one row per animated phone (17: fsew0_001.lab's 18 segments less the pause
+  // after the breath, which the inhalation takes, AX from 0.25 to 0.35 s), spans that tile the
+  // grid, shares >= 0 that add up to 1 - r.
   const auto& loss = j["animations"][0]["loss_by_phone"];
-  ASSERT_EQ(loss.size(), 18u);
+  ASSERT_EQ(loss.size(), 17u);
   EXPECT_EQ(loss[0]["phone"], "SIL");
   EXPECT_EQ(loss[0]["start_s"], 0.0);
-  EXPECT_EQ(loss[1]["phone"], "HH");
+  EXPECT_EQ(loss[1]["phone"], "AX");
   EXPECT_NEAR(loss[1]["start_s"].get<double>(), 0.25, 1e-9);
-  EXPECT_NEAR(loss[1]["end_s"].get<double>(), 0.28, 1e-9);
-  EXPECT_NEAR(loss[17]["end_s"].get<double>(), 1.94, 1e-9);  // the grid's 194 samples
+  EXPECT_NEAR(loss[1]["end_s"].get<double>(), 0.35, 1e-9);
+  EXPECT_EQ(loss[2]["phone"], "DH");
+  EXPECT_NEAR(loss[16]["end_s"].get<double>(), 1.94, 1e-9);  // the grid's 194 samples
   for (std::size_t i = 1; i < loss.size(); ++i) EXPECT_EQ(loss[i]["start_s"], loss[i - 1]["end_s"]) << i;
   for (const auto& a : j["animations"]) {  // the own alignment's phones too
     ASSERT_FALSE(a["loss_by_phone"].empty());

@@ -33,20 +33,52 @@ TEST(AlignmentPhones, ReadsArpabetTimitAndGaps) {
   EXPECT_EQ(p[6].end_sample, 11200);
 }
 
-// MOCHA's breath: a pause where alignments are compared, an open-lip inhalation (HH) where
-// the animation asks for it.
+// MOCHA's breath: a pause where alignments are compared; where the animation asks for it, an
+// inhalation with the mouth open (AX) that runs on over the pause after it to the next phone.
 TEST(AlignmentPhones, ABreathIsAPauseOrAnInhalation) {
   const LabelTier t = tier({{0.0, 0.25, "sil"}, {0.25, 0.28, "breath"}, {0.28, 0.35, "sil"}, {0.35, 0.42, "dh"}});
   const auto segments = segments_of(t, LabelSet::mocha, "m.lab");
   ASSERT_EQ(segments.size(), 4u);
   EXPECT_EQ(segments[1].kind, LabelKind::breath);
   EXPECT_EQ(segments[1].phone, Phone::SIL);
-  EXPECT_EQ(timed_phones(segments, SampleRate{16000}, "m.lab")[1].phone, Phone::SIL);
-  const auto animated = timed_phones(segments, SampleRate{16000}, "m.lab", kInhalationPhone);
-  EXPECT_EQ(animated[1].phone, Phone::HH);
-  EXPECT_EQ(animated[1].start_sample, 4000);
+  const auto compared = timed_phones(segments, SampleRate{16000}, "m.lab");
+  ASSERT_EQ(compared.size(), 4u);
+  EXPECT_EQ(compared[1].phone, Phone::SIL);
+  EXPECT_EQ(compared[1].end_sample, 4480) << "compared as a pause, the breath keeps its own span";
+  const auto animated = timed_phones(segments, SampleRate{16000}, "m.lab", kInhalation);
+  ASSERT_EQ(animated.size(), 3u) << "the 70 ms pause after the breath is the inhalation's";
   EXPECT_EQ(animated[0].phone, Phone::SIL);
+  EXPECT_EQ(animated[0].end_sample, 4000);
+  EXPECT_EQ(animated[1].phone, Phone::AX);
+  EXPECT_EQ(animated[1].start_sample, 4000);
+  EXPECT_EQ(animated[1].end_sample, 5600) << "the mouth stays open until the first phone";
+  EXPECT_EQ(animated[2].phone, Phone::DH);
+  EXPECT_EQ(animated[2].start_sample, 5600);
+}
+
+// The run-on is bounded: a long pause after a breath is the inhalation's for 0.3 s, then rest; a
+// breath right before a phone keeps its span; silences in a row are taken in turn.
+TEST(AlignmentPhones, ABreathRunsOnAtMostItsLimit) {
+  const LabelTier t = tier({{0.0, 0.2, "breath"}, {0.2, 1.2, "sil"}, {1.2, 1.3, "breath"}, {1.3, 1.4, "dh"},
+                            {1.4, 1.5, "breath"}, {1.5, 1.6, "sil"}, {1.6, 1.65, "sil"}, {1.65, 2.5, "sil"}, {2.5, 2.6, "s"}});
+  const auto animated = timed_phones(segments_of(t, LabelSet::mocha, "m.lab"), SampleRate{10000}, "m.lab", kInhalation);
+  ASSERT_EQ(animated.size(), 7u);
+  EXPECT_EQ(animated[0].phone, Phone::AX);
+  EXPECT_EQ(animated[0].end_sample, 5000) << "0.2 s + 0.3 s";
+  EXPECT_EQ(animated[1].phone, Phone::SIL);
+  EXPECT_EQ(animated[1].start_sample, 5000);
+  EXPECT_EQ(animated[1].end_sample, 12000);
+  EXPECT_EQ(animated[2].phone, Phone::AX);
+  EXPECT_EQ(animated[2].end_sample, 13000) << "no pause after it: its own span";
   EXPECT_EQ(animated[3].phone, Phone::DH);
+  EXPECT_EQ(animated[4].phone, Phone::AX);
+  EXPECT_EQ(animated[4].end_sample, 18000) << "two silences taken whole and 0.15 s of the third";
+  EXPECT_EQ(animated[5].phone, Phone::SIL);
+  EXPECT_EQ(animated[5].start_sample, 18000);
+  EXPECT_EQ(animated[5].end_sample, 25000);
+  EXPECT_EQ(animated[6].phone, Phone::S);
+  // Every sample keeps exactly one phone.
+  for (std::size_t i = 1; i < animated.size(); ++i) EXPECT_EQ(animated[i].start_sample, animated[i - 1].end_sample) << i;
 }
 
 TEST(AlignmentPhones, CompoundsSplitAndAspirationJoins) {

@@ -11,18 +11,31 @@
 
 namespace fapcast {
 
-// How an animation shows an audible inhalation (LabelKind::breath): as HH, the open glottis with
-// the lips parted. Speech inhalations are mostly taken through the open mouth (spec/talker.md,
-// "Calibration against real articulography").
-inline constexpr Phone kInhalationPhone = Phone::HH;
+// How the audible inhalations of an alignment (LabelKind::breath) become phones.
+struct BreathAs {
+  Phone phone = Phone::SIL;  // what the inhalation shows as
+  double runs_on_s = 0.0;    // how far past its labelled end it runs on over the pause after it
+};
+
+// Where alignments are compared: a breath is a pause like any other.
+inline constexpr BreathAs kBreathAsPause{};
+
+// Where an animation shows it: the mouth open for the inhalation, neither rounded nor spread (the
+// schwa, AX), until the next phone starts, at most 0.3 s past the breath's labelled end. A label
+// marks the audible noise; the mouth opens with the inhalation and stays open until speech starts
+// (spec/talker.md, "Calibration against real articulography"). The 0.3 s is an assumption, not
+// fitted: fsew0_001's only breath is followed by 0.07 s of pause.
+inline constexpr BreathAs kInhalation{Phone::AX, 0.3};
 
 // One TimedPhone per segment of an alignment file (alignment_file.hpp), times rounded to
 // samples with to_sample: phones as they are, silence and noise as SIL, an inhalation as
-// `breath_as` (SIL where it is compared as a pause, kInhalationPhone to animate it). A closure joined with its
-// release is one phone from the closure's start (as the front-end's closures are). Throws InputError (source, rule "time-off-sample-grid") naming the segment
-// when a time is beyond what a sample count holds.
+// `breath.phone`, run on over the silence segments right after it by up to `breath.runs_on_s`
+// (a silence it covers whole is dropped, one it reaches into starts where the run-on ends). A
+// closure joined with its release is one phone from the closure's start (as the front-end's
+// closures are). Throws InputError (source, rule "time-off-sample-grid") naming the segment when
+// a time is beyond what a sample count holds.
 std::vector<TimedPhone> timed_phones(const std::vector<AlignedSegment>& segments, SampleRate sample_rate,
-                                     const std::string& source, Phone breath_as = Phone::SIL);
+                                     const std::string& source, BreathAs breath = kBreathAsPause);
 
 // An alignment and its WAV rarely end on the same sample. Phones running past the audio's
 // `audio_samples` by at most `tolerance_samples` are cut at its end (phones starting there are

@@ -25,8 +25,8 @@ std::string_view label_set_name(LabelSet set);  // "arpabet", "timit", "ipa", "s
 std::optional<LabelSet> label_set_from_name(std::string_view name);
 
 // breath: an audible inhalation (MOCHA's "breath"). Not a phone of the words: alignments and
-// boundary comparisons read it as a pause; the animation shows it as an inhalation with parted
-// lips (alignment_phones.hpp, kInhalationPhone).
+// boundary comparisons read it as a pause; the animation shows it as an inhalation, the mouth open
+// until speech starts (alignment_phones.hpp, kInhalation).
 enum class LabelKind { phone, silence, noise, breath };
 
 // How a segment joins its neighbour: a TIMIT closure with the release after it, an EMU

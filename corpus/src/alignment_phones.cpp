@@ -24,7 +24,7 @@ std::vector<TimedPhone> timed_phones(const std::vector<AlignedSegment>& segments
     TimedPhone p{s.kind == LabelKind::breath ? breath.phone : s.phone, sample(s.start_s), sample(s.end_s)};
     if (s.kind == LabelKind::silence && run_on_until >= 0 && p.start_sample == out.back().end_sample) {
       // The pause after an inhalation: the breath takes it up to run_on_until.
-      out.back().end_sample = std::min(p.end_sample, run_on_until);
+      out.back().end_sample = std::max(out.back().end_sample, std::min(p.end_sample, run_on_until));
       p.start_sample = out.back().end_sample;
       if (p.start_sample >= p.end_sample) continue;  // taken whole; the breath may run on further
     }

@@ -20,8 +20,9 @@ namespace fapcast::cli {
 // asked, recording_script.cpp; 8 lets every phone's jaw anticipate, articulation.cpp; 9 writes
 // the nonsense items' rhotic class as the consonant R, not the vowel ER, recording_script.cpp;
 // 10 opens every phone's jaw 1.4 times as far above the sibilants' and the lips' own opening
-// 1.2 times as far, articulation.cpp: a table change, numbered so that spec/ can name the voice).
-inline constexpr std::uint32_t kDefaultVoiceRecipe = 10;
+// 1.2 times as far, articulation.cpp: a table change, numbered so that spec/ can name the voice;
+// 11 adds the retargeting's lip-contact term, lip_contact_fit.cpp, so that every /p b m/ closes).
+inline constexpr std::uint32_t kDefaultVoiceRecipe = 11;
 
 // CRC-32, as 8 lower-case hex digits, of the recipe number, the corpus seed, every row of the
 // articulation and shape tables and of the prototype details, and the prototype rules.

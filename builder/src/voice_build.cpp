@@ -19,6 +19,8 @@
 #include "fapcast/voice/voice_file.hpp"
 #include "fapcast/voice/voice_graph.hpp"
 #include "fapcast/builder/voice_prototypes.hpp"
+#include "fapcast/builder/lip_contact_fit.hpp"
+#include "fapcast/voice/lip_contact.hpp"
 
 namespace fapcast {
 namespace {
@@ -116,21 +118,33 @@ BuiltVoice build_voice(const std::filesystem::path& corpus_dir, const VoiceBuild
                          " components (or every frame is the same)");
   LambdaChoice choice;
   const RbfMap map = fit_rbf_by_gcv(centres, targets, r_squared, &choice);
+  // The lip-contact term, measured against the bilabial target prototype (spec/voice.md).
+  std::optional<LipContact> contact;
+  for (Eigen::Index i = 0; i < m; ++i)
+    if (classes[static_cast<std::size_t>(i)] == VisemeClass::kBilabial)
+      contact = fit_lip_contact(face, map, corpus.frames, corpus.graph.states, targets.row(i).transpose());
+  const Retargeting retarget(map, contact);
+  if (contact) {
+    summary.lip_contact = true;
+    summary.source_contact_m = contact->source_contact_m;
+    summary.target_contact_m = contact->target_contact_m;
+  }
   summary.seconds_fit = since(fit_start);
   if (options.progress) options.progress("fit", 1, 1);
 
-  // 3.6: the PCA of the retargeted corpus. The responses (m x F) serve both routes' coefficients.
+  // 3.6: the PCA of the retargeted corpus. The responses (m (+1) x F) serve both routes' coefficients.
   const auto pca_start = Clock::now();
-  Eigen::MatrixXd responses(m, frames);
-  for (Eigen::Index f = 0; f < frames; ++f) responses.col(f) = map.responses(corpus.frames.col(f));
+  Eigen::MatrixXd responses(retarget.response_count(), frames);
+  for (Eigen::Index f = 0; f < frames; ++f) responses.col(f) = retarget.responses(corpus.frames.col(f));
+  if (contact) summary.lip_contact_frames = (responses.bottomRows(1).array() > 0).count();
   PcaBasis basis;
   if (options.pca == PcaRoute::exact) {
-    RunningCovariance covariance(m);
+    RunningCovariance covariance(retarget.response_count());
     for (Eigen::Index f = 0; f < frames; ++f) covariance.add(responses.col(f));
-    basis = pca_of_affine_image(map.weights(), map.offset(), covariance.mean(), covariance.covariance(), k);
+    basis = pca_of_affine_image(retarget.weights(), retarget.offset(), covariance.mean(), covariance.covariance(), k);
   } else {
     FrameStream stream{frames, map.target_dimension(), [&](Eigen::Index first, Eigen::Ref<Eigen::MatrixXf> chunk) {
-                         map.map_columns(corpus.frames.middleCols(first, chunk.cols()), chunk);
+                         retarget.map_columns(corpus.frames.middleCols(first, chunk.cols()), chunk);
                        }};
     EmPcaOptions em;
     em.components = k;
@@ -147,8 +161,9 @@ BuiltVoice build_voice(const std::filesystem::path& corpus_dir, const VoiceBuild
   summary.pca_iterations = basis.iterations;
   summary.pca_converged = basis.converged;
 
-  // Every frame's coefficients: c = C^T (b + W^T phi - mean) = (W C)^T phi + C^T (b - mean).
-  const Eigen::MatrixXd projection = map.weights() * basis.components;                  // m x k
+  // Every frame's coefficients: c = C^T (b + W^T phi - mean) = (W C)^T phi + C^T (b - mean), phi
+  // the map's responses and the contact amount, W their weights (Retargeting).
+  const Eigen::MatrixXd projection = retarget.weights() * basis.components;             // m (+1) x k
   const Eigen::VectorXd constant = basis.components.transpose() * (map.offset() - basis.mean);  // k
   const RowMajorMatrixXf coefficients =
       ((responses.transpose() * projection).rowwise() + constant.transpose()).cast<float>();
@@ -203,6 +218,7 @@ BuiltVoice build_voice(const std::filesystem::path& corpus_dir, const VoiceBuild
                       {"target_prototypes", std::string(kTargetPrototypeRule)},
                       {"pca_route", std::string(pca_route_name(options.pca))},
                       {"source_vector", "the 34 feature points of spec/markers.tsv, metres, head frame (FPNT order)"}};
+  if (contact) provenance.notes["lip_contact"] = std::string(kLipContactRule);
   if (!listing.label.empty()) provenance.notes["corpus_label"] = listing.label;
 
   VoiceFileWriter writer;
@@ -218,6 +234,14 @@ BuiltVoice build_voice(const std::filesystem::path& corpus_dir, const VoiceBuild
   RowMajorMatrixXd scalars(1, 2);
   scalars << r_squared, choice.lambda;
   writer.add_matrix(vs::kRbfScalars, scalars);
+  if (contact) {
+    writer.add_matrix(vs::kLipContactShape, row_f(contact->shape));
+    RowMajorMatrixXd term(1, static_cast<Eigen::Index>(vs::kLipContactScalars) + m);
+    term(0, 0) = contact->gap_offset_m, term(0, 1) = contact->shape_gap_m, term(0, 2) = contact->source_contact_m;
+    term(0, 3) = contact->target_contact_m, term(0, 4) = contact->reach_m;
+    term.row(0).tail(m) = contact->gap_weights.transpose();
+    writer.add_matrix(vs::kLipContact, term);
+  }
   const std::vector<std::byte> graph = encode_voice_graph(corpus.graph);
   writer.add(vs::kPhoneGraph, ElementType::kBytes, 1, graph.size(), graph);
   const std::string fpnt = voice_feature_points_json(points, rigid);

@@ -83,6 +83,9 @@ const fapcast::cli::Registration voice_build_command{"voice build", [](CLI::App&
               << "), r^2 " << s.r_squared_m2 << " m^2, lambda " << s.lambda << (s.lambda_at_range_edge ? " (range edge)" : "")
               << ", " << pca_route_name(options.pca) << " PCA explains " << std::setprecision(6)
               << 100 * s.explained_fraction << " %";
+    if (s.lip_contact)
+      std::cout << ", lip contact at " << 1000 * s.source_contact_m << " mm (source) / " << 1000 * s.target_contact_m
+                << " mm (target), " << s.lip_contact_frames << " frames closed further";
     if (options.pca == fapcast::PcaRoute::em)
       std::cout << " after " << s.pca_iterations << " EM passes" << (s.pca_converged ? "" : " (not converged)");
     std::cout << ", " << voice.bytes.size() << " bytes; read " << s.seconds_read
@@ -111,6 +114,12 @@ const fapcast::cli::Registration voice_info_command{"voice info", [](CLI::App& a
               << voice.frame_coefficients().rows() << ", phone states " << voice.graph().size() << ", utterances "
               << voice.utterance_frames().size() << ", feature points " << voice.feature_points().size()
               << ", RBF centres " << voice.retarget_map().centre_count() << "\n";
+    if (const auto& contact = voice.retargeting().contact())
+      std::cout << "lip contact:  source " << 1000 * contact->source_contact_m << " mm, target "
+                << 1000 * contact->target_contact_m << " mm, reach " << 1000 * contact->reach_m
+                << " mm (spec/voice.md, \"Lip contact\")\n";
+    else
+      std::cout << "lip contact:  none (the retargeting is the map alone)\n";
     std::cout << "sections (" << voice.file().sections().size() << ", " << voice.file().file_size() << " bytes):\n";
     for (const auto& s : voice.file().sections())
       std::cout << "  " << s.id.str() << "  " << std::left << std::setw(20) << fapcast::section_name(s.id)

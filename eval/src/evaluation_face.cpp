@@ -37,7 +37,7 @@ EvaluationFace evaluation_face(const Voice& voice) {
   }
   if (temples[0] < 0 || temples[1] < 0)
     throw std::runtime_error(voice.file().source() + ": the voice has no temple markers for lip protrusion");
-  return {voice.pca_mean(), voice.pca_components(), &voice.retarget_map(),
+  return {voice.pca_mean(), voice.pca_components(), &voice.retargeting(),
           [reference](const MarkerFrames<Centimetres>& take) {
             return source_vectors_m(preprocess_take(take, rigid_marker_rows(), reference).frames, "held-out take");
           },

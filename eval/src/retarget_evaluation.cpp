@@ -38,11 +38,12 @@ RetargetEvaluation evaluate_retargeting(const Voice& voice, const std::filesyste
   }
 
   // Only the 18 coordinates of the six points are needed: y = b + W^T phi restricted to them,
-  // and the PCA rebuild mean + c^T C with c = (W C)^T phi + C^T (b - mean).
-  const RbfMap& map = voice.retarget_map();
+  // and the PCA rebuild mean + c^T C with c = (W C)^T phi + C^T (b - mean); phi the map's
+  // responses and the lip-contact amount, W their weights (Retargeting).
+  const Retargeting& map = voice.retargeting();
   const auto mean = voice.pca_mean();
   const auto components = voice.pca_components();  // k x D
-  const Eigen::Index m = map.centre_count(), k = components.rows();
+  const Eigen::Index m = map.response_count(), k = components.rows();
   Eigen::MatrixXd w_sub(m, 18), c_sub(k, 18);
   Eigen::VectorXd b_sub(18), mean_sub(18);
   for (std::size_t i = 0; i < 6; ++i)

@@ -90,13 +90,13 @@ Eigen::MatrixXf vertex_tracks(const Eigen::Ref<const RowMajorMatrixXf>& mean,
   return (coefficients * c).rowwise() + m;
 }
 
-Eigen::MatrixXf vertex_tracks(const RbfMap& map, const Eigen::MatrixXd& sources,
+Eigen::MatrixXf vertex_tracks(const Retargeting& map, const Eigen::MatrixXd& sources,
                               std::span<const std::int32_t> vertices) {
   if (sources.rows() != map.source_dimension())
     throw std::invalid_argument("vertex tracks: source frames have " + std::to_string(sources.rows()) +
                                 " coordinates, the map expects " + std::to_string(map.source_dimension()));
   const auto V = static_cast<Eigen::Index>(vertices.size());
-  Eigen::MatrixXd w(map.centre_count(), 3 * V);
+  Eigen::MatrixXd w(map.response_count(), 3 * V);
   Eigen::RowVectorXd b(3 * V);
   for (Eigen::Index i = 0; i < V; ++i) {
     const Eigen::Index v = vertices[static_cast<std::size_t>(i)];
@@ -105,7 +105,7 @@ Eigen::MatrixXf vertex_tracks(const RbfMap& map, const Eigen::MatrixXd& sources,
     w.middleCols<3>(3 * i) = map.weights().middleCols<3>(3 * v);
     b.segment<3>(3 * i) = map.offset().segment<3>(3 * v).transpose();
   }
-  Eigen::MatrixXd phi(sources.cols(), map.centre_count());
+  Eigen::MatrixXd phi(sources.cols(), map.response_count());
   for (Eigen::Index f = 0; f < sources.cols(); ++f) phi.row(f) = map.responses(sources.col(f)).transpose();
   return ((phi * w).rowwise() + b).cast<float>();
 }

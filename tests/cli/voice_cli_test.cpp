@@ -48,12 +48,14 @@ TEST_F(VoiceCli, BuildShowsProgressAndInfoPrintsProvenanceAndSections) {
   EXPECT_NE(build_out_->find("2313 frames"), std::string::npos) << *build_out_;
   // all 21 classes: the first 40 items say an /l/ ("all") since the front end keeps it
   EXPECT_NE(build_out_->find("21 prototypes (target rank 18)"), std::string::npos) << *build_out_;
+  EXPECT_NE(build_out_->find(" frames closed further"), std::string::npos) << *build_out_;
   EXPECT_NE(build_err_->find("voice build: read 40 / 40"), std::string::npos) << *build_err_;
   EXPECT_NE(build_err_->find("voice build: write"), std::string::npos) << *build_err_;
   const auto r = run_command(fapcast("voice info " + voice()));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (const char* want : {"synthetic:    yes", "SYNTHETIC", "2023-11-14T22:13:20Z", "prototype_rule", "lambda",
-                           "r_squared_m2", "PCOM", "FCOE", "GRPH", "FPNT", "feature points 34", "k 17"})
+                           "r_squared_m2", "PCOM", "FCOE", "GRPH", "FPNT", "feature points 34", "k 17",
+                           "LCSH", "LCON", "lip contact:  source "})
     EXPECT_NE(r.out.find(want), std::string::npos) << want << "\n" << r.out;
 }
 

@@ -79,7 +79,7 @@ TEST(VertexTracks, RbfTracksAreTheMapAtTheVertices) {
     for (Eigen::Index i = 0; i < x->size(); ++i) x->data()[i] = normal(rng);
   const RbfMap map = fit_rbf_by_gcv(centres, targets, 4.0);
   const std::vector<std::int32_t> vertices{19, 2};
-  const Eigen::MatrixXf tracks = vertex_tracks(map, sources, vertices);
+  const Eigen::MatrixXf tracks = vertex_tracks(Retargeting(map), sources, vertices);
   ASSERT_EQ(tracks.rows(), 5);
   for (Eigen::Index f = 0; f < 5; ++f) {
     const Eigen::VectorXd y = map(sources.col(f));
@@ -87,7 +87,25 @@ TEST(VertexTracks, RbfTracksAreTheMapAtTheVertices) {
       for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(tracks(f, 3 * static_cast<Eigen::Index>(i) + c), y(3 * vertices[i] + c), 1e-5);
   }
-  EXPECT_THROW(vertex_tracks(map, Eigen::MatrixXd(d + 1, 2), vertices), std::invalid_argument);
+  EXPECT_THROW(vertex_tracks(Retargeting(map), Eigen::MatrixXd(d + 1, 2), vertices), std::invalid_argument);
+
+  // With a lip-contact term the tracks follow the whole retargeting, its shape included.
+  LipContact contact;
+  contact.shape = Eigen::VectorXd::Zero(3 * N);
+  contact.shape.segment<3>(3 * 19) = Eigen::Vector3d(0.0, -0.5, 0.0);
+  contact.gap_weights = Eigen::VectorXd::Zero(m);
+  contact.gap_offset_m = 100.0, contact.shape_gap_m = -1.0, contact.target_contact_m = 0.0;
+  contact.source_contact_m = 0.0, contact.reach_m = 1e6;  // every frame near contact
+  contact.source_upper = 0, contact.source_lower = 3;
+  const Retargeting whole(map, contact);
+  const Eigen::MatrixXf closed = vertex_tracks(whole, sources, vertices);
+  for (Eigen::Index f = 0; f < 5; ++f) {
+    const Eigen::VectorXd y = whole(sources.col(f));
+    EXPECT_NEAR(closed(f, 1), y(3 * 19 + 1), 1e-5);
+    // the whole excess is far beyond the cap: 1.5 units of the shape moved vertex 19 down
+    EXPECT_NEAR(closed(f, 1), tracks(f, 1) - 0.5 * LipContact::kMaxAmount, 1e-5);
+    EXPECT_NEAR(closed(f, 4), tracks(f, 4), 1e-5);  // and left vertex 2 alone
+  }
 }
 
 // Tracks of a made-up face (a point cloud of the right size), in metres, whose mouth opens and

@@ -37,6 +37,7 @@ TEST(EvaluateSynthesis, AnOracleBeatsAFrozenFace) {
   for (int i = 0; i < m; ++i) centres.row(i) = x.col(i * (x.cols() - 1) / (m - 1)).transpose();
   const double r2 = (x.colwise() - x.rowwise().mean()).colwise().squaredNorm().mean();
   const RbfMap map = fit_rbf_by_gcv(centres, centres, r2);
+  const Retargeting retarget(map, std::nullopt);
 
   std::vector<std::string> labels;
   std::vector<std::int32_t> rows;
@@ -51,7 +52,7 @@ TEST(EvaluateSynthesis, AnOracleBeatsAFrozenFace) {
   // PCA of the mapped recordings (the "voice" frames): mean and 12 components.
   std::vector<Eigen::MatrixXf> truth;
   Eigen::Index frames = 0;
-  for (const auto& u : held) truth.push_back(vertex_tracks(map, markers_m(u.recorded), all)), frames += truth.back().rows();
+  for (const auto& u : held) truth.push_back(vertex_tracks(retarget, markers_m(u.recorded), all)), frames += truth.back().rows();
   Eigen::MatrixXf stacked(frames, truth[0].cols());
   frames = 0;
   for (const auto& t : truth) stacked.middleRows(frames, t.rows()) = t, frames += t.rows();
@@ -61,12 +62,12 @@ TEST(EvaluateSynthesis, AnOracleBeatsAFrozenFace) {
 
   using Map = Eigen::Map<const RowMajorMatrixXf>;
   const EvaluationFace face{Map(mean.data(), mean.rows(), mean.cols()),
-                            Map(components.data(), components.rows(), components.cols()), &map,
+                            Map(components.data(), components.rows(), components.cols()), &retarget,
                             markers_m, evaluation_points(labels, rows, temples)};
 
   const std::vector<NamedSystem> systems{
       {"oracle", [&](const HeldOutUtterance& u) {
-         const Eigen::MatrixXf t = vertex_tracks(map, markers_m(u.recorded), all);
+         const Eigen::MatrixXf t = vertex_tracks(retarget, markers_m(u.recorded), all);
          const Eigen::MatrixXf c = (t.rowwise() - mean.row(0)) * components.transpose();
          const Eigen::Index lead = u.targets.front().first_frame;
          return SystemOutput{c.bottomRows(c.rows() - lead), u.targets.size()};

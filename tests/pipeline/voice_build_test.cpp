@@ -138,7 +138,7 @@ TEST_F(VoiceBuild, BuildsAVoiceThatOpens) {
   EXPECT_EQ(voice.rigid_markers().size(), 5u);
 }
 
-// FCOE row f is the PCA projection of the RBF map's image of corpus frame f.
+// FCOE row f is the PCA projection of the retargeting's image (the map and its lip-contact term) of corpus frame f.
 TEST_F(VoiceBuild, FrameCoefficientsAreTheProjectedRetargetedFrames) {
   const Voice voice = Voice::open(voice_file());
   const CorpusListing listing = list_corpus(*corpus_);
@@ -152,13 +152,69 @@ TEST_F(VoiceBuild, FrameCoefficientsAreTheProjectedRetargetedFrames) {
   const Eigen::RowVectorXd mean = voice.pca_mean().cast<double>();
   const Eigen::MatrixXd components = voice.pca_components().cast<double>();
   for (Eigen::Index f : {Eigen::Index{0}, x.cols() / 2, x.cols() - 1}) {
-    const Eigen::VectorXd y = voice.retarget_map()(x.col(f));
+    const Eigen::VectorXd y = voice.retargeting()(x.col(f));
     const Eigen::VectorXd c = components * (y - mean.transpose());
     const Eigen::VectorXf stored = voice.frame_coefficients().row(span.first + f).transpose();
     EXPECT_LT((c.cast<float>() - stored).norm(), 1e-4f * (1.0f + stored.norm())) << "frame " << f;
     // And the PCA rebuild is close to the retargeted mesh (the map's image is ~17-dimensional).
     EXPECT_LT((mean.transpose() + components.transpose() * c - y).cwiseAbs().maxCoeff(), 2e-4) << "frame " << f;
   }
+}
+
+// Every /p b m/ of the corpus closes on the target face as played back (PCA frames): the map alone
+// opens the closures the talker makes with rounded lips ("moon", "bob" next to "shoe"), the
+// lip-contact term closes them to within half a millimetre of the talker's own closure.
+TEST_F(VoiceBuild, EveryBilabialClosesOnTheTargetFace) {
+  const Voice voice = Voice::open(voice_file());
+  ASSERT_TRUE(built().summary.lip_contact);
+  EXPECT_GT(built().summary.lip_contact_frames, 0);
+  const LipContact& contact = *voice.retargeting().contact();
+  Eigen::Index upper = -1, lower = -1;
+  for (const auto& p : voice.feature_points()) {
+    if (p.label == "2.2") upper = 3 * Eigen::Index{p.vertex} + 1;
+    if (p.label == "2.3") lower = 3 * Eigen::Index{p.vertex} + 1;
+  }
+  ASSERT_GE(upper, 0);
+  const auto mean = voice.pca_mean();
+  const auto components = voice.pca_components();
+  const auto coefficients = voice.frame_coefficients();
+  const auto gap = [&](Eigen::Index f) {  // the played-back target's inner-lip gap, metres
+    double g = mean(0, upper) - mean(0, lower);
+    for (Eigen::Index c = 0; c < components.rows(); ++c) g += coefficients(f, c) * (components(c, upper) - components(c, lower));
+    return g;
+  };
+  // The map alone, for comparison: its gap at a source frame.
+  const CorpusListing listing = list_corpus(*corpus_);
+  Eigen::Matrix3Xd reference(3, 5);
+  for (Eigen::Index i = 0; i < 5; ++i) reference.col(i) = 100.0 * voice.rigid_markers()[static_cast<std::size_t>(i)].source_reference_m;
+  int bilabials = 0, open_without = 0;
+  double worst = -1.0;
+  for (std::size_t u = 0; u < listing.utterances.size(); ++u) {
+    const FrameSpan span = voice.utterance_frames()[u];
+    const Eigen::MatrixXd x = source_vectors_m(
+        preprocess_take(read_corpus_take(listing, u).markers, rigid_marker_rows(), reference).frames, "take");
+    for (std::size_t s = 0; s < voice.graph().size(); ++s) {
+      const PhoneState& state = voice.graph().state(static_cast<StateId>(s));
+      if (state.utterance != u || state.viseme != VisemeClass::kBilabial) continue;
+      ++bilabials;
+      double least = 1e9, least_source = 1e9, least_map = 1e9;
+      for (std::uint32_t f = state.frames.first; f < state.frames.first + state.frames.count; ++f) {
+        least = std::min(least, gap(f));
+        const Eigen::VectorXd source = x.col(f - span.first);
+        least_source = std::min(least_source, contact.source_gap_m(source));
+        const Eigen::VectorXd mapped = voice.retarget_map()(source);
+        least_map = std::min(least_map, mapped(upper) - mapped(lower));
+      }
+      open_without += least_map > 0.002;
+      const double allowed = contact.target_contact_m + std::max(0.0, least_source - contact.source_contact_m);
+      worst = std::max(worst, least - allowed);
+      EXPECT_LT(least, allowed + 0.0005) << "utterance " << u << " state " << s << ": the target's lips stay "
+                                         << 1000 * least << " mm apart (the map alone: " << 1000 * least_map << " mm)";
+    }
+  }
+  std::cout << bilabials << " /p b m/: " << open_without << " more than 2 mm open by the map alone; with the term "
+            << "at most " << 1000 * worst << " mm above the talker's closure\n";
+  EXPECT_GE(bilabials, 5);
 }
 
 TEST_F(VoiceBuild, IsDeterministic) {

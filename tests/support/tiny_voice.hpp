@@ -32,6 +32,9 @@ struct TinyVoice {
   std::optional<RowMajorMatrixXf> pca_components;  // k x D instead of the shifted identity, when set
   std::optional<RowMajorMatrixXf> pca_variances;   // 1 x k instead of 0.25 each, when set
   Eigen::Index source_points = 1;  // feature points in feature_points: the RBF centres' width / 3
+  // The lip-contact term: LCSH (1 x D) and LCON (1 x (5 + m)), each written when set.
+  std::optional<RowMajorMatrixXf> lip_contact_shape;
+  std::optional<RowMajorMatrixXd> lip_contact;
 
   TinyVoice() {
     provenance.corpus = "hand-made";
@@ -62,6 +65,21 @@ struct TinyVoice {
                                                  {"H.temple_r", 1, at(1), {-0.07, 0.03, 0.01}},
                                                  {"H.nose_bridge", 2, at(2), {0.0, 0.04, 0.1}}};
     feature_points = voice_feature_points_json(points, rigid);
+  }
+
+  // Inner lips 2.2 (vertex 0) and 2.3 (vertex 1) as the feature points, and a lip-contact term
+  // whose shape moves vertex 0 down and vertex 1 up by 4 mm a unit.
+  void set_inner_lips_with_contact() {
+    const std::vector<VoiceFeaturePoint> points = {{"2.2", 0, {0.0, -0.02, 0.1}}, {"2.3", 1, {0.0, -0.03, 0.1}}};
+    const std::vector<VoiceRigidMarker> rigid = {{"H.temple_l", 0, {0.07, 0.03, 0.0}, {0.07, 0.03, 0.01}},
+                                                 {"H.temple_r", 1, {-0.07, 0.03, 0.0}, {-0.07, 0.03, 0.01}},
+                                                 {"H.nose_bridge", 2, {0.0, 0.04, 0.09}, {0.0, 0.04, 0.1}}};
+    feature_points = voice_feature_points_json(points, rigid);
+    source_points = 2;
+    lip_contact_shape = RowMajorMatrixXf::Zero(1, 3 * vertices);
+    (*lip_contact_shape)(0, 1) = -0.004f, (*lip_contact_shape)(0, 4) = 0.004f;
+    lip_contact = RowMajorMatrixXd::Zero(1, 5 + centres);
+    *lip_contact << 0.006, -0.008, 0.0005, 0.0, 0.002, RowMajorMatrixXd::Zero(1, centres);
   }
 
   // Written to the temporary directory as `name` and opened.
@@ -103,6 +121,8 @@ struct TinyVoice {
       w.add(voice_section::kFeaturePoints, ElementType::kJson, 1, feature_points.size(), 
             std::as_bytes(std::span(feature_points)));
     if (face_maps) w.add_matrix(voice_section::kFaceMaps, *face_maps);
+    if (lip_contact_shape) w.add_matrix(voice_section::kLipContactShape, *lip_contact_shape);
+    if (lip_contact) w.add_matrix(voice_section::kLipContact, *lip_contact);
     return w.bytes();
   }
 };

@@ -37,6 +37,33 @@ Voice open_bytes(const std::string& bytes, const std::string& name) {
   return Voice::open(file);
 }
 
+// The lip-contact term's shape is a target-space displacement, scaled like the RBF weights; its
+// amounts (LCON) are the generic face's and carry over byte for byte, so the adapted voice closes
+// the lips by the same amount of the (scaled) shape.
+TEST(VoiceAdaptation, TheLipContactShapeIsAdaptedAndItsAmountsKept) {
+  TinyVoice tiny;
+  tiny.set_inner_lips_with_contact();
+  const Positions generic = tiny_face();
+  const std::vector<VoiceFeaturePoint> points = {{"2.2", 0, generic.col(0).cast<double>()},
+                                                 {"2.3", 1, generic.col(1).cast<double>()}};
+  const std::vector<VoiceRigidMarker> rigid = {{"H.temple_l", 0, generic.col(0).cast<double>(), {0.07, 0.03, 0.01}},
+                                               {"H.temple_r", 1, generic.col(1).cast<double>(), {-0.07, 0.03, 0.01}},
+                                               {"H.nose_bridge", 2, generic.col(2).cast<double>(), {0.0, 0.04, 0.1}}};
+  tiny.feature_points = voice_feature_points_json(points, rigid);
+  const Voice voice = open_bytes(tiny.bytes(), "fapcast_retarget_contact_in.fapv");
+  const float s = 2.0f;
+  const Voice v2 = open_bytes(adapt_voice(voice, generic, s * generic, one_triangle(), "twice.obj").bytes,
+                              "fapcast_retarget_contact_out.fapv");
+  EXPECT_LT((v2.file().matrix_f32(vs::kLipContactShape) - s * voice.file().matrix_f32(vs::kLipContactShape))
+                .cwiseAbs().maxCoeff(), 1e-7f);
+  const auto a = voice.file().bytes(vs::kLipContact), b = v2.file().bytes(vs::kLipContact);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin()));
+  Eigen::VectorXd touching = Eigen::VectorXd::Zero(6);
+  touching(4) = -0.0005;  // the source's lips at their contact
+  EXPECT_NEAR(v2.retargeting().responses(touching)(2), voice.retargeting().responses(touching)(2), 1e-12);
+}
+
 TEST(VoiceAdaptation, AScaledFaceScalesEveryTargetQuantityExactly) {
   const Voice voice = open_bytes(TinyVoice().bytes(), "fapcast_retarget_in.fapv");
   const Positions generic = tiny_face();

@@ -65,6 +65,34 @@ TEST(Voice, OpensACompleteVoiceAndHandsOutItsParts) {
   std::filesystem::remove(file);
 }
 
+// The lip-contact term (LCSH + LCON) is read with the map: at the source's contact the whole
+// retargeting closes the target's lips by the term's amount of the shape.
+TEST(Voice, RetargetsWithTheLipContactTermWhenItHasOne) {
+  TinyVoice tiny;
+  EXPECT_FALSE(tiny.open("fapcast_tiny_no_contact.fapv").retargeting().contact().has_value());
+  tiny.set_inner_lips_with_contact();
+  // The voice_open fuzz target's seed for the term's checks is this voice.
+  const std::filesystem::path seed = std::filesystem::path(FAPCAST_SOURCE_DIR) / "tests" / "fuzz" / "corpus" /
+                                     "voice_open_fuzz" / "tiny-with-lip-contact.fapv";
+  if (std::getenv("FAPCAST_REGENERATE")) write_file_atomically(seed, tiny.bytes());
+  EXPECT_EQ(read_file(seed), tiny.bytes()) << seed << " is stale: regenerate";
+  const Voice voice = tiny.open("fapcast_tiny_contact.fapv");
+  const Retargeting& retarget = voice.retargeting();
+  ASSERT_TRUE(retarget.contact().has_value());
+  EXPECT_EQ(retarget.contact()->source_upper, 0);
+  EXPECT_EQ(retarget.contact()->source_lower, 3);
+  EXPECT_EQ(retarget.response_count(), 3);
+  Eigen::VectorXd touching = Eigen::VectorXd::Zero(6);
+  touching(4) = -0.0005;  // 2.3 half a millimetre below 2.2: the term's source contact
+  const double amount = 0.006 / 0.008;  // the map leaves the target's lips 6 mm apart
+  const Eigen::VectorXd y = retarget(touching), mapped = voice.retarget_map()(touching);
+  EXPECT_NEAR(y(1) - mapped(1), -0.004 * amount, 1e-9);
+  EXPECT_NEAR(y(4) - mapped(4), 0.004 * amount, 1e-9);
+  Eigen::VectorXd apart = touching;
+  apart(4) = -0.009;  // 9 mm: no term
+  EXPECT_NEAR((retarget(apart) - voice.retarget_map()(apart)).norm(), 0.0, 1e-12);
+}
+
 // ---- named bad voices: tests/data/voice/bad-voice/bad.NNN.<rule>[.<what>].fapv ----
 
 struct BadFullVoiceCase {
@@ -138,6 +166,23 @@ std::vector<BadFullVoiceCase> bad_full_voices() {
   out.push_back({"bad.010.non-finite.FMAP.fapv", with([](TinyVoice& v) {
                    v.face_maps = RowMajorMatrixXf::Identity(3, 9);
                    (*v.face_maps)(2, 4) = std::numeric_limits<float>::quiet_NaN();
+                 })});
+  out.push_back({"bad.011.missing-section.LCON.fapv", with([](TinyVoice& v) {
+                   v.set_inner_lips_with_contact();
+                   v.lip_contact.reset();  // the shape without its amounts
+                 })});
+  out.push_back({"bad.012.section-shape.LCON.fapv", with([](TinyVoice& v) {
+                   v.set_inner_lips_with_contact();
+                   v.lip_contact = RowMajorMatrixXd::Zero(1, 6);  // 5 scalars and 2 gap weights are 7
+                 })});
+  out.push_back({"bad.013.lip-contact.shape-opens.fapv", with([](TinyVoice& v) {
+                   v.set_inner_lips_with_contact();
+                   (*v.lip_contact)(0, 1) = 0.008;  // a shape that parts the lips
+                 })});
+  out.push_back({"bad.014.lip-contact.no-inner-lips.fapv", with([](TinyVoice& v) {
+                   v.set_inner_lips_with_contact();
+                   v.set_neutral_face(Eigen::Matrix3Xf::Zero(3, 3));  // back to 8.1 alone
+                   v.source_points = 1;
                  })});
   return out;
 }

@@ -21,6 +21,31 @@ namespace vs = voice_section;
                    "section '" + id.str() + "' (" + std::string(section_name(id)) + "): " + detail);
 }
 
+// The lip-contact term of LCSH and LCON (nullopt without them), refused with lip-contact when its
+// values cannot be a contact term or the feature points lack the inner lips' 2.2 and 2.3.
+std::optional<LipContact> lip_contact_of(const VoiceFileView& view, std::span<const VoiceFeaturePoint> points) {
+  if (view.find(vs::kLipContact) == nullptr) return std::nullopt;
+  const auto row = view.matrix_f64(vs::kLipContact);
+  LipContact c;
+  c.gap_offset_m = row(0, 0), c.shape_gap_m = row(0, 1), c.source_contact_m = row(0, 2);
+  c.target_contact_m = row(0, 3), c.reach_m = row(0, 4);
+  c.gap_weights = row.row(0).tail(row.cols() - static_cast<Eigen::Index>(vs::kLipContactScalars)).transpose();
+  c.shape = view.matrix_f32(vs::kLipContactShape).row(0).transpose().cast<double>();
+  const auto bad = [&](const std::string& detail) { refuse(view, vs::kLipContact, "lip-contact", detail); };
+  if (!row.allFinite() || !c.shape.allFinite()) bad("a value of the term or of its shape is a NaN or an infinity");
+  if (!(c.shape_gap_m < 0)) bad("the shape does not close the lips (gap change " + std::to_string(c.shape_gap_m) + " m per unit, must be negative)");
+  if (!(c.reach_m > 0) || !(c.source_contact_m >= 0))
+    bad("the reach (" + std::to_string(c.reach_m) + " m) must be positive and the source contact (" +
+        std::to_string(c.source_contact_m) + " m) not negative");
+  c.source_upper = c.source_lower = -1;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (points[i].label == "2.2") c.source_upper = 3 * static_cast<Eigen::Index>(i);
+    if (points[i].label == "2.3") c.source_lower = 3 * static_cast<Eigen::Index>(i);
+  }
+  if (c.source_upper < 0 || c.source_lower < 0) bad("the feature points lack the inner lips' 2.2 or 2.3");
+  return c;
+}
+
 nlohmann::json vector_json(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
 // Reads FPNT: {"feature_points": [{label, vertex, neutral_m}], "rigid_markers": [{label, vertex,
@@ -115,16 +140,21 @@ Voice::Voice(VoiceFileView view, VoiceProvenance provenance, std::vector<VoiceFe
 struct Voice::RetargetMapOnce {
   std::once_flag once;
   std::optional<RbfMap> map;
+  std::optional<Retargeting> retargeting;
 };
 
-const RbfMap& Voice::retarget_map() const {
-  // The sections' shapes (m x D weights, 1 x D offset) were checked at open: this cannot throw.
+const RbfMap& Voice::retarget_map() const { return retargeting().map(); }
+
+const Retargeting& Voice::retargeting() const {
+  // The sections' shapes (m x D weights, 1 x D offset, LCSH and LCON) and the contact's values
+  // were checked at open: this cannot throw.
   std::call_once(map_->once, [this] {
     map_->map.emplace(Eigen::MatrixXd(view_.matrix_f64(vs::kRbfCentres)), rbf_r_squared_,
                       view_.matrix_f32(vs::kRbfWeights).cast<double>(),
                       view_.matrix_f32(vs::kRbfOffset).row(0).transpose().cast<double>(), rbf_lambda_);
+    map_->retargeting.emplace(*map_->map, lip_contact_of(view_, feature_points_));
   });
-  return *map_->map;
+  return *map_->retargeting;
 }
 
 Voice::Voice(Voice&&) noexcept = default;
@@ -169,6 +199,7 @@ Voice Voice::from_view(VoiceFileView view) {
     if (!view.matrix_f32(vs::kFaceMaps).allFinite())
       refuse(view, vs::kFaceMaps, "non-finite", "a face map holds a NaN or an infinity");
   }
+  (void)lip_contact_of(view, points);  // refused here, not on first use
   JoinFeatures join = join_features(graph.states, coefficients);
   PhoneGraph phone_graph(std::move(graph.states), std::move(join));
   return Voice(std::move(view), std::move(provenance), std::move(points), std::move(rigid),

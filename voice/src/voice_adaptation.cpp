@@ -94,10 +94,14 @@ AdaptedVoice adapt_voice(const Voice& voice, const Positions& generic_m, const P
   const std::string fpnt = voice_feature_points_json(points, rigid);
   writer.add(vs::kFeaturePoints, ElementType::kJson, 1, fpnt.size(), std::as_bytes(std::span(fpnt)));
   writer.add_matrix(vs::kFaceMaps, maps);
+  // The lip-contact shape is a displacement like the weights; its amounts (LCON) are the generic
+  // face's and carry over as they are.
+  if (view.find(vs::kLipContactShape) != nullptr)
+    writer.add_matrix(vs::kLipContactShape, adapt_rows(a, view.matrix_f32(vs::kLipContactShape), nullptr, nullptr));
   for (const SectionInfo& section : view.sections()) {
     const SectionId id = section.id;
     if (id == vs::kProvenance || id == vs::kPcaMean || id == vs::kPcaComponents || id == vs::kRbfWeights ||
-        id == vs::kRbfOffset || id == vs::kFeaturePoints || id == vs::kFaceMaps)
+        id == vs::kRbfOffset || id == vs::kFeaturePoints || id == vs::kFaceMaps || id == vs::kLipContactShape)
       continue;
     writer.add(id, section.type, section.rows, section.cols, view.bytes(id));
   }

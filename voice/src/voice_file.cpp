@@ -215,6 +215,7 @@ std::string_view section_name(SectionId id) {
       {vs::kRbfWeights, "rbf weights"},      {vs::kRbfOffset, "rbf offset"},
       {vs::kRbfScalars, "rbf scalars"},      {vs::kPhoneGraph, "phone graph"},
       {vs::kFeaturePoints, "feature points"}, {vs::kFaceMaps, "face maps"},
+      {vs::kLipContactShape, "lip contact shape"}, {vs::kLipContact, "lip contact"},
   };
   for (const auto& [known, name] : kNames) {
     if (known == id) return name;
@@ -503,6 +504,19 @@ void check_voice_sections(const VoiceFileView& view) {
   expect(shape(vs::kRbfWeights, ElementType::kFloat32), centres.rows, d, "m x D");
   expect(shape(vs::kRbfOffset, ElementType::kFloat32), 1, d, "1 x D");
   expect(shape(vs::kRbfScalars, ElementType::kFloat64), 1, 2, "r^2, lambda");
+  const SectionInfo* contact_shape = view.find(vs::kLipContactShape);
+  const SectionInfo* contact = view.find(vs::kLipContact);
+  if ((contact_shape == nullptr) != (contact == nullptr)) {
+    const SectionInfo& present = contact_shape ? *contact_shape : *contact;
+    refuse(view.source(), present.offset, "missing-section",
+           describe(present.id) + " needs " + describe(contact_shape ? vs::kLipContact : vs::kLipContactShape) +
+               " (the lip-contact term is the two together)");
+  }
+  if (contact_shape != nullptr) {
+    expect(shape(vs::kLipContactShape, ElementType::kFloat32), 1, d, "1 x D");
+    expect(shape(vs::kLipContact, ElementType::kFloat64), 1, vs::kLipContactScalars + centres.rows,
+           "1 x (5 + m): five scalars, then m gap weights");
+  }
   if (k == 0 || d == 0 || centres.rows < 2) {
     refuse(view.source(), components.offset, "section-shape",
            "a voice needs k >= 1 components, D >= 1 coordinates and m >= 2 centres");

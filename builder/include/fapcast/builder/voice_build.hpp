@@ -50,6 +50,10 @@ struct VoiceBuildSummary {
   double explained_fraction = 0;  // of the retargeted corpus's variance, by the k components
   int pca_iterations = 0;
   bool pca_converged = true;
+  bool lip_contact = false;        // the retargeting has the lip-contact term (a bilabial class)
+  double source_contact_m = 0;     // its source and target contact gaps
+  double target_contact_m = 0;
+  std::int64_t lip_contact_frames = 0;  // corpus frames it moved
   double seconds_read = 0, seconds_fit = 0, seconds_pca = 0, seconds_total = 0;
 };
 

@@ -62,7 +62,7 @@ NamedSystem dominance_system(const PhoneGraph& graph, const PcaFrames& pca_frame
 struct EvaluationFace {
   Eigen::Map<const RowMajorMatrixXf> pca_mean{nullptr, 0, 0};        // 1 x D, metres
   Eigen::Map<const RowMajorMatrixXf> pca_components{nullptr, 0, 0};  // k x D
-  const RbfMap* retarget_map = nullptr;                 // source markers -> target mesh
+  const Retargeting* retarget_map = nullptr;            // source markers -> target mesh
   // The map's source vectors of a take (d x frames), built exactly as the voice build built the
   // vectors it fitted the map on.
   std::function<Eigen::MatrixXd(const MarkerFrames<Centimetres>&)> source_vectors;

@@ -5,7 +5,7 @@
 // over the lip feature points and over all of them). Used by `fapcast eval synth` for the
 // variable-length search and its baselines alike.
 #include "fapcast/eval/lip_measures.hpp"
-#include "fapcast/math/rbf_retarget.hpp"
+#include "fapcast/voice/lip_contact.hpp"
 #include "fapcast/voice/voice_file.hpp"
 
 #include <Eigen/Core>
@@ -49,10 +49,10 @@ Eigen::MatrixXf vertex_tracks(const Eigen::Ref<const RowMajorMatrixXf>& mean,
                               const Eigen::MatrixXf& coefficients,
                               std::span<const std::int32_t> vertices);
 
-// Vertex positions of source frames mapped through an RBF retargeting map: `sources` is d x F
-// (one source marker vector per column, as the map was fitted on), the result F x 3V. Only the
-// columns of `vertices` are evaluated (3V of the map's D outputs).
-Eigen::MatrixXf vertex_tracks(const RbfMap& map, const Eigen::MatrixXd& sources,
+// Vertex positions of source frames through a voice's retargeting (the RBF map and its lip-contact
+// term): `sources` is d x F (one source marker vector per column, as the map was fitted on), the
+// result F x 3V. Only the columns of `vertices` are evaluated (3V of the map's D outputs).
+Eigen::MatrixXf vertex_tracks(const Retargeting& map, const Eigen::MatrixXd& sources,
                               std::span<const std::int32_t> vertices);
 
 struct SynthesisScore {

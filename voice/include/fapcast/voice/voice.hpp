@@ -15,6 +15,7 @@
 #include "fapcast/phonetics/phone.hpp"
 #include "fapcast/select/phone_graph.hpp"
 #include "fapcast/math/rbf_retarget.hpp"
+#include "fapcast/voice/lip_contact.hpp"
 #include "fapcast/voice/voice_file.hpp"
 
 namespace fapcast {
@@ -71,6 +72,9 @@ class Voice {  // move-only
   // the rigid markers' source_reference_m define. Its double-precision matrices are made from
   // the file's sections on the first call (thread-safe): `say` never needs them.
   const RbfMap& retarget_map() const;
+  // The whole retargeting: the map, then the lip-contact term when the voice has one (LCSH and
+  // LCON; voices built before it have none). Made with the map, on the first call.
+  const Retargeting& retargeting() const;
   // The per-vertex maps from the generic ICT face to this voice's face (N x 9, vertex i's 3 x 3
   // map row-major: displacement on this face = map * displacement on ICT) when the voice was
   // re-targeted (`fapcast voice retarget`, section FMAP); nullopt for a voice on ICT itself.

@@ -79,6 +79,12 @@ inline constexpr SectionId kFeaturePoints{"FPNT"}; // json: target-face feature 
 // Optional: f32 N x 9, vertex i's 3 x 3 map (row-major) from the generic ICT face to the voice's
 // face; written by `fapcast voice retarget` (voice_adaptation.hpp), absent in a voice built on ICT.
 inline constexpr SectionId kFaceMaps{"FMAP"};
+// Optional, together: the retargeting's lip-contact term (lip_contact.hpp). LCSH f32 1 x D, the
+// closing shape on the voice's face; LCON f64 1 x (5 + m): gap offset, shape gap, source contact,
+// target contact, reach (metres), then the m gap weights.
+inline constexpr SectionId kLipContactShape{"LCSH"};
+inline constexpr SectionId kLipContact{"LCON"};
+inline constexpr std::uint64_t kLipContactScalars = 5;
 }  // namespace voice_section
 
 // A human name for a known section id ("pca components"), or "unknown section".

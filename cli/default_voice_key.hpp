@@ -21,8 +21,9 @@ namespace fapcast::cli {
 // the nonsense items' rhotic class as the consonant R, not the vowel ER, recording_script.cpp;
 // 10 opens every phone's jaw 1.4 times as far above the sibilants' and the lips' own opening
 // 1.2 times as far, articulation.cpp: a table change, numbered so that spec/ can name the voice;
-// 11 adds the retargeting's lip-contact term, lip_contact_fit.cpp, so that every /p b m/ closes).
-inline constexpr std::uint32_t kDefaultVoiceRecipe = 11;
+// 11 adds the retargeting's lip-contact term, lip_contact_fit.cpp, so that every /p b m/ closes;
+// 12 pattern-fills the long marker gaps from a marker on the same lip, pattern_fill.cpp).
+inline constexpr std::uint32_t kDefaultVoiceRecipe = 12;
 
 // CRC-32, as 8 lower-case hex digits, of the recipe number, the corpus seed, every row of the
 // articulation and shape tables and of the prototype details, and the prototype rules.

@@ -36,6 +36,7 @@ struct SourceCorpus {
   Eigen::Matrix3Xd rigid_reference_cm;
   RealisedArticulation articulation;  // the target prototypes' articulation part
   bool synthetic = false;
+  std::size_t pattern_filled_gaps = 0;
 };
 
 SourceCorpus read_source_corpus(const CorpusListing& listing, const VoiceBuildOptions& options) {
@@ -50,6 +51,7 @@ SourceCorpus read_source_corpus(const CorpusListing& listing, const VoiceBuildOp
     if (i == 0) corpus.rigid_reference_cm = corpus_rigid_reference(take, source);
     corpus.synthetic = corpus.synthetic || take.synthetic;
     const PreprocessedTake stabilised = preprocess_take(take.markers, rigid_marker_rows(), corpus.rigid_reference_cm);
+    corpus.pattern_filled_gaps += stabilised.pattern_filled.size();
     parts.push_back(source_vectors_m(stabilised.frames, source));
     corpus.articulation.add_take(take.phones, take.spans);
     const auto frames = static_cast<std::uint32_t>(parts.back().cols());
@@ -92,6 +94,7 @@ BuiltVoice build_voice(const std::filesystem::path& corpus_dir, const VoiceBuild
   // 3.3: every take, preprocessed, as source vectors; the phone states on the frame grid.
   SourceCorpus corpus = read_source_corpus(listing, options);
   const Eigen::Index frames = corpus.frames.cols();
+  summary.pattern_filled_gaps = corpus.pattern_filled_gaps;
   summary.seconds_read = since(start);
 
   // 3.4-3.5: prototypes, r^2 over all frames, the RBF map with GCV's lambda.

@@ -56,13 +56,7 @@ GapFillResult fill_gaps(const MarkerFrames<Centimetres>& frames, const GapFillOp
       if (frames.present(m, k)) present.push_back(k);
     if (static_cast<Eigen::Index>(present.size()) == count) continue;
     std::vector<Eigen::Index> to_fill;
-    for (Eigen::Index k = 0; k < count;) {
-      if (frames.present(m, k)) {
-        ++k;
-        continue;
-      }
-      Eigen::Index end = k;
-      while (end < count && !frames.present(m, end)) ++end;
+    for (const auto [k, end] : frames.missing_runs(m)) {
       MarkerGap gap{m, k, end - k, GapOutcome::filled};
       if (present.size() < 2) gap.outcome = GapOutcome::too_few_samples;
       else if (k == 0 || end == count) gap.outcome = GapOutcome::at_edge;
@@ -70,7 +64,6 @@ GapFillResult fill_gaps(const MarkerFrames<Centimetres>& frames, const GapFillOp
       if (gap.outcome == GapOutcome::filled)
         for (Eigen::Index f = k; f < end; ++f) to_fill.push_back(f);
       result.gaps.push_back(gap);
-      k = end;
     }
     if (to_fill.empty()) continue;
     Eigen::VectorXd x(static_cast<Eigen::Index>(present.size()));

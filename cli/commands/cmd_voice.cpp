@@ -83,6 +83,7 @@ const fapcast::cli::Registration voice_build_command{"voice build", [](CLI::App&
               << "), r^2 " << s.r_squared_m2 << " m^2, lambda " << s.lambda << (s.lambda_at_range_edge ? " (range edge)" : "")
               << ", " << pca_route_name(options.pca) << " PCA explains " << std::setprecision(6)
               << 100 * s.explained_fraction << " %";
+    std::cout << ", " << s.pattern_filled_gaps << " long marker gaps pattern-filled";
     if (s.lip_contact)
       std::cout << ", lip contact at " << 1000 * s.source_contact_m << " mm (source) / " << 1000 * s.target_contact_m
                 << " mm (target), " << s.lip_contact_frames << " frames closed further";

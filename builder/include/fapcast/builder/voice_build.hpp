@@ -50,6 +50,7 @@ struct VoiceBuildSummary {
   double explained_fraction = 0;  // of the retargeted corpus's variance, by the k components
   int pca_iterations = 0;
   bool pca_converged = true;
+  std::size_t pattern_filled_gaps = 0;  // long marker gaps filled from a donor (pattern_fill.hpp)
   bool lip_contact = false;        // the retargeting has the lip-contact term (a bilabial class)
   double source_contact_m = 0;     // its source and target contact gaps
   double target_contact_m = 0;

@@ -63,6 +63,24 @@ struct MarkerFrames {
       if (labels[m] == label) return static_cast<Eigen::Index>(m);
     return std::nullopt;
   }
+  // Marker m's runs of missing frames, [first, end), in frame order: what gap filling fills.
+  struct MissingRun {
+    Eigen::Index first, end;
+  };
+  std::vector<MissingRun> missing_runs(Eigen::Index m) const {
+    std::vector<MissingRun> runs;
+    for (Eigen::Index k = 0; k < frame_count();) {
+      if (present(m, k)) {
+        ++k;
+        continue;
+      }
+      Eigen::Index end = k;
+      while (end < frame_count() && !present(m, end)) ++end;
+      runs.push_back({k, end});
+      k = end;
+    }
+    return runs;
+  }
   // Whether labels and positions agree in shape (3 x labels rows).
   bool consistent() const { return positions.rows() == 3 * static_cast<Eigen::Index>(labels.size()); }
   // Equal labels, rate, numbering and positions, a missing sample equal to a missing one.

@@ -8,6 +8,13 @@
 #include "fapcast/face/marker_map.hpp"
 
 namespace fapcast {
+namespace {
+
+// The rows of 2.2 and 2.3 in a source vector (source_marker_rows() order) and of their vertices in
+// the target vector.
+struct LipContactRows {
+  Eigen::Index source_upper, source_lower, target_upper, target_lower;
+};
 
 LipContactRows lip_contact_rows() {
   const auto sites = marker_sites();
@@ -22,6 +29,8 @@ LipContactRows lip_contact_rows() {
     throw std::logic_error("lip_contact_rows: spec/markers.tsv has no 2.2 or 2.3");
   return out;
 }
+
+}  // namespace
 
 std::optional<LipContact> fit_lip_contact(const FaceModel& face, const RbfMap& map, const Eigen::MatrixXd& source,
                                           std::span<const PhoneState> states,

@@ -51,13 +51,17 @@ Eigen::VectorXd Retargeting::operator()(const Eigen::Ref<const Eigen::VectorXd>&
 }
 
 void Retargeting::map_columns(const Eigen::Ref<const Eigen::MatrixXd>& sources, Eigen::Ref<Eigen::MatrixXf> out) const {
-  map_->map_columns(sources, out);
-  if (!contact_) return;
-  const Eigen::VectorXf shape = contact_->shape.cast<float>();
-  for (Eigen::Index f = 0; f < sources.cols(); ++f) {
-    const double amount = contact_->amount(sources.col(f), map_->responses(sources.col(f)));
-    if (amount != 0.0) out.col(f) += static_cast<float>(amount) * shape;
+  if (!contact_) {
+    map_->map_columns(sources, out);
+    return;
   }
+  // The amount needs each column's responses: one pass makes them all, then one product.
+  if (sources.rows() != source_dimension() || out.rows() != target_dimension() || out.cols() != sources.cols())
+    throw std::invalid_argument("Retargeting::map_columns: sources must be d x c and out D x c");
+  Eigen::MatrixXf responses_of(response_count(), sources.cols());
+  for (Eigen::Index f = 0; f < sources.cols(); ++f) responses_of.col(f) = responses(sources.col(f)).cast<float>();
+  out.noalias() = weights_.transpose().cast<float>() * responses_of;
+  out.colwise() += offset().cast<float>();
 }
 
 }  // namespace fapcast

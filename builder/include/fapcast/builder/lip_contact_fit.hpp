@@ -34,10 +34,4 @@ std::optional<LipContact> fit_lip_contact(const FaceModel& face, const RbfMap& m
                                           std::span<const PhoneState> states,
                                           const Eigen::Ref<const Eigen::VectorXd>& bilabial_target);
 
-// The rows of 2.2 and 2.3 in a source vector and their target vertices, as LipContact holds them.
-struct LipContactRows {
-  Eigen::Index source_upper, source_lower, target_upper, target_lower;
-};
-LipContactRows lip_contact_rows();
-
 }  // namespace fapcast
